@@ -1,0 +1,132 @@
+// inkwire-render: one mesh, one style, to images or video (CONTRACTS.md).
+#include <cstdio>
+#include <iostream>
+#include <numbers>
+
+#include <CLI/CLI.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "client/gl/canvas.hpp"
+#include "client/gl/context.hpp"
+#include "client/output/frame_writer.hpp"
+#include "client/render/backdrop.hpp"
+#include "client/render/coverage.hpp"
+#include "client/render/styles.hpp"
+#include "common/error.hpp"
+
+using namespace inkwire;
+
+namespace {
+
+struct Options {
+  std::string mesh, style = "default", pose = "thesis", view, size = "620x500", backdrop, out;
+  std::vector<std::string> set;
+  size_t lod = 0;
+  int frames = 1, fps = 24, msaa = 4;
+};
+
+glm::ivec2 parse_size(const std::string& text) {
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 16 || h < 16 || w > 8192 || h > 8192)
+    throw Error("--size '" + text + "' is not WxH with sides 16..8192");
+  return {w, h};
+}
+
+void print_styles() {
+  for (const StyleInfo& s : styles()) {
+    std::cout << s.name << "  -  " << s.summary << " (backdrop " << s.default_backdrop << ")\n";
+    for (const ParamSpec& p : s.params()) {
+      std::cout << "    " << p.name << " (" << to_string(p.type);
+      if (p.type == ParamType::Float || p.type == ParamType::Int) std::cout << " " << p.min << ".." << p.max;
+      std::cout << ", default " << p.default_value << "): " << p.help << "\n";
+    }
+  }
+}
+
+int run(const Options& o) {
+  if (o.style == "list") {
+    print_styles();
+    return 0;
+  }
+  if (o.mesh.empty()) throw Error("--mesh is required");
+  if (o.out.empty()) throw Error("--out is required");
+  if (o.frames < 1 || o.frames > 100000) throw Error("--frames must be 1..100000");
+  const glm::ivec2 size = parse_size(o.size);
+  const StyleInfo& style = find_style(o.style);
+  const BackdropSpec backdrop_spec = BackdropSpec::parse(o.backdrop.empty() ? style.default_backdrop : o.backdrop);
+
+  SceneObject object = load_scene_object(o.mesh, o.lod);
+  for (const std::string& w : object.warnings) std::cerr << "inkwire-render: warning: " << w << "\n";
+
+  auto context = create_offscreen_context(size.x, size.y);
+  Canvas canvas(size.x, size.y, o.msaa);
+  std::unique_ptr<Renderer> renderer = make_renderer(o.style, o.set);
+  renderer->prepare(object);
+  Backdrop backdrop(backdrop_spec);
+
+  FrameState frame;
+  frame.viewport = size;
+  if (!o.view.empty()) {
+    float az = 0, el = 0, dist = 1.4f;
+    const int n = std::sscanf(o.view.c_str(), "%f,%f,%f", &az, &el, &dist);
+    if (n < 2 || dist <= 0.05f || dist > 1000.0f) throw Error("--view '" + o.view + "' is not AZIMUTH,ELEVATION[,DISTANCE]");
+    frame.camera = orbit_camera(object.topology.bounds, az, el, dist);
+  } else if (o.pose == "thesis") {
+    frame.camera = thesis_camera();
+    // The study's set-up scales the object to cover about 15% of the window (SPEC G4).
+    auto reference = make_renderer("default");
+    reference->prepare(object);
+    const float s = fit_scale_for_coverage(*reference, frame, canvas, 0.155);
+    frame.model = glm::scale(glm::mat4(1.0f), glm::vec3(s));
+  } else {
+    throw Error("--pose '" + o.pose + "' is unknown (thesis) and no --view was given");
+  }
+  frame.light_direction = default_light_direction(frame.camera);
+  const glm::mat4 pose = frame.model;
+
+  FrameWriter writer(o.out, o.frames, o.fps, backdrop_spec.kind == BackdropSpec::Kind::None);
+  for (int i = 0; i < o.frames; ++i) {
+    // Animations turn the object once around its vertical axis.
+    const float turn = o.frames > 1 ? float(2.0 * std::numbers::pi * i / o.frames) : 0.0f;
+    frame.model = glm::rotate(glm::mat4(1.0f), turn, glm::vec3(0, 1, 0)) * pose;
+    frame.frame = i;
+    frame.time_seconds = double(i) / o.fps;
+    canvas.bind();
+    backdrop.draw();
+    renderer->draw(frame);
+    writer.write(canvas.read());
+  }
+  writer.close();
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  CLI::App app{"inkwire-render: render one mesh in one style to PNG images or an MP4 video"};
+  app.add_option("--mesh", o.mesh, "mesh file (OBJ, PLY, OFF, 3DS, ASE, glTF, ...)");
+  app.add_option("--lod", o.lod, "simplify to about this many triangles first");
+  app.add_option("--style", o.style, "style name, or 'list' to print every style and its parameters");
+  app.add_option("--set", o.set, "style parameter KEY=VALUE (repeatable)");
+  app.add_option("--pose", o.pose, "camera pose: thesis (the study's benchmark viewer)");
+  app.add_option("--view", o.view, "orbit camera AZIMUTH_DEG,ELEVATION_DEG[,DISTANCE in bounding-box diagonals]");
+  app.add_option("--frames", o.frames, "frames to render (the object turns once)");
+  app.add_option("--fps", o.fps, "frames per second of animation time and video")->check(CLI::Range(1, 240));
+  app.add_option("--size", o.size, "image size WxH");
+  app.add_option("--msaa", o.msaa, "multisample count (1 = off)")->check(CLI::Range(1, 16));
+  app.add_option("--backdrop", o.backdrop, "paper | paper:FILE | none (transparent) | #rrggbb; default: the style's");
+  app.add_option("--out", o.out, "output PNG, PNG pattern with %04d, or .mp4");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    return run(o);
+  } catch (const std::exception& e) {
+    std::cerr << "inkwire-render: " << e.what() << "\n";
+    return 1;
+  }
+}

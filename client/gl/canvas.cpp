@@ -1,0 +1,62 @@
+#include "client/gl/canvas.hpp"
+
+#include "common/error.hpp"
+
+namespace inkwire {
+
+using namespace gl;
+
+Canvas::Canvas(int width, int height, int samples) : width_(width), height_(height), samples_(samples) {
+  if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
+    throw Error("canvas size " + std::to_string(width) + "x" + std::to_string(height) + " is outside 1..16384");
+  if (samples < 1 || samples > 16) throw Error("canvas samples must be 1..16");
+  const int ms = samples > 1 ? samples : 0;
+  colour_ = Renderbuffer::create(GL_RGBA8, width, height, ms);
+  depth_stencil_ = Renderbuffer::create(GL_DEPTH24_STENCIL8, width, height, ms);
+  draw_fbo_ = Framebuffer::create();
+  draw_fbo_.bind();
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_.id());
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth_stencil_.id());
+  draw_fbo_.check_complete("Canvas");
+  if (samples > 1) {
+    resolve_colour_ = Renderbuffer::create(GL_RGBA8, width, height, 0);
+    resolve_fbo_ = Framebuffer::create();
+    resolve_fbo_.bind();
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolve_colour_.id());
+    resolve_fbo_.check_complete("Canvas resolve");
+  }
+  bind();
+}
+
+void Canvas::bind() const {
+  draw_fbo_.bind();
+  glViewport(0, 0, width_, height_);
+}
+
+const Framebuffer& Canvas::resolved() const {
+  if (samples_ <= 1) return draw_fbo_;
+  draw_fbo_.bind(GL_READ_FRAMEBUFFER);
+  resolve_fbo_.bind(GL_DRAW_FRAMEBUFFER);
+  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  return resolve_fbo_;
+}
+
+Image Canvas::read() const {
+  resolved().bind(GL_READ_FRAMEBUFFER);
+  Image image(width_, height_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
+  check_error("Canvas::read");
+  flip_rows(image);  // GL rows run bottom-up
+  bind();
+  return image;
+}
+
+void Canvas::present_to_default(glm::ivec2 target) const {
+  resolved().bind(GL_READ_FRAMEBUFFER);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  glBlitFramebuffer(0, 0, width_, height_, 0, 0, target.x, target.y, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+  bind();
+}
+
+}  // namespace inkwire

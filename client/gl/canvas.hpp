@@ -1,0 +1,34 @@
+#pragma once
+// The render target every renderer draws into: an off-screen framebuffer with colour, depth and
+// stencil, optionally multisampled. Read back as an upright RGBA image, or shown in a window.
+#include <glm/vec2.hpp>
+
+#include "client/gl/resources.hpp"
+#include "common/image.hpp"
+
+namespace inkwire {
+
+class Canvas {
+ public:
+  // `samples` 1 = no multisampling. Throws inkwire::Error if the driver refuses the format.
+  Canvas(int width, int height, int samples = 1);
+
+  void bind() const;  // binds for drawing and sets the viewport to the whole canvas
+  int width() const { return width_; }
+  int height() const { return height_; }
+  glm::ivec2 size() const { return {width_, height_}; }
+  int samples() const { return samples_; }
+
+  // Resolves multisampling and reads the colour as an upright (top row first) RGBA image.
+  Image read() const;
+  // Copies the colour into the default framebuffer (a window), scaled to `target` pixels.
+  void present_to_default(glm::ivec2 target) const;
+
+ private:
+  const gl::Framebuffer& resolved() const;
+  int width_, height_, samples_;
+  gl::Framebuffer draw_fbo_, resolve_fbo_;
+  gl::Renderbuffer colour_, depth_stencil_, resolve_colour_;
+};
+
+}  // namespace inkwire

@@ -1,0 +1,198 @@
+#include "client/gl/resources.hpp"
+
+#include "common/error.hpp"
+
+namespace inkwire {
+const std::map<std::string, std::string_view>& embedded_files();  // generated from client/shaders
+}
+
+namespace inkwire::gl {
+
+void delete_buffer(GLuint id) { glDeleteBuffers(1, &id); }
+void delete_vertex_array(GLuint id) { glDeleteVertexArrays(1, &id); }
+void delete_texture(GLuint id) { glDeleteTextures(1, &id); }
+void delete_program(GLuint id) { glDeleteProgram(id); }
+void delete_framebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
+void delete_renderbuffer(GLuint id) { glDeleteRenderbuffers(1, &id); }
+
+Buffer Buffer::create(GLenum target, size_t bytes, const void* data, GLenum usage) {
+  GLuint id = 0;
+  glGenBuffers(1, &id);
+  Buffer b(id);
+  b.upload(target, bytes, data, usage);
+  return b;
+}
+
+void Buffer::upload(GLenum target, size_t bytes, const void* data, GLenum usage) {
+  glBindBuffer(target, id());
+  if (bytes > capacity_ || capacity_ == 0) {
+    glBufferData(target, GLsizeiptr(std::max<size_t>(bytes, 1)), data, usage);
+    capacity_ = std::max<size_t>(bytes, 1);
+  } else if (bytes > 0) {
+    glBufferSubData(target, 0, GLsizeiptr(bytes), data);
+  }
+}
+
+VertexArray VertexArray::create() {
+  GLuint id = 0;
+  glGenVertexArrays(1, &id);
+  return VertexArray(id);
+}
+
+void VertexArray::attribute(GLuint index, const Buffer& buffer, GLint components, GLsizei stride, size_t offset,
+                            GLenum type, bool normalised) {
+  bind();
+  glBindBuffer(GL_ARRAY_BUFFER, buffer.id());
+  glEnableVertexAttribArray(index);
+  if (type == GL_FLOAT || normalised)
+    glVertexAttribPointer(index, components, type, normalised ? GL_TRUE : GL_FALSE, stride,
+                          reinterpret_cast<const void*>(offset));
+  else
+    glVertexAttribIPointer(index, components, type, stride, reinterpret_cast<const void*>(offset));
+}
+
+Texture Texture::from_image(const Image& image, const TextureOptions& options) {
+  if (image.empty()) throw Error("cannot make a texture from an empty image");
+  GLuint id = 0;
+  glGenTextures(1, &id);
+  Texture t(id);
+  t.target_ = GL_TEXTURE_2D;
+  glBindTexture(GL_TEXTURE_2D, id);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  // Uploaded top row first, so t = 0 is the image's top; mesh uploads flip v to match.
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
+  const GLint wrap = options.repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
+  const GLint mag = options.linear ? GL_LINEAR : GL_NEAREST;
+  const GLint min = options.mipmaps ? (options.linear ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST_MIPMAP_NEAREST) : mag;
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, mag);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, min);
+  if (options.mipmaps) glGenerateMipmap(GL_TEXTURE_2D);
+  return t;
+}
+
+Texture Texture::lookup_1d(const std::vector<glm::u8vec4>& texels, bool linear) {
+  if (texels.empty()) throw Error("cannot make a lookup texture with no texels");
+  GLuint id = 0;
+  glGenTextures(1, &id);
+  Texture t(id);
+  t.target_ = GL_TEXTURE_1D;
+  glBindTexture(GL_TEXTURE_1D, id);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA8, GLsizei(texels.size()), 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  const GLint filter = linear ? GL_LINEAR : GL_NEAREST;
+  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, filter);
+  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, filter);
+  return t;
+}
+
+void Texture::bind(int unit) const {
+  glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+  glBindTexture(target_, id());
+}
+
+const std::string& shader_source(const std::string& path) {
+  static std::map<std::string, std::string> cache;  // string_view -> owned, once per path
+  if (auto it = cache.find(path); it != cache.end()) return it->second;
+  const auto& files = embedded_files();
+  const auto found = files.find(path);
+  if (found == files.end()) throw Error("Program: no embedded shader '" + path + "'");
+  return cache.emplace(path, std::string(found->second)).first->second;
+}
+
+namespace {
+
+GLenum stage_of(const std::string& name) {
+  auto ends = [&](const char* ext) { return name.size() > 5 && name.ends_with(ext); };
+  if (ends(".vert")) return GL_VERTEX_SHADER;
+  if (ends(".frag")) return GL_FRAGMENT_SHADER;
+  if (ends(".geom")) return GL_GEOMETRY_SHADER;
+  if (ends(".comp")) return GL_COMPUTE_SHADER;
+  throw Error("Program: cannot tell the stage of '" + name + "' (expected .vert, .frag, .geom or .comp)");
+}
+
+// Inserts the defines right after the #version line, which must stay first.
+std::string with_defines(const std::string& source, const std::vector<std::string>& defines) {
+  if (defines.empty()) return source;
+  std::string block;
+  for (const std::string& d : defines) block += "#define " + d + "\n";
+  const size_t version = source.find("#version");
+  if (version == std::string::npos) return block + source;
+  const size_t eol = source.find('\n', version);
+  return source.substr(0, eol + 1) + block + source.substr(eol + 1);
+}
+
+}  // namespace
+
+Program Program::from_files(const std::vector<std::string>& stage_paths, const std::vector<std::string>& defines) {
+  std::vector<std::pair<std::string, std::string>> named;
+  for (const std::string& p : stage_paths) named.emplace_back(p, shader_source(p));
+  return from_sources(named, defines);
+}
+
+Program Program::from_sources(const std::vector<std::pair<std::string, std::string>>& named_sources,
+                              const std::vector<std::string>& defines) {
+  Program program(glCreateProgram());
+  std::vector<GLuint> shaders;
+  auto cleanup = [&] {
+    for (GLuint s : shaders) glDeleteShader(s);
+  };
+  for (const auto& [name, source] : named_sources) {
+    const GLuint shader = glCreateShader(stage_of(name));
+    shaders.push_back(shader);
+    const std::string text = with_defines(source, defines);
+    const char* ptr = text.c_str();
+    glShaderSource(shader, 1, &ptr, nullptr);
+    glCompileShader(shader);
+    GLint ok = 0;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+      char log[4096] = {};
+      glGetShaderInfoLog(shader, sizeof(log), nullptr, log);
+      cleanup();
+      throw Error("Program::compile(): " + name + ": " + log);
+    }
+    glAttachShader(program.id(), shader);
+  }
+  glLinkProgram(program.id());
+  cleanup();
+  GLint ok = 0;
+  glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
+  if (!ok) {
+    char log[4096] = {};
+    glGetProgramInfoLog(program.id(), sizeof(log), nullptr, log);
+    throw Error(std::string("Program::link(): ") + log);
+  }
+  return program;
+}
+
+GLint Program::location(const char* name) const {
+  auto it = locations_.find(name);
+  if (it == locations_.end()) it = locations_.emplace(name, glGetUniformLocation(id(), name)).first;
+  return it->second;
+}
+
+Renderbuffer Renderbuffer::create(GLenum format, int width, int height, int samples) {
+  GLuint id = 0;
+  glGenRenderbuffers(1, &id);
+  glBindRenderbuffer(GL_RENDERBUFFER, id);
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, width, height);
+  return Renderbuffer(id);
+}
+
+Framebuffer Framebuffer::create() {
+  GLuint id = 0;
+  glGenFramebuffers(1, &id);
+  return Framebuffer(id);
+}
+
+void Framebuffer::check_complete(const char* what) const {
+  bind();
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE)
+    throw Error(std::string(what) + ": framebuffer incomplete (status 0x" + std::to_string(status) + ")");
+}
+
+}  // namespace inkwire::gl

@@ -1,0 +1,145 @@
+#pragma once
+// Small RAII owners of GL objects. Each is move-only and deletes its object in the context that
+// is current when it dies (all of ours live and die within one context).
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+
+#include "client/gl/gl.hpp"
+#include "common/image.hpp"
+
+namespace inkwire::gl {
+
+// Holds a GL name and the function that deletes it.
+template <void (*Delete)(GLuint)>
+class Handle {
+ public:
+  Handle() = default;
+  explicit Handle(GLuint id) : id_(id) {}
+  Handle(Handle&& o) noexcept : id_(std::exchange(o.id_, 0)) {}
+  Handle& operator=(Handle&& o) noexcept {
+    if (this != &o) {
+      reset();
+      id_ = std::exchange(o.id_, 0);
+    }
+    return *this;
+  }
+  ~Handle() { reset(); }
+  GLuint id() const { return id_; }
+  explicit operator bool() const { return id_ != 0; }
+  void reset() {
+    if (id_) Delete(id_);
+    id_ = 0;
+  }
+
+ private:
+  GLuint id_ = 0;
+};
+
+void delete_buffer(GLuint id);
+void delete_vertex_array(GLuint id);
+void delete_texture(GLuint id);
+void delete_program(GLuint id);
+void delete_framebuffer(GLuint id);
+void delete_renderbuffer(GLuint id);
+
+class Buffer : public Handle<delete_buffer> {
+ public:
+  static Buffer create(GLenum target, size_t bytes, const void* data, GLenum usage = GL_STATIC_DRAW);
+  template <typename T>
+  static Buffer create(GLenum target, const std::vector<T>& items, GLenum usage = GL_STATIC_DRAW) {
+    return create(target, items.size() * sizeof(T), items.data(), usage);
+  }
+  // Replaces the contents, growing the store when needed (for per-frame streamed data).
+  void upload(GLenum target, size_t bytes, const void* data, GLenum usage = GL_STREAM_DRAW);
+  size_t capacity() const { return capacity_; }
+
+ private:
+  using Handle::Handle;
+  size_t capacity_ = 0;
+};
+
+class VertexArray : public Handle<delete_vertex_array> {
+ public:
+  static VertexArray create();
+  void bind() const { glBindVertexArray(id()); }
+  // Float attribute `index` read from `buffer` (bound as GL_ARRAY_BUFFER).
+  void attribute(GLuint index, const Buffer& buffer, GLint components, GLsizei stride, size_t offset,
+                 GLenum type = GL_FLOAT, bool normalised = false);
+
+ private:
+  using Handle::Handle;
+};
+
+struct TextureOptions {
+  bool repeat = true;
+  bool mipmaps = true;
+  bool linear = true;
+};
+
+class Texture : public Handle<delete_texture> {
+ public:
+  static Texture from_image(const Image& image, const TextureOptions& options = {});
+  // A 1D lookup (shade maps): RGBA rows of `width` texels.
+  static Texture lookup_1d(const std::vector<glm::u8vec4>& texels, bool linear);
+  void bind(int unit) const;
+  GLenum target() const { return target_; }
+
+ private:
+  using Handle::Handle;
+  GLenum target_ = GL_TEXTURE_2D;
+};
+
+// Shader stage sources by their embedded path under client/shaders/ (e.g. "default/mesh.vert").
+// Throws inkwire::Error when no such file was embedded.
+const std::string& shader_source(const std::string& path);
+
+class Program : public Handle<delete_program> {
+ public:
+  // Compiles and links the stages named by embedded path; `defines` are prepended after
+  // #version as "#define NAME VALUE" lines (variants). Throws inkwire::Error carrying the
+  // driver's log prefixed by "Program::compile(): <path>:" or "Program::link():".
+  static Program from_files(const std::vector<std::string>& stage_paths, const std::vector<std::string>& defines = {});
+  // Same, from literal sources (first element of each pair is a name for error messages).
+  static Program from_sources(const std::vector<std::pair<std::string, std::string>>& named_sources,
+                              const std::vector<std::string>& defines = {});
+
+  void use() const { glUseProgram(id()); }
+  GLint location(const char* name) const;
+  void set(const char* name, int v) const { glUniform1i(location(name), v); }
+  void set(const char* name, float v) const { glUniform1f(location(name), v); }
+  void set(const char* name, const glm::vec2& v) const { glUniform2f(location(name), v.x, v.y); }
+  void set(const char* name, const glm::vec3& v) const { glUniform3f(location(name), v.x, v.y, v.z); }
+  void set(const char* name, const glm::vec4& v) const { glUniform4f(location(name), v.x, v.y, v.z, v.w); }
+  void set(const char* name, const glm::mat3& m) const { glUniformMatrix3fv(location(name), 1, GL_FALSE, &m[0][0]); }
+  void set(const char* name, const glm::mat4& m) const { glUniformMatrix4fv(location(name), 1, GL_FALSE, &m[0][0]); }
+
+ private:
+  using Handle::Handle;
+  mutable std::map<std::string, GLint, std::less<>> locations_;
+};
+
+class Renderbuffer : public Handle<delete_renderbuffer> {
+ public:
+  static Renderbuffer create(GLenum format, int width, int height, int samples);
+
+ private:
+  using Handle::Handle;
+};
+
+class Framebuffer : public Handle<delete_framebuffer> {
+ public:
+  static Framebuffer create();
+  void bind(GLenum target = GL_FRAMEBUFFER) const { glBindFramebuffer(target, id()); }
+  // Throws inkwire::Error naming the incompleteness reason.
+  void check_complete(const char* what) const;
+
+ private:
+  using Handle::Handle;
+};
+
+}  // namespace inkwire::gl

@@ -1,0 +1,119 @@
+#include "client/render/backdrop.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "common/error.hpp"
+#include "common/style_params.hpp"
+
+namespace inkwire {
+
+using namespace gl;
+
+BackdropSpec BackdropSpec::parse(const std::string& text) {
+  BackdropSpec s;
+  if (text == "paper") return s;
+  if (text.rfind("paper:", 0) == 0) {
+    s.paper_file = text.substr(6);
+    if (s.paper_file.empty()) throw Error("backdrop 'paper:' needs a file name");
+    return s;
+  }
+  if (text == "none") {
+    s.kind = Kind::None;
+    return s;
+  }
+  if (!text.empty() && text[0] == '#') {
+    s.kind = Kind::Colour;
+    s.colour = parse_hex_colour(text);
+    return s;
+  }
+  throw Error("backdrop '" + text + "' is not paper, paper:FILE, none or #rrggbb");
+}
+
+namespace {
+
+// Periodic value noise: lattice values wrap every `period` cells, so the texture tiles.
+class TileableNoise {
+ public:
+  TileableNoise(int period, uint32_t seed) : period_(period), values_(size_t(period) * period) {
+    uint32_t state = seed * 747796405u + 2891336453u;
+    for (float& v : values_) {
+      state = state * 1664525u + 1013904223u;
+      v = float(state >> 8) / float(1u << 24);
+    }
+  }
+  // u, v in cells; smooth (cubic) interpolation.
+  float at(float u, float v) const {
+    const int x0 = int(std::floor(u)), y0 = int(std::floor(v));
+    const float fx = u - x0, fy = v - y0;
+    const float sx = fx * fx * (3 - 2 * fx), sy = fy * fy * (3 - 2 * fy);
+    const float a = lattice(x0, y0), b = lattice(x0 + 1, y0), c = lattice(x0, y0 + 1), d = lattice(x0 + 1, y0 + 1);
+    return (a + (b - a) * sx) * (1 - sy) + (c + (d - c) * sx) * sy;
+  }
+
+ private:
+  float lattice(int x, int y) const {
+    x = ((x % period_) + period_) % period_;
+    y = ((y % period_) + period_) % period_;
+    return values_[size_t(y) * period_ + x];
+  }
+  int period_;
+  std::vector<float> values_;
+};
+
+}  // namespace
+
+Image generate_paper(int size, uint32_t seed) {
+  if (size < 16 || size > 4096) throw Error("paper size must be 16..4096");
+  // Octaves: broad cloudiness, medium mottling and fine grain, plus fibres: noise stretched
+  // eight to one, so it reads as short streaks in the pulp rather than blotches.
+  const TileableNoise broad(4, seed), mottle(16, seed + 1), grain(size / 2, seed + 2), fibre(size / 4, seed + 3);
+  const glm::vec3 base(0.965f, 0.945f, 0.905f);  // warm off-white
+  Image img(size, size);
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const float u = float(x) / size, v = float(y) / size;
+      float tone = 0.0f;
+      tone += 0.025f * (broad.at(u * 4, v * 4) - 0.5f);
+      tone += 0.030f * (mottle.at(u * 16, v * 16) - 0.5f);
+      tone += 0.050f * (grain.at(u * size / 2, v * size / 2) - 0.5f);
+      tone += 0.030f * (fibre.at(u * size / 4, v * size / 32) - 0.5f);
+      uint8_t* p = img.at(x, y);
+      for (int c = 0; c < 3; ++c) p[c] = uint8_t(std::clamp((base[c] + tone) * 255.0f, 0.0f, 255.0f));
+      p[3] = 255;
+    }
+  return img;
+}
+
+Backdrop::Backdrop(const BackdropSpec& spec) : spec_(spec) {
+  if (spec_.kind != BackdropSpec::Kind::Paper) return;
+  const Image paper = spec_.paper_file.empty() ? generate_paper(512) : load_image(spec_.paper_file);
+  paper_size_ = paper.width;
+  paper_ = Texture::from_image(paper, {.repeat = true, .mipmaps = false, .linear = true});
+  program_ = Program::from_files({"backdrop/fullscreen.vert", "backdrop/paper.frag"});
+  empty_vao_ = VertexArray::create();
+}
+
+void Backdrop::draw() const {
+  const glm::vec3 c = spec_.kind == BackdropSpec::Kind::Colour ? spec_.colour : glm::vec3(1.0f);
+  glClearColor(c.r, c.g, c.b, spec_.kind == BackdropSpec::Kind::None ? 0.0f : 1.0f);
+  glClearDepth(1.0);
+  glClearStencil(0);
+  glDepthMask(GL_TRUE);
+  glStencilMask(0xff);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  if (!paper_) return;
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  program_->use();
+  paper_->bind(0);
+  program_->set("paper", 0);
+  program_->set("paper_size", float(paper_size_));
+  empty_vao_.bind();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+}  // namespace inkwire

@@ -1,0 +1,45 @@
+#pragma once
+// Custom clear (SPEC G6): instead of a flat colour, a tileable paper texture drawn full-screen
+// with no depth test and no lighting, then objects over it. Also the flat and transparent
+// clears, so every program chooses its backdrop the same way (--backdrop paper|none|#rrggbb).
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include <glm/vec3.hpp>
+
+#include "client/gl/resources.hpp"
+#include "common/image.hpp"
+
+namespace inkwire {
+
+struct BackdropSpec {
+  enum class Kind { Paper, None, Colour } kind = Kind::Paper;
+  glm::vec3 colour{1.0f};
+  std::filesystem::path paper_file;  // empty: generated paper
+
+  // "paper", "paper:FILE", "none" or "#rrggbb". Throws inkwire::Error otherwise.
+  static BackdropSpec parse(const std::string& text);
+};
+
+// A tileable paper texture: warm off-white with fibres and grain at several scales, wrapping
+// seamlessly at its edges. Deterministic for a given seed.
+Image generate_paper(int size, uint32_t seed = 1);
+
+class Backdrop {
+ public:
+  explicit Backdrop(const BackdropSpec& spec);
+  // Clears colour, depth and stencil, then draws the backdrop into the bound framebuffer.
+  void draw() const;
+  const BackdropSpec& spec() const { return spec_; }
+
+ private:
+  BackdropSpec spec_;
+  std::optional<gl::Texture> paper_;
+  std::optional<gl::Program> program_;
+  gl::VertexArray empty_vao_;  // core profile needs a bound VAO even for attribute-less draws
+  int paper_size_ = 0;
+};
+
+}  // namespace inkwire

@@ -1,0 +1,43 @@
+#include "client/render/default_renderer.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+
+namespace inkwire {
+
+using namespace gl;
+
+glm::vec3 light_in_object_space(const FrameState& frame) {
+  return glm::normalize(glm::transpose(glm::mat3(frame.model)) * frame.light_direction);
+}
+
+DefaultRenderer::DefaultRenderer() : program_(Program::from_files({"default/mesh.vert", "default/mesh.frag"})) {}
+
+std::vector<ParamSpec> DefaultRenderer::params() {
+  return {float_param("ambient", "0.2", 0, 1, "light reaching faces turned away from the light")};
+}
+
+void DefaultRenderer::configure(const StyleParams& params) { ambient_ = params.get_float("ambient"); }
+
+void DefaultRenderer::prepare(const SceneObject& object) { mesh_ = std::make_unique<GpuMesh>(object); }
+
+void DefaultRenderer::draw(const FrameState& frame) {
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  glDisable(GL_BLEND);
+  program_.use();
+  program_.set("model_view_projection", frame.projection() * frame.view() * frame.model);
+  program_.set("light_object", light_in_object_space(frame));
+  program_.set("ambient", ambient_);
+  program_.set("base_texture", 0);
+  mesh_->bind();
+  for (const GpuBatch& batch : mesh_->batches()) {
+    program_.set("textured", int(batch.textured));
+    mesh_->draw(batch, 0);
+  }
+}
+
+}  // namespace inkwire

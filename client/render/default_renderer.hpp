@@ -1,0 +1,30 @@
+#pragma once
+// The default renderer (SPEC G5), the speed reference (100%): back-face culling, depth test,
+// one directional light, smooth shading, texture where present, geometry uploaded once.
+#include <memory>
+#include <optional>
+
+#include "client/render/gpu_mesh.hpp"
+#include "client/render/renderer.hpp"
+
+namespace inkwire {
+
+class DefaultRenderer final : public Renderer {
+ public:
+  DefaultRenderer();
+  static std::vector<ParamSpec> params();
+  void configure(const StyleParams& params) override;
+  void prepare(const SceneObject& object) override;
+  void draw(const FrameState& frame) override;
+
+ private:
+  gl::Program program_;
+  std::unique_ptr<GpuMesh> mesh_;
+  float ambient_ = 0.2f;
+};
+
+// Light direction in object space: rotate the light once per frame instead of every normal
+// (SPEC C2). Assumes the model matrix is a rotation, translation and uniform scale.
+glm::vec3 light_in_object_space(const FrameState& frame);
+
+}  // namespace inkwire

@@ -1,0 +1,51 @@
+#pragma once
+// A scene object's geometry uploaded once (SPEC G5): one interleaved vertex buffer, one index
+// buffer, and one draw batch per material, triangles sorted by material at load time so a frame
+// switches state once per material rather than per face.
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+#include "client/gl/resources.hpp"
+#include "client/render/scene_object.hpp"
+
+namespace inkwire {
+
+struct GpuVertex {
+  glm::vec3 position;
+  glm::vec3 normal;  // vertex normal (average of adjacent face normals)
+  glm::vec4 colour;  // vertex colour x material base colour
+  glm::vec2 uv;
+};
+
+struct GpuBatch {
+  uint32_t first_index = 0;
+  uint32_t index_count = 0;
+  uint32_t material = 0;
+  bool textured = false;
+};
+
+class GpuMesh {
+ public:
+  explicit GpuMesh(const SceneObject& object);
+
+  // Attribute locations every mesh shader uses.
+  static constexpr GLuint kPosition = 0, kNormal = 1, kColour = 2, kUv = 3;
+
+  void bind() const { vao_.bind(); }
+  const std::vector<GpuBatch>& batches() const { return batches_; }
+  // Binds the batch's texture (if any) to `unit` and draws its triangles.
+  void draw(const GpuBatch& batch, int texture_unit) const;
+  void draw_all() const;  // every triangle, no textures bound (depth passes, masks)
+  size_t vertex_count() const { return vertex_count_; }
+
+ private:
+  gl::VertexArray vao_;
+  gl::Buffer vertices_, indices_;
+  std::vector<GpuBatch> batches_;
+  std::vector<gl::Texture> textures_;  // per material; empty handle when untextured
+  size_t vertex_count_ = 0;
+  uint32_t total_indices_ = 0;
+};
+
+}  // namespace inkwire

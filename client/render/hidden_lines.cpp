@@ -1,0 +1,39 @@
+#include "client/render/hidden_lines.hpp"
+
+namespace inkwire {
+
+using namespace gl;
+
+HiddenLineRemoval::HiddenLineRemoval()
+    : depth_only_(Program::from_files({"common/depth_only.vert", "common/depth_only.frag"})) {}
+
+void HiddenLineRemoval::lay_depth(const GpuMesh& mesh, const glm::mat4& mvp) const {
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(1.0f, 2.0f);
+  depth_only_.use();
+  depth_only_.set("model_view_projection", mvp);
+  mesh.bind();
+  mesh.draw_all();
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+void HiddenLineRemoval::begin_lines() {
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  glDisable(GL_CULL_FACE);
+}
+
+void HiddenLineRemoval::end_lines() {
+  glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LESS);
+}
+
+}  // namespace inkwire

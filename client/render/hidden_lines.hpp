@@ -1,0 +1,27 @@
+#pragma once
+// Hidden-line removal that keeps the backdrop (SPEC G7): lay the filled triangles into the
+// depth buffer only (colour writes masked), then draw lines with a less-or-equal depth test.
+// With several objects, lay every object's depth first, then draw every object's lines.
+#include <glm/mat4x4.hpp>
+
+#include "client/gl/resources.hpp"
+#include "client/render/gpu_mesh.hpp"
+
+namespace inkwire {
+
+class HiddenLineRemoval {
+ public:
+  HiddenLineRemoval();
+  // Pass 1 for one object. The depth is pushed back slightly (polygon offset) so lines lying on
+  // the surface win the less-or-equal test instead of stitching with it.
+  void lay_depth(const GpuMesh& mesh, const glm::mat4& model_view_projection) const;
+  // Pass 2 state: colour writes on, depth test less-or-equal, depth writes off.
+  static void begin_lines();
+  // Back to the usual state (depth writes on, depth test less).
+  static void end_lines();
+
+ private:
+  gl::Program depth_only_;
+};
+
+}  // namespace inkwire

@@ -1,0 +1,43 @@
+#pragma once
+// The one interface every renderer implements (comic, sketch, hatching, painterly, tween, ...).
+// A renderer draws into whatever framebuffer is bound (window or off-screen canvas): it never
+// knows which. prepare() runs once per object; draw() runs every frame.
+#include <map>
+#include <string>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "client/render/scene_object.hpp"
+#include "common/camera.hpp"
+#include "common/style_params.hpp"
+
+namespace inkwire {
+
+struct FrameState {
+  Camera camera;
+  glm::mat4 model{1.0f};           // object pose
+  glm::vec3 light_direction{0, 0, 1};  // world space, unit, pointing toward the light
+  glm::ivec2 viewport{620, 500};
+  double time_seconds = 0.0;       // animation time (drives boiling lines, brush motion, ...)
+  long frame = 0;
+
+  glm::mat4 view() const { return camera.view(); }
+  glm::mat4 projection() const { return camera.projection(float(viewport.x) / float(viewport.y)); }
+};
+
+class Renderer {
+ public:
+  virtual ~Renderer() = default;
+  // Applies style parameters (validated by StyleParams). May be called again between frames.
+  virtual void configure(const StyleParams& params) = 0;
+  // Uploads / precomputes what this renderer needs for the object. Called once per object.
+  virtual void prepare(const SceneObject& object) = 0;
+  // Draws the prepared object over whatever the framebuffer holds (backdrop already drawn).
+  virtual void draw(const FrameState& frame) = 0;
+  // Figures about the last frame (e.g. "front_faces", "edges_drawn"), for benchmarks and tests.
+  virtual std::map<std::string, double> counters() const { return {}; }
+};
+
+}  // namespace inkwire

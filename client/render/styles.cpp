@@ -1,0 +1,37 @@
+#include "client/render/styles.hpp"
+
+#include "client/render/default_renderer.hpp"
+#include "client/render/hidden_line_renderer.hpp"
+#include "common/error.hpp"
+
+namespace inkwire {
+
+const std::vector<StyleInfo>& styles() {
+  static const std::vector<StyleInfo> all = {
+      {"default", "smooth-shaded, one light, textured where possible: the speed reference", "#d9dde3",
+       &DefaultRenderer::params, [] { return std::make_unique<DefaultRenderer>(); }},
+      {"hidden-line", "silhouette, crease and open edges as lines, hidden parts removed, over paper", "paper",
+       &HiddenLineRenderer::params, [] { return std::make_unique<HiddenLineRenderer>(); }},
+  };
+  return all;
+}
+
+const StyleInfo& find_style(const std::string& name) {
+  std::string known;
+  for (const StyleInfo& s : styles()) {
+    if (s.name == name) return s;
+    known += (known.empty() ? "" : ", ") + s.name;
+  }
+  throw Error("unknown style '" + name + "' (known: " + known + ")");
+}
+
+std::unique_ptr<Renderer> make_renderer(const std::string& name, const std::vector<std::string>& assignments) {
+  const StyleInfo& style = find_style(name);
+  StyleParams params(style.params());
+  for (const std::string& a : assignments) params.set_assignment(a);
+  std::unique_ptr<Renderer> renderer = style.create();
+  renderer->configure(params);
+  return renderer;
+}
+
+}  // namespace inkwire

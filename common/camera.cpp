@@ -1,0 +1,48 @@
+#include "common/camera.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+namespace inkwire {
+
+glm::mat4 Camera::view() const { return glm::lookAt(position, target, up); }
+
+glm::mat4 Camera::projection(float aspect) const {
+  return glm::perspective(glm::radians(fov_y_degrees), aspect, near_plane, far_plane);
+}
+
+glm::vec3 Camera::forward() const { return glm::normalize(target - position); }
+
+Camera thesis_camera() {
+  const glm::quat orientation = glm::normalize(glm::quat(0.866f, -0.091f, 0.490f, 0.051f));
+  Camera c;
+  c.position = {12.73f, 17.85f, 12.52f};
+  c.target = {0.0f, 0.0f, 0.0f};
+  c.up = orientation * glm::vec3(0.0f, 1.0f, 0.0f);
+  c.near_plane = 1.0f;
+  c.far_plane = 100.0f;
+  return c;
+}
+
+Camera orbit_camera(const Bounds& bounds, float azimuth_degrees, float elevation_degrees, float distance_diagonals) {
+  const float az = glm::radians(azimuth_degrees);
+  const float el = glm::radians(std::clamp(elevation_degrees, -89.0f, 89.0f));
+  const float diagonal = std::max(bounds.diagonal(), 1e-6f);
+  const float distance = distance_diagonals * diagonal;
+  Camera c;
+  c.target = bounds.centre();
+  c.position = c.target + distance * glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
+  c.near_plane = std::max(distance - diagonal, distance * 0.02f);
+  c.far_plane = distance + diagonal;
+  return c;
+}
+
+glm::vec3 default_light_direction(const Camera& camera) {
+  const glm::mat4 view_to_world = glm::inverse(camera.view());
+  return glm::normalize(glm::vec3(view_to_world * glm::vec4(-0.4f, 0.6f, 0.7f, 0.0f)));
+}
+
+}  // namespace inkwire

@@ -1,0 +1,38 @@
+#pragma once
+// Cameras: the study's benchmark pose (SPEC G4) and an orbit around an object.
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "common/topology.hpp"
+
+namespace inkwire {
+
+struct Camera {
+  glm::vec3 position{0.0f, 0.0f, 5.0f};
+  glm::vec3 target{0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float fov_y_degrees = 45.0f;
+  float near_plane = 0.1f;
+  float far_plane = 100.0f;
+
+  glm::mat4 view() const;
+  glm::mat4 projection(float aspect) const;
+  glm::vec3 forward() const;
+};
+
+// The study's viewer: at (12.73, 17.85, 12.52) with orientation (w,x,y,z) =
+// (0.866, -0.091, 0.490, 0.051). Read as a camera-to-world rotation, that quaternion leaves
+// the object (at the origin) 34 degrees below the view axis, outside a 45-degree field of view,
+// so the source's convention must have differed. We keep the position and the quaternion's up
+// vector (its roll) and aim at the origin, which is what the study's figures show.
+Camera thesis_camera();
+
+// A camera on a sphere around `bounds`: azimuth about +Y from +Z, elevation above the XZ plane,
+// distance in bounding-box diagonals from the centre.
+Camera orbit_camera(const Bounds& bounds, float azimuth_degrees, float elevation_degrees, float distance_diagonals);
+
+// A directional light for a camera: from above-left of the viewer, as a unit vector pointing
+// from the surface toward the light, in world space.
+glm::vec3 default_light_direction(const Camera& camera);
+
+}  // namespace inkwire

@@ -1,0 +1,80 @@
+#include "common/image.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+
+#include "common/error.hpp"
+
+namespace inkwire {
+namespace {
+
+Image read_all(OIIO::ImageInput& in, const std::string& name) {
+  const OIIO::ImageSpec& spec = in.spec();
+  if (spec.width <= 0 || spec.height <= 0 || spec.width > kMaxImageSide || spec.height > kMaxImageSide)
+    throw Error(name + ": image size " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                " is outside 1.." + std::to_string(kMaxImageSide));
+  if (spec.nchannels < 1 || spec.nchannels > 16) throw Error(name + ": image has an unsupported channel count");
+  const int channels = spec.nchannels;
+  std::vector<uint8_t> raw(size_t(spec.width) * spec.height * channels);
+  if (!in.read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, raw.data()))
+    throw Error(name + ": " + in.geterror());
+  Image img(spec.width, spec.height);
+  for (size_t i = 0, n = size_t(spec.width) * spec.height; i < n; ++i) {
+    const uint8_t* s = &raw[i * channels];
+    uint8_t* d = &img.pixels[i * 4];
+    if (channels >= 3) {
+      d[0] = s[0], d[1] = s[1], d[2] = s[2];
+    } else {
+      d[0] = d[1] = d[2] = s[0];
+    }
+    d[3] = channels == 2 ? s[1] : channels >= 4 ? s[3] : 255;
+  }
+  return img;
+}
+
+}  // namespace
+
+Image::Image(int w, int h, glm::u8vec4 fill) : width(w), height(h), pixels(size_t(w) * h * 4) {
+  for (size_t i = 0; i < pixels.size(); i += 4) std::memcpy(&pixels[i], &fill[0], 4);
+}
+
+Image load_image(const std::filesystem::path& file) {
+  auto in = OIIO::ImageInput::open(file.string());
+  if (!in) throw Error(file.string() + ": " + OIIO::geterror());
+  return read_all(*in, file.string());
+}
+
+Image load_image_from_memory(std::span<const uint8_t> encoded, const std::string& name) {
+  // OpenImageIO picks the format from the name's extension, then from the bytes' magic numbers.
+  OIIO::Filesystem::IOMemReader reader(const_cast<uint8_t*>(encoded.data()), encoded.size());
+  OIIO::ImageSpec config;
+  config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &reader);
+  auto in = OIIO::ImageInput::open(name, &config);
+  if (!in) throw Error(name + ": " + OIIO::geterror());
+  return read_all(*in, name);
+}
+
+void save_image(const Image& image, const std::filesystem::path& file, bool keep_alpha) {
+  if (image.empty()) throw Error(file.string() + ": refusing to write an empty image");
+  auto out = OIIO::ImageOutput::create(file.string());
+  if (!out) throw Error(file.string() + ": " + OIIO::geterror());
+  const int channels = keep_alpha ? 4 : 3;
+  OIIO::ImageSpec spec(image.width, image.height, channels, OIIO::TypeDesc::UINT8);
+  if (!out->open(file.string(), spec)) throw Error(file.string() + ": " + out->geterror());
+  // Strides let OpenImageIO skip the alpha byte when it is not wanted.
+  const OIIO::stride_t xstride = 4, ystride = OIIO::stride_t(image.width) * 4;
+  if (!out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data(), xstride, ystride) || !out->close())
+    throw Error(file.string() + ": " + out->geterror());
+}
+
+void flip_rows(Image& image) {
+  const size_t row = size_t(image.width) * 4;
+  for (int y = 0; y < image.height / 2; ++y)
+    std::swap_ranges(image.pixels.begin() + y * row, image.pixels.begin() + (y + 1) * row,
+                     image.pixels.begin() + (image.height - 1 - y) * row);
+}
+
+}  // namespace inkwire

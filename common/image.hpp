@@ -1,0 +1,42 @@
+#pragma once
+// 8-bit RGBA images, rows top-down (the way files and people see them), read and written
+// through OpenImageIO.
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+namespace inkwire {
+
+struct Image {
+  int width = 0, height = 0;
+  std::vector<uint8_t> pixels;  // RGBA, row 0 is the top row
+
+  Image() = default;
+  Image(int w, int h, glm::u8vec4 fill = {0, 0, 0, 0});
+  bool empty() const { return width == 0 || height == 0; }
+  uint8_t* at(int x, int y) { return &pixels[(size_t(y) * width + x) * 4]; }
+  const uint8_t* at(int x, int y) const { return &pixels[(size_t(y) * width + x) * 4]; }
+  glm::u8vec4 rgba(int x, int y) const {
+    const uint8_t* p = at(x, y);
+    return {p[0], p[1], p[2], p[3]};
+  }
+};
+
+// Images larger than this on either side are refused when read from outside.
+inline constexpr int kMaxImageSide = 16384;
+
+// Converts any channel count to RGBA (grey -> RGB, missing alpha -> opaque). Throws
+// inkwire::Error with a one-line reason on unreadable, truncated or oversized files.
+Image load_image(const std::filesystem::path& file);
+Image load_image_from_memory(std::span<const uint8_t> encoded, const std::string& name_for_errors);
+
+// Writes PNG (or any format OpenImageIO knows by extension). `keep_alpha` false drops alpha.
+void save_image(const Image& image, const std::filesystem::path& file, bool keep_alpha = true);
+
+// Reverses row order: GL read-backs are bottom-up.
+void flip_rows(Image& image);
+
+}  // namespace inkwire

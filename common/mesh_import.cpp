@@ -1,0 +1,195 @@
+#include "common/mesh_import.hpp"
+
+#include <cstring>
+#include <unordered_map>
+#include <unordered_set>
+
+#include <assimp/Importer.hpp>
+#include <assimp/material.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <glm/mat4x4.hpp>
+
+#include "common/error.hpp"
+
+namespace inkwire {
+namespace {
+
+// Nodes deeper than this are refused: real scenes are shallow, hostile ones recurse.
+constexpr int kMaxNodeDepth = 256;
+
+glm::mat4 to_glm(const aiMatrix4x4& m) {
+  // assimp is row-major, glm column-major.
+  return glm::mat4(m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3, m.a4, m.b4, m.c4, m.d4);
+}
+
+struct PositionKey {
+  float x, y, z;
+  bool operator==(const PositionKey& o) const { return std::memcmp(this, &o, sizeof(*this)) == 0; }
+};
+struct PositionHash {
+  size_t operator()(const PositionKey& k) const {
+    uint32_t b[3];
+    std::memcpy(b, &k, sizeof(b));
+    return (size_t(b[0]) * 73856093u) ^ (size_t(b[1]) * 19349663u) ^ (size_t(b[2]) * 83492791u);
+  }
+};
+
+class MeshBuilder {
+ public:
+  MeshBuilder(const aiScene& scene, const std::filesystem::path& file, ImportReport& report)
+      : scene_(scene), file_(file), report_(report) {
+    read_materials();
+  }
+
+  void add_node(const aiNode& node, const glm::mat4& parent, int depth) {
+    if (depth > kMaxNodeDepth) throw Error("scene nodes nest deeper than " + std::to_string(kMaxNodeDepth));
+    if (!visited_.insert(&node).second) throw Error("scene node graph has a cycle");
+    const glm::mat4 transform = parent * to_glm(node.mTransformation);
+    for (unsigned i = 0; i < node.mNumMeshes; ++i) {
+      if (node.mMeshes[i] >= scene_.mNumMeshes) throw Error("scene node refers to a mesh that does not exist");
+      add_mesh(*scene_.mMeshes[node.mMeshes[i]], transform);
+    }
+    for (unsigned i = 0; i < node.mNumChildren; ++i) {
+      if (!node.mChildren[i]) throw Error("scene node has a missing child");
+      add_node(*node.mChildren[i], transform, depth + 1);
+    }
+  }
+
+  Mesh take() {
+    if (!any_colour_) mesh_.colours.clear();
+    if (!any_uv_) mesh_.corner_uvs.clear();
+    if (mesh_.materials.size() <= 1) mesh_.triangle_material.clear();
+    return std::move(mesh_);
+  }
+
+ private:
+  void read_materials() {
+    for (unsigned m = 0; m < scene_.mNumMaterials; ++m) {
+      const aiMaterial* src = scene_.mMaterials[m];
+      Material mat;
+      aiString name;
+      if (src->Get(AI_MATKEY_NAME, name) == AI_SUCCESS) mat.name = name.C_Str();
+      aiColor4D colour;
+      if (src->Get(AI_MATKEY_BASE_COLOR, colour) == AI_SUCCESS || src->Get(AI_MATKEY_COLOR_DIFFUSE, colour) == AI_SUCCESS)
+        mat.base_colour = {colour.r, colour.g, colour.b, colour.a};
+      aiString tex;
+      if (src->GetTexture(aiTextureType_BASE_COLOR, 0, &tex) == AI_SUCCESS ||
+          src->GetTexture(aiTextureType_DIFFUSE, 0, &tex) == AI_SUCCESS)
+        attach_texture(mat, tex.C_Str());
+      mesh_.materials.push_back(std::move(mat));
+    }
+    if (mesh_.materials.empty()) mesh_.materials.emplace_back();
+  }
+
+  void attach_texture(Material& mat, const std::string& ref) {
+    if (const aiTexture* embedded = scene_.GetEmbeddedTexture(ref.c_str())) {
+      if (embedded->mHeight == 0) {  // compressed (PNG, JPEG...): mWidth is the byte count
+        const auto* bytes = reinterpret_cast<const unsigned char*>(embedded->pcData);
+        mat.texture_bytes.assign(bytes, bytes + embedded->mWidth);
+      }
+      return;  // uncompressed embedded texels are rare; such materials render untextured
+    }
+    if (ref.empty() || ref[0] == '*') return;
+    std::filesystem::path path = file_.parent_path() / ref;
+    if (std::filesystem::is_regular_file(path)) mat.texture_file = path;
+  }
+
+  uint32_t weld(const glm::vec3& p) {
+    const PositionKey key{p.x + 0.0f, p.y + 0.0f, p.z + 0.0f};  // +0 folds -0 into 0
+    auto [it, inserted] = index_of_.try_emplace(key, uint32_t(mesh_.positions.size()));
+    if (inserted) {
+      mesh_.positions.push_back(p);
+      mesh_.colours.emplace_back(1.0f);
+    }
+    return it->second;
+  }
+
+  void add_mesh(const aiMesh& src, const glm::mat4& transform) {
+    report_.source_vertices += src.mNumVertices;
+    if (!src.mVertices && src.mNumVertices > 0) throw Error("mesh '" + std::string(src.mName.C_Str()) + "' has no positions");
+    if (src.mMaterialIndex >= mesh_.materials.size()) throw Error("mesh refers to a material that does not exist");
+    std::vector<uint32_t> welded(src.mNumVertices);
+    for (unsigned v = 0; v < src.mNumVertices; ++v) {
+      const aiVector3D& a = src.mVertices[v];
+      const glm::vec3 p = glm::vec3(transform * glm::vec4(a.x, a.y, a.z, 1.0f));
+      welded[v] = weld(p);
+      if (src.mColors[0]) {
+        const aiColor4D& c = src.mColors[0][v];
+        mesh_.colours[welded[v]] = {c.r, c.g, c.b, c.a};
+        any_colour_ = true;
+      }
+    }
+    const bool has_uv = src.mTextureCoords[0] != nullptr;
+    for (unsigned f = 0; f < src.mNumFaces; ++f) {
+      const aiFace& face = src.mFaces[f];
+      if (face.mNumIndices != 3) {
+        ++report_.non_triangles_skipped;
+        continue;
+      }
+      std::array<uint32_t, 3> tri{};
+      std::array<glm::vec2, 3> uv{};
+      for (int c = 0; c < 3; ++c) {
+        const unsigned i = face.mIndices[c];
+        if (i >= src.mNumVertices)
+          throw Error("face " + std::to_string(f) + " refers to vertex " + std::to_string(i) + " but the mesh has only " +
+                      std::to_string(src.mNumVertices));
+        tri[c] = welded[i];
+        if (has_uv) uv[c] = {src.mTextureCoords[0][i].x, src.mTextureCoords[0][i].y};
+      }
+      mesh_.triangles.push_back(tri);
+      mesh_.corner_uvs.push_back(uv);
+      mesh_.triangle_material.push_back(src.mMaterialIndex);
+      any_uv_ = any_uv_ || has_uv;
+    }
+  }
+
+  const aiScene& scene_;
+  std::filesystem::path file_;
+  ImportReport& report_;
+  Mesh mesh_;
+  std::unordered_map<PositionKey, uint32_t, PositionHash> index_of_;
+  std::unordered_set<const aiNode*> visited_;
+  bool any_colour_ = false;
+  bool any_uv_ = false;
+};
+
+}  // namespace
+
+Mesh load_mesh(const std::filesystem::path& file, ImportReport* report_out) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) throw Error(file.string() + ": no such file");
+  const uintmax_t bytes = std::filesystem::file_size(file, ec);
+  if (ec) throw Error(file.string() + ": cannot read file size");
+  if (bytes == 0) throw Error(file.string() + ": file is empty");
+  if (bytes > kMaxMeshFileBytes) throw Error(file.string() + ": file is larger than the 1 GiB limit");
+
+  Assimp::Importer importer;
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  const unsigned flags = aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure;
+  const aiScene* scene = nullptr;
+  try {
+    scene = importer.ReadFile(file.string(), flags);
+  } catch (const std::exception& e) {  // assimp mostly reports through GetErrorString, not always
+    throw Error(file.string() + ": " + e.what());
+  }
+  if (!scene) throw Error(file.string() + ": " + importer.GetErrorString());
+  if (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) throw Error(file.string() + ": file is incomplete");
+  if (!scene->mRootNode) throw Error(file.string() + ": file has no scene graph");
+
+  ImportReport report;
+  Mesh mesh;
+  try {
+    MeshBuilder builder(*scene, file, report);
+    builder.add_node(*scene->mRootNode, glm::mat4(1.0f), 0);
+    mesh = builder.take();
+    report.degenerate_dropped = remove_degenerate_and_unused(mesh);
+    validate_mesh(mesh);
+  } catch (const Error& e) {
+    throw Error(file.string() + ": " + e.what());
+  }
+  if (report_out) *report_out = report;
+  return mesh;
+}
+
+}  // namespace inkwire

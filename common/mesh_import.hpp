@@ -1,0 +1,22 @@
+#pragma once
+// Loads a triangle mesh from any format assimp reads (SPEC G1: OBJ, PLY, OFF, 3DS, ASE, glTF and
+// more), flattening the node hierarchy, triangulating polygons and welding equal positions so
+// the topology is real. Bad files end in inkwire::Error with a one-line reason.
+#include <filesystem>
+
+#include "common/mesh.hpp"
+
+namespace inkwire {
+
+struct ImportReport {
+  size_t source_vertices = 0;      // vertices in the file, before welding
+  size_t degenerate_dropped = 0;   // triangles repeating a vertex after welding
+  size_t non_triangles_skipped = 0;  // points and lines, which no renderer draws
+};
+
+// Files larger than this are refused before assimp sees them.
+inline constexpr uintmax_t kMaxMeshFileBytes = 1ull << 30;
+
+Mesh load_mesh(const std::filesystem::path& file, ImportReport* report = nullptr);
+
+}  // namespace inkwire
