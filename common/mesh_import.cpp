@@ -1,10 +1,15 @@
 #include "common/mesh_import.hpp"
 
 #include <cstring>
+#include <fstream>
+#include <sstream>
+#include <mutex>
 #include <unordered_map>
 #include <unordered_set>
 
+#include <assimp/DefaultLogger.hpp>
 #include <assimp/Importer.hpp>
+#include <assimp/LogStream.hpp>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -154,6 +159,66 @@ class MeshBuilder {
   bool any_uv_ = false;
 };
 
+// Formats that declare their element counts up front (OFF, PLY) can make assimp reserve or
+// loop over billions of elements before noticing the file is short. A vertex or face takes at
+// least a few bytes even in binary, so counts the file is too small to hold are refused here.
+void check_declared_counts(const std::filesystem::path& file, uintmax_t bytes) {
+  std::ifstream in(file, std::ios::binary);
+  std::string first;
+  in >> first;
+  unsigned long long vertices = 0, faces = 0;
+  if (first == "OFF" || first == "COFF" || first == "NOFF" || first == "CNOFF") {
+    std::string line;
+    std::getline(in, line);
+    while (std::getline(in, line) && (line.empty() || line[0] == '#')) {}
+    std::istringstream counts(line);
+    counts >> vertices >> faces;
+  } else if (first == "ply") {
+    std::string line;
+    for (int i = 0; i < 200 && std::getline(in, line) && line.rfind("end_header", 0) != 0; ++i) {
+      std::istringstream words(line);
+      std::string element, name;
+      unsigned long long n = 0;
+      if (words >> element >> name >> n && element == "element") (name == "vertex" ? vertices : faces) += n;
+    }
+  } else {
+    return;
+  }
+  constexpr unsigned long long kMinBytesPerElement = 3;  // e.g. "0 0 0" squeezed, or 3 bytes binary
+  if (vertices > kMaxMeshVertices || faces > kMaxMeshTriangles ||
+      (vertices + faces) * kMinBytesPerElement > bytes)
+    throw Error(file.string() + ": header declares " + std::to_string(vertices) + " vertices and " + std::to_string(faces) +
+                " faces, more than the " + std::to_string(bytes) + "-byte file can hold or than the limits allow");
+}
+
+// assimp reports some damage only through its log while still returning a scene: faces with
+// out-of-range indices dropped, vertices that do not fit the primitive mode dropped, a missing
+// material replaced. We refuse such files rather than draw part of them, so the import listens
+// to the log and keeps the first error or data-loss warning of the current thread's import.
+thread_local std::string* current_import_problem = nullptr;
+
+class ProblemCollector final : public Assimp::LogStream {
+ public:
+  void write(const char* message) override {
+    if (!current_import_problem || !current_import_problem->empty()) return;
+    std::string m = message;
+    const bool error = m.rfind("Error", 0) == 0;
+    const bool data_lost = m.find("dropped") != std::string::npos || m.find("out-of-range") != std::string::npos;
+    if (!error && !data_lost) return;
+    if (const auto colon = m.find(": "); colon != std::string::npos) m = m.substr(colon + 2);
+    while (!m.empty() && (m.back() == '\n' || m.back() == ' ')) m.pop_back();
+    *current_import_problem = m;
+  }
+};
+
+void listen_to_assimp() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    Assimp::DefaultLogger::create("", Assimp::Logger::NORMAL, 0);
+    Assimp::DefaultLogger::get()->attachStream(new ProblemCollector, Assimp::Logger::Err | Assimp::Logger::Warn);
+  });
+}
+
 }  // namespace
 
 Mesh load_mesh(const std::filesystem::path& file, ImportReport* report_out) {
@@ -164,16 +229,24 @@ Mesh load_mesh(const std::filesystem::path& file, ImportReport* report_out) {
   if (bytes == 0) throw Error(file.string() + ": file is empty");
   if (bytes > kMaxMeshFileBytes) throw Error(file.string() + ": file is larger than the 1 GiB limit");
 
+  check_declared_counts(file, bytes);
+
   Assimp::Importer importer;
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
   const unsigned flags = aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure;
   const aiScene* scene = nullptr;
+  std::string problem;
+  listen_to_assimp();
+  current_import_problem = &problem;
   try {
     scene = importer.ReadFile(file.string(), flags);
   } catch (const std::exception& e) {  // assimp mostly reports through GetErrorString, not always
+    current_import_problem = nullptr;
     throw Error(file.string() + ": " + e.what());
   }
+  current_import_problem = nullptr;
   if (!scene) throw Error(file.string() + ": " + importer.GetErrorString());
+  if (!problem.empty()) throw Error(file.string() + ": " + problem);
   if (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) throw Error(file.string() + ": file is incomplete");
   if (!scene->mRootNode) throw Error(file.string() + ": file has no scene graph");
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <unordered_map>
 
 #include <glm/geometric.hpp>
@@ -80,7 +81,7 @@ Topology build_topology(const Mesh& mesh) {
     e.boundary = adj.count == 1;
     e.non_manifold = adj.count > 2;
     if (e.boundary) {
-      e.dihedral = float(M_PI);
+      e.dihedral = std::numbers::pi_v<float>;
     } else {
       // atan2 keeps precision for nearly flat edges, where acos of a dot product loses it.
       const glm::vec3& n0 = topo.face_normals[e.f0];

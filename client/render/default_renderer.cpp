@@ -3,6 +3,8 @@
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
+#include "common/error.hpp"
+
 namespace inkwire {
 
 using namespace gl;
@@ -22,6 +24,7 @@ void DefaultRenderer::configure(const StyleParams& params) { ambient_ = params.g
 void DefaultRenderer::prepare(const SceneObject& object) { mesh_ = std::make_unique<GpuMesh>(object); }
 
 void DefaultRenderer::draw(const FrameState& frame) {
+  if (!mesh_) throw Error("DefaultRenderer::draw(): prepare() was not called");
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);

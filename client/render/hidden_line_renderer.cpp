@@ -4,6 +4,8 @@
 
 #include "common/orientation.hpp"
 
+#include "common/error.hpp"
+
 namespace inkwire {
 
 using namespace gl;
@@ -34,6 +36,7 @@ void HiddenLineRenderer::prepare(const SceneObject& object) {
 }
 
 void HiddenLineRenderer::draw(const FrameState& frame) {
+  if (!mesh_) throw Error("HiddenLineRenderer::draw(): prepare() was not called");
   const Mesh& mesh = object_->mesh;
   const glm::vec3 eye_object = glm::vec3(glm::inverse(frame.model) * glm::vec4(frame.camera.position, 1.0f));
   front_faces_ = classify_faces(mesh, object_->topology, eye_object, front_);

@@ -1,0 +1,39 @@
+#include <gtest/gtest.h>
+
+#include "common/error.hpp"
+#include "common/image.hpp"
+#include "test_data.hpp"
+
+using namespace inkwire;
+using namespace inkwire::test;
+
+TEST(ImageTest, PngRoundTripKeepsRowsTopDown) {
+  Image img(4, 3, {0, 0, 0, 255});
+  img.at(0, 0)[0] = 255;  // top-left red
+  img.at(3, 2)[2] = 255;  // bottom-right blue
+  const auto file = write_temp("roundtrip.png", "");
+  save_image(img, file);
+  const Image back = load_image(file);
+  ASSERT_EQ(back.width, 4);
+  ASSERT_EQ(back.height, 3);
+  EXPECT_EQ(back.pixels, img.pixels);
+}
+
+TEST(ImageTest, FlipRowsReversesRowOrder) {
+  Image img(2, 3);
+  img.at(1, 0)[1] = 7;
+  flip_rows(img);
+  EXPECT_EQ(img.at(1, 2)[1], 7);
+  EXPECT_EQ(img.at(1, 0)[1], 0);
+}
+
+TEST(ImageTest, TruncatedAndBogusFilesAreRefused) {
+  Image img(64, 64, {10, 20, 30, 255});
+  const auto good = write_temp("whole.png", "");
+  save_image(img, good);
+  std::ifstream in(good, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_THROW(load_image(write_temp("truncated.png", bytes.substr(0, bytes.size() / 2))), Error);
+  EXPECT_THROW(load_image(write_temp("bogus.png", "not a png at all")), Error);
+  EXPECT_THROW(load_image("/nonexistent.png"), Error);
+}
