@@ -46,7 +46,7 @@ void FrameWriter::write(const Image& frame) {
   if (!pipe_) {
     const std::string cmd = "ffmpeg -loglevel error -y -f rawvideo -pix_fmt rgba -s " + std::to_string(frame.width) + "x" +
                             std::to_string(frame.height) + " -r " + std::to_string(fps_) +
-                            " -i - -vf pad=ceil(iw/2)*2:ceil(ih/2)*2 -c:v libx264 -preset medium -crf 20 -pix_fmt yuv420p -movflags +faststart " +
+                            " -i - -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -c:v libx264 -preset medium -crf 20 -pix_fmt yuv420p -movflags +faststart " +
                             shell_quote(path_);
     pipe_ = popen(cmd.c_str(), "w");
     if (!pipe_) throw Error("could not start ffmpeg to write " + path_);

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# The demo: installs what is missing, builds, and renders packaged models in every registered
+# style into a gallery, plus turntable videos.
+#   scripts/demo.sh [OUT_DIR]      (default: demo-output/)
+# Writes OUT_DIR/contact-sheet.png (models x styles), OUT_DIR/styles/<model>-<style>.png and
+# OUT_DIR/turntable-<style>.mp4.
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+out=$(realpath -m "${1:-$here/demo-output}")
+"$here/scripts/setup.sh"
+
+bin="$here/build/bin"
+meshes="$here/build/packaged-data/data/meshes"
+# Packaged models: a textured duck (assimp-testmodels) and a closed cow (libcgal-demo).
+models=("duck:/usr/share/assimp/models/Collada/duck.dae" "cow:$meshes/cow.off")
+mapfile -t styles < <("$bin/inkwire-render" --style list | awk '/^[^ ]/ {print $1}')
+font=/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf
+mkdir -p "$out/styles"
+
+tiles=()
+for entry in "${models[@]}"; do
+  model=${entry%%:*}; file=${entry#*:}
+  for style in "${styles[@]}"; do
+    tile="$out/styles/$model-$style.png"
+    "$bin/inkwire-render" --mesh "$file" --style "$style" --view 35,15,1.3 --size 400x320 --out "$tile"
+    tiles+=("$tile" --text:x=12:y=26:size=18:color=0.15,0.15,0.15:font=$font "$model / $style")
+  done
+done
+oiiotool "${tiles[@]}" --mosaic:pad=6 "${#styles[@]}x${#models[@]}" --ch R,G,B -o "$out/contact-sheet.png"
+
+for style in "${styles[@]}"; do
+  "$bin/inkwire-render" --mesh "$meshes/cow.off" --style "$style" --view 35,15,1.3 --size 640x480 \
+    --frames 96 --out "$out/turntable-$style.mp4"
+done
+
+echo "demo: wrote $out/contact-sheet.png, $out/styles/ and $out/turntable-*.mp4"

@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds, and runs every test: unit tests, headless GL tests (OSMesa),
+# and the windowed GL tests on a virtual display.
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+"$here/scripts/setup.sh"
+cd "$here"
+# xvfb-run gives the GLFW tests a display; without it they skip and say so.
+runner=()
+command -v xvfb-run >/dev/null && runner=(xvfb-run -a -s "-screen 0 1024x768x24")
+"${runner[@]}" ctest --test-dir build --output-on-failure -j "$(nproc)"

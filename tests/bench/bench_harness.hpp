@@ -1,0 +1,71 @@
+#pragma once
+// The benchmark harness every suite plugs into: the study's set-up (SPEC G4), frame timing,
+// and result rows with the names CONTRACTS.md fixes.
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "client/gl/canvas.hpp"
+#include "client/gl/context.hpp"
+#include "client/render/renderer.hpp"
+
+namespace inkwire::bench {
+
+struct Result {
+  std::string suite, renderer, variant, object;
+  size_t faces = 0;
+  int frames = 0;
+  double fps_median = 0, fps_min = 0, fps_max = 0;
+  double rel_default = 0;  // fps_median over the default renderer's on the same object, same run
+  std::map<std::string, double> counters;
+};
+
+struct Options {
+  int frames = 1000;
+  std::string mesh;  // the LOD series' source mesh
+};
+
+// One object of the level-of-detail series, placed as in the study: thesis camera, one light,
+// scaled to cover about 15.5% of a 620x500 window.
+struct BenchObject {
+  std::string name;  // "lod0".."lod5"
+  SceneObject object;
+  FrameState frame;
+};
+
+// The study's face counts for Deer0..Deer5 (SPEC G4).
+inline const std::vector<size_t> kLodFaces = {578, 870, 1284, 2162, 5488, 10648};
+inline constexpr int kWidth = 620, kHeight = 500;
+inline constexpr double kTargetCoverage = 0.155;
+
+class Harness {
+ public:
+  explicit Harness(const Options& options);
+  const Options& options() const { return options_; }
+  Canvas& canvas() { return *canvas_; }
+  Context& context() { return *context_; }
+  // The LOD series, built once on first use.
+  std::vector<BenchObject>& lod_series();
+
+  // Times `frames` frames of `renderer` (after a short warm-up) drawing `object`'s frame state
+  // over a flat clear, finishing GL work each frame so the time is the frame's real cost.
+  // Fills fps fields and `frames`; the caller fills names and counters.
+  Result time_frames(Renderer& renderer, const BenchObject& object, int frames);
+
+ private:
+  Options options_;
+  std::unique_ptr<Context> context_;
+  std::unique_ptr<Canvas> canvas_;
+  std::vector<BenchObject> lods_;
+};
+
+using Suite = std::function<std::vector<Result>(Harness&)>;
+
+// Registered suites by name, in the order they run for --suite all.
+const std::vector<std::pair<std::string, Suite>>& suites();
+
+std::vector<Result> run_default_suite(Harness& harness);
+
+}  // namespace inkwire::bench
