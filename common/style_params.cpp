@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 #include "common/error.hpp"
 
@@ -20,6 +21,12 @@ bool parse_bool(const std::string& text, bool& out) {
   if (text == "1" || text == "true" || text == "on" || text == "yes") return out = true, true;
   if (text == "0" || text == "false" || text == "off" || text == "no") return out = false, true;
   return false;
+}
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%g", v);
+  return buf;
 }
 
 std::string join(const std::vector<std::string>& items) {
@@ -89,13 +96,13 @@ void StyleParams::set(const std::string& key, const std::string& value) {
     case ParamType::Float: {
       double v;
       if (!parse_number(value, v) || !std::isfinite(v)) throw Error(bad + "not a number");
-      if (v < s.min || v > s.max) throw Error(bad + "outside " + std::to_string(s.min) + ".." + std::to_string(s.max));
+      if (v < s.min || v > s.max) throw Error(bad + "outside " + number(s.min) + ".." + number(s.max));
       break;
     }
     case ParamType::Int: {
       long v;
       if (!parse_number(value, v)) throw Error(bad + "not an integer");
-      if (v < s.min || v > s.max) throw Error(bad + "outside " + std::to_string(long(s.min)) + ".." + std::to_string(long(s.max)));
+      if (v < s.min || v > s.max) throw Error(bad + "outside " + number(s.min) + ".." + number(s.max));
       break;
     }
     case ParamType::Bool: {
