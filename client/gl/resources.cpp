@@ -51,14 +51,19 @@ void VertexArray::attribute(GLuint index, const Buffer& buffer, GLint components
     glVertexAttribIPointer(index, components, type, stride, reinterpret_cast<const void*>(offset));
 }
 
-Texture Texture::from_image(const Image& image, const TextureOptions& options) {
-  if (image.empty()) throw Error("cannot make a texture from an empty image");
+Texture Texture::create_bound(GLenum target) {
   GLuint id = 0;
   glGenTextures(1, &id);
   Texture t(id);
-  t.target_ = GL_TEXTURE_2D;
-  glBindTexture(GL_TEXTURE_2D, id);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  t.target_ = target;
+  glBindTexture(target, id);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);  // our texel rows are tightly packed
+  return t;
+}
+
+Texture Texture::from_image(const Image& image, const TextureOptions& options) {
+  if (image.empty()) throw Error("cannot make a texture from an empty image");
+  Texture t = create_bound(GL_TEXTURE_2D);
   // Uploaded top row first, so t = 0 is the image's top; mesh uploads flip v to match.
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
   const GLint wrap = options.repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
@@ -74,12 +79,7 @@ Texture Texture::from_image(const Image& image, const TextureOptions& options) {
 
 Texture Texture::lookup_1d(const std::vector<glm::u8vec4>& texels, bool linear) {
   if (texels.empty()) throw Error("cannot make a lookup texture with no texels");
-  GLuint id = 0;
-  glGenTextures(1, &id);
-  Texture t(id);
-  t.target_ = GL_TEXTURE_1D;
-  glBindTexture(GL_TEXTURE_1D, id);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  Texture t = create_bound(GL_TEXTURE_1D);
   glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA8, GLsizei(texels.size()), 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
   glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   const GLint filter = linear ? GL_LINEAR : GL_NEAREST;

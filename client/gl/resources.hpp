@@ -91,6 +91,7 @@ class Texture : public Handle<delete_texture> {
 
  private:
   using Handle::Handle;
+  static Texture create_bound(GLenum target);  // new texture, bound, ready for upload
   GLenum target_ = GL_TEXTURE_2D;
 };
 

@@ -14,52 +14,41 @@
 
 using namespace inkwire;
 
-namespace {
-
-struct ThesisScene {
-  SceneObject object;
-  FrameState frame;
+// The bench's set-up: bull.off at 1284 faces, thesis camera, scaled to ~15.5% coverage.
+class DefaultThesisGLTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    INKWIRE_REQUIRE_FILE(test::cgal_mesh("bull.off"));
+    test::offscreen_context();
+    canvas_ = std::make_unique<Canvas>(620, 500);
+    object_ = load_scene_object(test::cgal_mesh("bull.off"), 1284);
+    frame_.camera = thesis_camera();
+    frame_.viewport = canvas_->size();
+    frame_.light_direction = default_light_direction(frame_.camera);
+    renderer_ = make_renderer("default");
+    renderer_->prepare(object_);
+    frame_.model = glm::scale(glm::mat4(1.0f), glm::vec3(fit_scale_for_coverage(*renderer_, frame_, *canvas_, 0.155)));
+  }
+  std::unique_ptr<Canvas> canvas_;
+  SceneObject object_;
+  FrameState frame_;
+  std::unique_ptr<Renderer> renderer_;
 };
 
-// The bench's set-up: bull.off at 1284 faces, thesis camera, scaled to ~15.5% coverage.
-ThesisScene thesis_scene(const Canvas& canvas) {
-  ThesisScene s{load_scene_object(test::cgal_mesh("bull.off"), 1284), {}};
-  s.frame.camera = thesis_camera();
-  s.frame.viewport = canvas.size();
-  s.frame.light_direction = default_light_direction(s.frame.camera);
-  auto renderer = make_renderer("default");
-  renderer->prepare(s.object);
-  s.frame.model = glm::scale(glm::mat4(1.0f), glm::vec3(fit_scale_for_coverage(*renderer, s.frame, canvas, 0.155)));
-  return s;
-}
-
-}  // namespace
-
-TEST(DefaultRendererGLTest, ThesisPoseMatchesGolden) {
-  INKWIRE_REQUIRE_FILE(test::cgal_mesh("bull.off"));
-  test::offscreen_context();
-  Canvas canvas(620, 500);
-  ThesisScene scene = thesis_scene(canvas);
-  auto renderer = make_renderer("default");
-  renderer->prepare(scene.object);
-  canvas.bind();
+TEST_F(DefaultThesisGLTest, MatchesGolden) {
+  canvas_->bind();
   Backdrop(BackdropSpec::parse("#d9dde3")).draw();
-  renderer->draw(scene.frame);
+  renderer_->draw(frame_);
   // llvmpipe is deterministic for one Mesa build; the tolerance absorbs rounding differences
-  // between its SIMD code paths on other CPUs (edge pixels, +-1 in shading), not shape changes:
-  // a moved, missing or reshaded object changes far more than 0.5% of the pixels.
-  const std::string failure = test::compare_with_golden(canvas.read(), "default_thesis_bull1284", {12, 0.005, 0.5});
+  // between its SIMD code paths on other CPUs (+-1..3 in shading, a few edge pixels), not real
+  // changes: a moved or missing object, or ambient 0.2 -> 0.25 (up to 10 levels over most of
+  // the object), changes far more than 0.5% of the pixels by more than 3.
+  const std::string failure = test::compare_with_golden(canvas_->read(), "default_thesis_bull1284", {3, 0.005, 0.3});
   EXPECT_EQ(failure, "");
 }
 
-TEST(DefaultRendererGLTest, CoverageFitLandsInTheStudysRange) {
-  INKWIRE_REQUIRE_FILE(test::cgal_mesh("bull.off"));
-  test::offscreen_context();
-  Canvas canvas(620, 500);
-  ThesisScene scene = thesis_scene(canvas);
-  auto renderer = make_renderer("default");
-  renderer->prepare(scene.object);
-  const double coverage = measure_coverage(*renderer, scene.frame, canvas);
+TEST_F(DefaultThesisGLTest, CoverageFitLandsInTheStudysRange) {
+  const double coverage = measure_coverage(*renderer_, frame_, *canvas_);
   EXPECT_GE(coverage, 0.14);
   EXPECT_LE(coverage, 0.17);
 }
