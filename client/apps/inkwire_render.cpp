@@ -19,7 +19,7 @@ using namespace inkwire;
 namespace {
 
 struct Options {
-  std::string mesh, style = "default", pose = "thesis", view, size = "620x500", backdrop, out;
+  std::string gl = "osmesa", mesh, style = "default", pose = "thesis", view, size = "620x500", backdrop, out;
   std::vector<std::string> set;
   size_t lod = 0;
   int frames = 1, fps = 24, msaa = 4;
@@ -59,7 +59,7 @@ int run(const Options& o) {
   SceneObject object = load_scene_object(o.mesh, o.lod);
   for (const std::string& w : object.warnings) std::cerr << "inkwire-render: warning: " << w << "\n";
 
-  auto context = create_offscreen_context(size.x, size.y);
+  auto context = create_offscreen_context(size.x, size.y, o.gl);
   Canvas canvas(size.x, size.y, o.msaa);
   std::unique_ptr<Renderer> renderer = make_renderer(o.style, o.set);
   renderer->prepare(object);
@@ -117,6 +117,7 @@ int main(int argc, char** argv) {
   app.add_option("--size", o.size, "image size WxH");
   app.add_option("--msaa", o.msaa, "multisample count (1 = off)")->check(CLI::Range(1, 16));
   app.add_option("--backdrop", o.backdrop, "paper | paper:FILE | none (transparent) | #rrggbb; default: the style's");
+  app.add_option("--gl", o.gl, "off-screen GL backend: osmesa, egl (surfaceless) or auto");
   app.add_option("--out", o.out, "output PNG, PNG pattern with %04d, or .mp4");
   try {
     app.parse(argc, argv);

@@ -24,8 +24,12 @@ class Context {
   std::string gl_version() const;   // GL_VERSION of the current context
 };
 
-// Off-screen GL 4.5 core context through OSMesa. Throws inkwire::Error when it cannot be made.
-std::unique_ptr<Context> create_offscreen_context(int width, int height);
+// Off-screen GL 4.5 core context. `backend` is "osmesa" (the default), "egl" (EGL surfaceless,
+// for Mesa builds without OSMesa) or "auto" (OSMesa, else EGL). Throws inkwire::Error when it
+// cannot be made. Off-screen contexts draw into Canvas framebuffers.
+std::unique_ptr<Context> create_offscreen_context(int width, int height, const std::string& backend = "osmesa");
+std::unique_ptr<Context> create_osmesa_context(int width, int height);
+std::unique_ptr<Context> create_egl_context(int width, int height);
 
 // A GLFW window with a GL 4.5 core context (not forward-compatible, so wide lines work).
 // `visible` false gives a hidden window. Throws inkwire::Error when no display is available.

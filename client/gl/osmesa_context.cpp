@@ -51,10 +51,6 @@ class OsmesaContext final : public Context {
 
 }  // namespace
 
-std::unique_ptr<Context> create_offscreen_context(int width, int height) {
-  if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
-    throw Error("off-screen size " + std::to_string(width) + "x" + std::to_string(height) + " is outside 1..16384");
-  return std::make_unique<OsmesaContext>(width, height);
-}
+std::unique_ptr<Context> create_osmesa_context(int width, int height) { return std::make_unique<OsmesaContext>(width, height); }
 
 }  // namespace inkwire

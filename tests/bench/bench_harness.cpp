@@ -16,7 +16,7 @@
 namespace inkwire::bench {
 
 Harness::Harness(const Options& options) : options_(options) {
-  context_ = create_offscreen_context(kWidth, kHeight);
+  context_ = create_offscreen_context(kWidth, kHeight, options.gl);
   canvas_ = std::make_unique<Canvas>(kWidth, kHeight, 1);  // the study drew without antialiasing
 }
 

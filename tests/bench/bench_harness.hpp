@@ -25,6 +25,7 @@ struct Result {
 struct Options {
   int frames = 1000;
   std::string mesh;  // the LOD series' source mesh
+  std::string gl = "osmesa";  // off-screen backend
 };
 
 // One object of the level-of-detail series, placed as in the study: thesis camera, one light,

@@ -56,6 +56,7 @@ int main(int argc, char** argv) {
   app.add_option("--suite", suite, "default|comic|sketch|hatching|painterly|tween|landmarks|face|net|all");
   app.add_option("--frames", options.frames, "frames timed per measurement")->check(CLI::Range(1, 1000000));
   app.add_option("--mesh", options.mesh, "source mesh of the LOD series (default: bull.off from libcgal-demo)");
+  app.add_option("--gl", options.gl, "off-screen GL backend: osmesa, egl (surfaceless) or auto");
   app.add_option("--json", json_path, "write results here")->required();
   try {
     app.parse(argc, argv);
@@ -83,6 +84,7 @@ int main(int argc, char** argv) {
     nlohmann::json out;
     out["machine"] = {{"cpu", cpu_model()},
                       {"gl_renderer", harness.context().gl_renderer()},
+                      {"gl_backend", harness.context().backend()},
                       {"threads", std::thread::hardware_concurrency()}};
     out["results"] = nlohmann::json::array();
     for (const Result& r : results) out["results"].push_back(to_json(r));

@@ -84,3 +84,18 @@ TEST(ContextGLTest, GlfwWindowInTheSameBinary) {
   test::offscreen_context();
   expect_upright(draw_asymmetric(40, 30));
 }
+
+TEST(ContextGLTest, EglSurfacelessInTheSameBinary) {
+  std::unique_ptr<Context> egl;
+  try {
+    egl = create_offscreen_context(64, 48, "egl");
+  } catch (const Error& e) {
+    GTEST_SKIP() << "EGL surfaceless unavailable here: " << e.what();
+  }
+  EXPECT_EQ(egl->backend(), "egl");
+  EXPECT_NE(egl->gl_version().find("4.5"), std::string::npos) << egl->gl_version();
+  expect_upright(draw_asymmetric(40, 30));
+  egl.reset();
+  test::offscreen_context();
+  expect_upright(draw_asymmetric(40, 30));
+}
