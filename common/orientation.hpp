@@ -1,7 +1,15 @@
 #pragma once
-// Face and edge classification (SPEC G3): a triangle is front-facing when the view vector and
-// its normal point against each other; a silhouette edge joins a front and a back triangle.
+// Face and edge classification (SPEC G3) and the study's fast orientation methods (C5, C6).
+//
+// G3: a triangle is front-facing when the view vector and its normal point against each other;
+// a silhouette edge joins a front and a back triangle.
+// C5: with one constant view vector V (viewer to bounding-box centre) the test is per triangle
+// N.V < 0, which misses faces near the viewer; the perspective correction widens it to
+// N.V < sin(alpha), sin(alpha) = a / |V| with a the largest bounding-box side.
+// C6: classify vertices instead (N_v.V < sin(alpha)) and draw a triangle when at least k of
+// its three vertices are front-facing.
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -26,5 +34,30 @@ size_t classify_faces(const Mesh& mesh, const Topology& topology, const glm::vec
 inline bool is_silhouette(const Edge& e, const std::vector<uint8_t>& front) {
   return e.f1 != kNoFace && front[e.f0] != front[e.f1];
 }
+
+enum class Orientation {
+  Triangle,           // constant view vector, N.V < 0
+  TriangleCorrected,  // constant view vector, N.V < sin(alpha)
+  TriangleExact,      // exact view vector per triangle (G3)
+  Vertex,             // vertices by N_v.V < sin(alpha), triangles with >= k front vertices
+};
+
+// "triangle", "triangle-corrected", "triangle-exact", "vertex". Throws inkwire::Error otherwise.
+Orientation parse_orientation(const std::string& name);
+std::string to_string(Orientation o);
+
+// The per-frame quantities the fast methods share, all in the mesh's own coordinates.
+struct ViewSetup {
+  glm::vec3 eye;             // viewer position
+  glm::vec3 view;            // unit constant view vector, viewer to bounding-box centre
+  float sin_alpha;           // perspective correction, a / |V|, clamped to 1
+  static ViewSetup from(const Topology& topology, const glm::vec3& eye_object);
+};
+
+// Chooses the triangles to draw by `method` (k is used by Vertex only: 1, 2 or 3), filling
+// `draw` with one flag per triangle and returning how many are drawn. `vertex_front` is
+// scratch space (one flag per vertex) for the vertex method.
+size_t orient_triangles(Orientation method, int k, const Mesh& mesh, const Topology& topology, const ViewSetup& view,
+                        std::vector<uint8_t>& draw, std::vector<uint8_t>& vertex_front);
 
 }  // namespace inkwire

@@ -102,7 +102,8 @@
   X(PFNGLDELETEQUERIESPROC, glDeleteQueries)                                 \
   X(PFNGLBEGINQUERYPROC, glBeginQuery)                                       \
   X(PFNGLENDQUERYPROC, glEndQuery)                                           \
-  X(PFNGLGETQUERYOBJECTUIVPROC, glGetQueryObjectuiv)
+  X(PFNGLGETQUERYOBJECTUIVPROC, glGetQueryObjectuiv)                         \
+  X(PFNGLBINDBUFFERBASEPROC, glBindBufferBase)
 
 namespace inkwire::gl {
 

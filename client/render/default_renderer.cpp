@@ -1,17 +1,10 @@
 #include "client/render/default_renderer.hpp"
 
-#include <glm/geometric.hpp>
-#include <glm/mat3x3.hpp>
-
 #include "common/error.hpp"
 
 namespace inkwire {
 
 using namespace gl;
-
-glm::vec3 light_in_object_space(const FrameState& frame) {
-  return glm::normalize(glm::transpose(glm::mat3(frame.model)) * frame.light_direction);
-}
 
 DefaultRenderer::DefaultRenderer() : program_(Program::from_files({"default/mesh.vert", "default/mesh.frag"})) {}
 
@@ -32,8 +25,8 @@ void DefaultRenderer::draw(const FrameState& frame) {
   glCullFace(GL_BACK);
   glDisable(GL_BLEND);
   program_.use();
-  program_.set("model_view_projection", frame.projection() * frame.view() * frame.model);
-  program_.set("light_object", light_in_object_space(frame));
+  program_.set("model_view_projection", frame.model_view_projection());
+  program_.set("light_object", frame.light_in_object_space());
   program_.set("ambient", ambient_);
   program_.set("base_texture", 0);
   mesh_->bind();

@@ -23,8 +23,4 @@ class DefaultRenderer final : public Renderer {
   float ambient_ = 0.2f;
 };
 
-// Light direction in object space: rotate the light once per frame instead of every normal
-// (SPEC C2). Assumes the model matrix is a rotation, translation and uniform scale.
-glm::vec3 light_in_object_space(const FrameState& frame);
-
 }  // namespace inkwire

@@ -1,6 +1,8 @@
 #include "client/render/gpu_mesh.hpp"
 
 #include <algorithm>
+#include <array>
+#include <map>
 #include <numeric>
 
 #include <meshoptimizer.h>
@@ -50,23 +52,59 @@ GpuMesh::GpuMesh(const SceneObject& object) {
       batches_.push_back({uint32_t(i * 3), 0, mat, bool(textures_[mat])});
     batches_.back().index_count += 3;
   }
-  // Reorder each batch's triangles for the vertex cache; batches stay contiguous.
+  // Reorder each batch's triangles for the vertex cache; batches stay contiguous. The
+  // optimiser only permutes whole triangles, so each slot's source is found again by matching
+  // corner indices against the order we built them in.
+  std::vector<std::array<uint32_t, 3>> before(order.size());
+  for (size_t i = 0; i < order.size(); ++i) before[i] = {indices[3 * i], indices[3 * i + 1], indices[3 * i + 2]};
   for (const GpuBatch& b : batches_)
     meshopt_optimizeVertexCache(&indices[b.first_index], &indices[b.first_index], b.index_count, vertex_count_);
+  std::map<std::array<uint32_t, 3>, std::vector<uint32_t>> slots_of;
+  for (size_t i = 0; i < before.size(); ++i) {
+    auto key = before[i];
+    std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());  // same winding, canonical start
+    slots_of[key].push_back(order[i]);
+  }
+  triangle_source_.resize(order.size());
+  flat_colours_.resize(order.size());
+  for (size_t i = 0; i < order.size(); ++i) {
+    std::array<uint32_t, 3> key = {indices[3 * i], indices[3 * i + 1], indices[3 * i + 2]};
+    std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
+    auto& sources = slots_of[key];
+    const uint32_t t = sources.back();
+    sources.pop_back();
+    triangle_source_[i] = t;
+    const auto& tri = mesh.triangles[t];
+    const glm::vec4 vertex_mean = mesh.has_colours()
+                                      ? (mesh.colours[tri[0]] + mesh.colours[tri[1]] + mesh.colours[tri[2]]) / 3.0f
+                                      : glm::vec4(1.0f);
+    flat_colours_[i] = vertex_mean * mesh.materials[mesh.material_of(t)].base_colour;
+  }
   total_indices_ = uint32_t(indices.size());
 
-  vao_ = VertexArray::create();
   vertices_ = Buffer::create(GL_ARRAY_BUFFER, vertices);
-  vao_.attribute(kPosition, vertices_, 3, sizeof(GpuVertex), offsetof(GpuVertex, position));
-  vao_.attribute(kNormal, vertices_, 3, sizeof(GpuVertex), offsetof(GpuVertex, normal));
-  vao_.attribute(kColour, vertices_, 4, sizeof(GpuVertex), offsetof(GpuVertex, colour));
-  vao_.attribute(kUv, vertices_, 2, sizeof(GpuVertex), offsetof(GpuVertex, uv));
-  indices_ = Buffer::create(GL_ELEMENT_ARRAY_BUFFER, indices);  // recorded in the bound VAO
+  indices_ = Buffer::create(GL_ELEMENT_ARRAY_BUFFER, indices);
+  vao_ = vertex_array_with(indices_);
+  cpu_indices_ = std::move(indices);
+}
+
+VertexArray GpuMesh::vertex_array_with(const Buffer& elements) const {
+  VertexArray vao = VertexArray::create();
+  vao.attribute(kPosition, vertices_, 3, sizeof(GpuVertex), offsetof(GpuVertex, position));
+  vao.attribute(kNormal, vertices_, 3, sizeof(GpuVertex), offsetof(GpuVertex, normal));
+  vao.attribute(kColour, vertices_, 4, sizeof(GpuVertex), offsetof(GpuVertex, colour));
+  vao.attribute(kUv, vertices_, 2, sizeof(GpuVertex), offsetof(GpuVertex, uv));
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, elements.id());  // recorded in the bound vertex array
   glBindVertexArray(0);
+  return vao;
+}
+
+void GpuMesh::bind_texture(const GpuBatch& batch, int unit) const {
+  if (batch.textured) textures_[batch.material].bind(unit);
 }
 
 void GpuMesh::draw(const GpuBatch& batch, int texture_unit) const {
-  if (batch.textured) textures_[batch.material].bind(texture_unit);
+  bind_texture(batch, texture_unit);
   glDrawElements(GL_TRIANGLES, GLsizei(batch.index_count), GL_UNSIGNED_INT,
                  reinterpret_cast<const void*>(size_t(batch.first_index) * sizeof(uint32_t)));
 }

@@ -38,6 +38,17 @@ class GpuMesh {
   void draw(const GpuBatch& batch, int texture_unit) const;
   void draw_all() const;  // every triangle, no textures bound (depth passes, masks)
   size_t vertex_count() const { return vertex_count_; }
+  void bind_texture(const GpuBatch& batch, int unit) const;
+
+  // Renderers that pick triangles per frame (SPEC C5, C6) need the GPU order of triangles:
+  // slot i (indices 3i..3i+2) holds mesh triangle triangle_source()[i].
+  const std::vector<uint32_t>& triangle_source() const { return triangle_source_; }
+  const std::vector<uint32_t>& indices() const { return cpu_indices_; }
+  // One flat colour per slot: the mean of its vertex colours times its material colour, so
+  // colours never bleed across a triangle (SPEC C7).
+  const std::vector<glm::vec4>& flat_colours() const { return flat_colours_; }
+  // A vertex array over this mesh's vertices that reads indices from `elements` instead.
+  gl::VertexArray vertex_array_with(const gl::Buffer& elements) const;
 
  private:
   gl::VertexArray vao_;
@@ -46,6 +57,8 @@ class GpuMesh {
   std::vector<gl::Texture> textures_;  // per material; empty handle when untextured
   size_t vertex_count_ = 0;
   uint32_t total_indices_ = 0;
+  std::vector<uint32_t> triangle_source_, cpu_indices_;
+  std::vector<glm::vec4> flat_colours_;
 };
 
 }  // namespace inkwire

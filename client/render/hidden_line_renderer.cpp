@@ -38,7 +38,7 @@ void HiddenLineRenderer::prepare(const SceneObject& object) {
 void HiddenLineRenderer::draw(const FrameState& frame) {
   if (!mesh_) throw Error("HiddenLineRenderer::draw(): prepare() was not called");
   const Mesh& mesh = object_->mesh;
-  const glm::vec3 eye_object = glm::vec3(glm::inverse(frame.model) * glm::vec4(frame.camera.position, 1.0f));
+  const glm::vec3 eye_object = frame.eye_in_object_space();
   front_faces_ = classify_faces(mesh, object_->topology, eye_object, front_);
   line_points_.clear();
   for (const Edge& e : object_->topology.edges) {
@@ -47,7 +47,7 @@ void HiddenLineRenderer::draw(const FrameState& frame) {
       line_points_.push_back(mesh.positions[e.v1]);
     }
   }
-  const glm::mat4 mvp = frame.projection() * frame.view() * frame.model;
+  const glm::mat4 mvp = frame.model_view_projection();
   hlr_.lay_depth(*mesh_, mvp);
 
   HiddenLineRemoval::begin_lines();

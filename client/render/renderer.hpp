@@ -5,7 +5,10 @@
 #include <map>
 #include <string>
 
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -25,6 +28,14 @@ struct FrameState {
 
   glm::mat4 view() const { return camera.view(); }
   glm::mat4 projection() const { return camera.projection(float(viewport.x) / float(viewport.y)); }
+  glm::mat4 model_view_projection() const { return projection() * view() * model; }
+  // The viewer in the object's own coordinates.
+  glm::vec3 eye_in_object_space() const { return glm::vec3(glm::inverse(model) * glm::vec4(camera.position, 1.0f)); }
+  // The light rotated into object space once per frame instead of rotating every normal
+  // (SPEC C2). Assumes the model matrix is a rotation, translation and uniform scale.
+  glm::vec3 light_in_object_space() const {
+    return glm::normalize(glm::transpose(glm::mat3(model)) * light_direction);
+  }
 };
 
 class Renderer {

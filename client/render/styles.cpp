@@ -1,5 +1,6 @@
 #include "client/render/styles.hpp"
 
+#include "client/render/comic/comic_renderer.hpp"
 #include "client/render/default_renderer.hpp"
 #include "client/render/hidden_line_renderer.hpp"
 #include "common/error.hpp"
@@ -12,6 +13,10 @@ const std::vector<StyleInfo>& styles() {
        &DefaultRenderer::params, [] { return std::make_unique<DefaultRenderer>(); }},
       {"hidden-line", "silhouette, crease and open edges as lines, hidden parts removed, over paper", "paper",
        &HiddenLineRenderer::params, [] { return std::make_unique<HiddenLineRenderer>(); }},
+      {"comic", "banded N.L shading from a 1D shade map, thick outline from back faces in wide lines", "paper",
+       [] { return ComicRenderer::params(false); }, [] { return std::make_unique<ComicRenderer>(false); }},
+      {"comic-extended", "2D shade map over (N.L, R.V) with a moving highlight band; fast CPU face orientation", "paper",
+       [] { return ComicRenderer::params(true); }, [] { return std::make_unique<ComicRenderer>(true); }},
   };
   return all;
 }

@@ -1,0 +1,44 @@
+#version 450 core
+// One flat base colour per triangle (C7), times the base texture (C9), shaded by the map.
+in vec2 shade_coord;
+in vec2 texcoord;
+
+layout(std430, binding = 0) readonly buffer TriangleColours { vec4 triangle_colour[]; };
+layout(std430, binding = 1) readonly buffer DrawnSlots { uint drawn_slot[]; };
+
+uniform bool remapped;      // triangles were picked per frame: gl_PrimitiveID indexes drawn_slot
+uniform int first_primitive;
+#ifdef EXTENDED
+uniform sampler2D shade_map;
+#else
+uniform sampler1D shade_map;
+#endif
+uniform sampler2D base_texture;
+uniform bool textured;
+uniform float shadow_saturation;  // studied cartoons raise saturation in shadow by ~12%
+
+out vec4 colour;
+
+vec3 apply_shade(vec3 base, vec3 texel) {
+  // Below mid-grey a texel multiplies the colour; above, it lifts it toward white.
+  vec3 multiplied = base * min(texel * 2.0, vec3(1.0));
+  return mix(multiplied, vec3(1.0), max(texel * 2.0 - 1.0, vec3(0.0)));
+}
+
+void main() {
+  int primitive = first_primitive + gl_PrimitiveID;
+  uint slot = remapped ? drawn_slot[primitive] : uint(primitive);
+  vec3 base = triangle_colour[slot].rgb;
+  if (textured) base *= texture(base_texture, texcoord).rgb;
+#ifdef EXTENDED
+  // Shade map images put R.V = 0 on their bottom row; textures start at the image's top row.
+  vec3 texel = texture(shade_map, vec2(shade_coord.x, 1.0 - shade_coord.y)).rgb;
+#else
+  vec3 texel = texture(shade_map, shade_coord.x).rgb;
+#endif
+  vec3 shaded = apply_shade(base, texel);
+  float darkening = clamp(1.0 - 2.0 * dot(texel, vec3(1.0 / 3.0)), 0.0, 1.0);
+  float grey = dot(shaded, vec3(0.299, 0.587, 0.114));
+  shaded = clamp(mix(vec3(grey), shaded, 1.0 + shadow_saturation * min(darkening / 0.24, 1.0)), 0.0, 1.0);
+  colour = vec4(shaded, 1.0);
+}
