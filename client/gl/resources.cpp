@@ -15,22 +15,23 @@ void delete_program(GLuint id) { glDeleteProgram(id); }
 void delete_framebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
 void delete_renderbuffer(GLuint id) { glDeleteRenderbuffers(1, &id); }
 
-Buffer Buffer::create(GLenum target, size_t bytes, const void* data, GLenum usage) {
+Buffer Buffer::create(size_t bytes, const void* data, GLenum usage) {
   GLuint id = 0;
   glGenBuffers(1, &id);
   Buffer b(id);
-  b.upload(target, bytes, data, usage);
+  b.upload(bytes, data, usage);
   return b;
 }
 
-void Buffer::upload(GLenum target, size_t bytes, const void* data, GLenum usage) {
-  glBindBuffer(target, id());
+void Buffer::upload(size_t bytes, const void* data, GLenum usage) {
+  glBindBuffer(GL_COPY_WRITE_BUFFER, id());
   if (bytes > capacity_ || capacity_ == 0) {
-    glBufferData(target, GLsizeiptr(std::max<size_t>(bytes, 1)), data, usage);
+    glBufferData(GL_COPY_WRITE_BUFFER, GLsizeiptr(std::max<size_t>(bytes, 1)), data, usage);
     capacity_ = std::max<size_t>(bytes, 1);
   } else if (bytes > 0) {
-    glBufferSubData(target, 0, GLsizeiptr(bytes), data);
+    glBufferSubData(GL_COPY_WRITE_BUFFER, 0, GLsizeiptr(bytes), data);
   }
+  glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
 }
 
 VertexArray VertexArray::create() {

@@ -47,15 +47,18 @@ void delete_program(GLuint id);
 void delete_framebuffer(GLuint id);
 void delete_renderbuffer(GLuint id);
 
+// Data goes in through the GL_COPY_WRITE_BUFFER binding point, which no vertex array records:
+// uploading index data must never swap the element buffer of whatever vertex array is bound.
+// Where a buffer is used (vertex, element, storage) is decided when it is bound for drawing.
 class Buffer : public Handle<delete_buffer> {
  public:
-  static Buffer create(GLenum target, size_t bytes, const void* data, GLenum usage = GL_STATIC_DRAW);
+  static Buffer create(size_t bytes, const void* data, GLenum usage = GL_STATIC_DRAW);
   template <typename T>
-  static Buffer create(GLenum target, const std::vector<T>& items, GLenum usage = GL_STATIC_DRAW) {
-    return create(target, items.size() * sizeof(T), items.data(), usage);
+  static Buffer create(const std::vector<T>& items, GLenum usage = GL_STATIC_DRAW) {
+    return create(items.size() * sizeof(T), items.data(), usage);
   }
   // Replaces the contents, growing the store when needed (for per-frame streamed data).
-  void upload(GLenum target, size_t bytes, const void* data, GLenum usage = GL_STREAM_DRAW);
+  void upload(size_t bytes, const void* data, GLenum usage = GL_STREAM_DRAW);
   size_t capacity() const { return capacity_; }
 
  private:

@@ -82,8 +82,8 @@ GpuMesh::GpuMesh(const SceneObject& object) {
   }
   total_indices_ = uint32_t(indices.size());
 
-  vertices_ = Buffer::create(GL_ARRAY_BUFFER, vertices);
-  indices_ = Buffer::create(GL_ELEMENT_ARRAY_BUFFER, indices);
+  vertices_ = Buffer::create(vertices);
+  indices_ = Buffer::create(indices);
   vao_ = vertex_array_with(indices_);
   cpu_indices_ = std::move(indices);
 }

@@ -12,7 +12,7 @@ using namespace gl;
 
 HiddenLineRenderer::HiddenLineRenderer() : lines_(Program::from_files({"hidden-line/lines.vert", "hidden-line/lines.frag"})) {
   line_vao_ = VertexArray::create();
-  line_buffer_ = Buffer::create(GL_ARRAY_BUFFER, 0, nullptr, GL_STREAM_DRAW);
+  line_buffer_ = Buffer::create(0, nullptr, GL_STREAM_DRAW);
   line_vao_.attribute(0, line_buffer_, 3, sizeof(glm::vec3), 0);
 }
 
@@ -51,7 +51,7 @@ void HiddenLineRenderer::draw(const FrameState& frame) {
   hlr_.lay_depth(*mesh_, mvp);
 
   HiddenLineRemoval::begin_lines();
-  line_buffer_.upload(GL_ARRAY_BUFFER, line_points_.size() * sizeof(glm::vec3), line_points_.data());
+  line_buffer_.upload(line_points_.size() * sizeof(glm::vec3), line_points_.data());
   lines_.use();
   lines_.set("model_view_projection", mvp);
   lines_.set("line_colour", glm::vec4(line_colour_, 1.0f));

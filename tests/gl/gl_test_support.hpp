@@ -3,13 +3,28 @@
 // comparison that writes actual and diff images on failure.
 #include <string>
 
+#include "client/gl/canvas.hpp"
 #include "client/gl/context.hpp"
+#include "client/render/renderer.hpp"
 #include "common/image.hpp"
+#include "common/mesh.hpp"
 
 namespace inkwire::test {
 
 // The process-wide off-screen context (made current on first use).
 Context& offscreen_context();
+
+// Clears `canvas` to `backdrop` ("none", "paper", "#rrggbb"), draws one frame, reads it back.
+Image render_frame(Renderer& renderer, const FrameState& frame, const Canvas& canvas, const std::string& backdrop = "none");
+
+// A UV sphere of unit radius, outward-facing, with `segments` around and `rings` pole to pole.
+Mesh make_sphere(int segments, int rings);
+
+// A unit cube of 12 triangles: the sharpest case for averaged vertex normals.
+Mesh make_box();
+
+// A camera on a sphere around the object for test views.
+FrameState view_of(const SceneObject& object, const Canvas& canvas, float azimuth, float elevation, float distance);
 
 struct GoldenTolerance {
   int max_channel_diff;        // a pixel counts as different above this (0..255)

@@ -1,9 +1,11 @@
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <sstream>
 
+#include "client/render/backdrop.hpp"
 #include "common/error.hpp"
 #include "gl_test_support.hpp"
 
@@ -13,6 +15,57 @@ Context& offscreen_context() {
   static std::unique_ptr<Context> context = create_offscreen_context(64, 64);
   context->make_current();
   return *context;
+}
+
+Image render_frame(Renderer& renderer, const FrameState& frame, const Canvas& canvas, const std::string& backdrop) {
+  canvas.bind();
+  Backdrop(BackdropSpec::parse(backdrop)).draw();
+  renderer.draw(frame);
+  return canvas.read();
+}
+
+Mesh make_sphere(int segments, int rings) {
+  Mesh m;
+  m.positions.push_back({0, 1, 0});  // north pole
+  for (int r = 1; r < rings; ++r) {
+    const float theta = float(M_PI) * r / rings;
+    for (int s = 0; s < segments; ++s) {
+      const float phi = 2.0f * float(M_PI) * s / segments;
+      m.positions.push_back({std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi)});
+    }
+  }
+  const uint32_t south = uint32_t(m.positions.size());
+  m.positions.push_back({0, -1, 0});
+  auto ring = [&](int r, int s) { return uint32_t(1 + (r - 1) * segments + (s % segments)); };
+  // Counter-clockwise seen from outside (phi runs counter-clockwise seen from above).
+  for (int s = 0; s < segments; ++s) {
+    m.triangles.push_back({0, ring(1, s), ring(1, s + 1)});
+    m.triangles.push_back({south, ring(rings - 1, s + 1), ring(rings - 1, s)});
+  }
+  for (int r = 1; r < rings - 1; ++r)
+    for (int s = 0; s < segments; ++s) {
+      m.triangles.push_back({ring(r, s), ring(r + 1, s), ring(r + 1, s + 1)});
+      m.triangles.push_back({ring(r, s), ring(r + 1, s + 1), ring(r, s + 1)});
+    }
+  m.materials.emplace_back();
+  return m;
+}
+
+Mesh make_box() {
+  Mesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  m.triangles = {{0, 3, 2}, {0, 2, 1}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                 {3, 7, 6}, {3, 6, 2}, {0, 4, 7}, {0, 7, 3}, {1, 2, 6}, {1, 6, 5}};
+  m.materials.emplace_back();
+  return m;
+}
+
+FrameState view_of(const SceneObject& object, const Canvas& canvas, float azimuth, float elevation, float distance) {
+  FrameState f;
+  f.viewport = canvas.size();
+  f.camera = orbit_camera(object.topology.bounds, azimuth, elevation, distance);
+  f.light_direction = default_light_direction(f.camera);
+  return f;
 }
 
 std::string compare_with_golden(const Image& actual, const std::string& name, const GoldenTolerance& tol) {

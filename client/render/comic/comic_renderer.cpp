@@ -54,6 +54,8 @@ std::vector<ParamSpec> ComicRenderer::params(bool extended) {
       choice_param("orientation", extended ? "vertex" : "gl", {"gl", "triangle", "triangle-corrected", "triangle-exact", "vertex"},
                    "how front faces are chosen: GL culling or the study's CPU methods"),
       int_param("k", "1", 1, 3, "vertex orientation: draw triangles with at least k front vertices"),
+      bool_param("vertex_margin", "true",
+                 "widen vertex thresholds so k=1 keeps every face the corrected triangle test keeps (false: the study's plain rule)"),
   };
 }
 
@@ -62,6 +64,7 @@ void ComicRenderer::configure(const StyleParams& p) {
   orientation_.reset();
   if (orientation != "gl") orientation_ = parse_orientation(orientation);
   k_ = p.get_int("k");
+  use_vertex_margins_ = p.get_bool("vertex_margin");
   outline_width_ = p.get_float("outline_width");
   ink_ = p.get_colour("outline_colour");
   coloured_outline_ = p.get_bool("coloured_outline");
@@ -97,16 +100,17 @@ void ComicRenderer::upload_shade_map() {
 void ComicRenderer::prepare(const SceneObject& object) {
   object_ = &object;
   mesh_ = std::make_unique<GpuMesh>(object);
-  triangle_colours_ = Buffer::create(GL_SHADER_STORAGE_BUFFER, mesh_->flat_colours());
-  drawn_slots_ = Buffer::create(GL_SHADER_STORAGE_BUFFER, mesh_->triangle_source().size() * sizeof(uint32_t), nullptr, GL_STREAM_DRAW);
-  dynamic_elements_ = Buffer::create(GL_ELEMENT_ARRAY_BUFFER, mesh_->indices().size() * sizeof(uint32_t), nullptr, GL_STREAM_DRAW);
+  vertex_margins_ = vertex_margins(object.mesh, object.topology);
+  triangle_colours_ = Buffer::create(mesh_->flat_colours());
+  drawn_slots_ = Buffer::create(mesh_->triangle_source().size() * sizeof(uint32_t), nullptr, GL_STREAM_DRAW);
+  dynamic_elements_ = Buffer::create(mesh_->indices().size() * sizeof(uint32_t), nullptr, GL_STREAM_DRAW);
   dynamic_vao_ = mesh_->vertex_array_with(dynamic_elements_);
 }
 
-void ComicRenderer::pick_triangles(const FrameState& frame) {
+void ComicRenderer::pick_triangles() {
   const ViewSetup view = ViewSetup::from(object_->topology, last_eye_);
-  triangles_drawn_ = orient_triangles(*orientation_, k_, object_->mesh, object_->topology, view, draw_flags_, vertex_scratch_);
-  (void)frame;
+  triangles_drawn_ = orient_triangles(*orientation_, k_, object_->mesh, object_->topology, view, draw_flags_, vertex_scratch_,
+                                     use_vertex_margins_ ? &vertex_margins_ : nullptr);
   const auto& source = mesh_->triangle_source();
   const auto& indices = mesh_->indices();
   picked_indices_.clear();
@@ -121,8 +125,8 @@ void ComicRenderer::pick_triangles(const FrameState& frame) {
     }
     picked_ranges_.push_back({first, uint32_t(picked_slots_.size()) - first});
   }
-  dynamic_elements_.upload(GL_ELEMENT_ARRAY_BUFFER, picked_indices_.size() * sizeof(uint32_t), picked_indices_.data());
-  drawn_slots_.upload(GL_SHADER_STORAGE_BUFFER, picked_slots_.size() * sizeof(uint32_t), picked_slots_.data());
+  dynamic_elements_.upload(picked_indices_.size() * sizeof(uint32_t), picked_indices_.data());
+  drawn_slots_.upload(picked_slots_.size() * sizeof(uint32_t), picked_slots_.data());
 }
 
 void ComicRenderer::draw_fill(const FrameState& frame) {
@@ -199,7 +203,7 @@ void ComicRenderer::draw(const FrameState& frame) {
   if (!mesh_) throw Error("ComicRenderer::draw(): prepare() was not called");
   if (!shade_texture_) upload_shade_map();
   last_eye_ = frame.eye_in_object_space();
-  if (orientation_) pick_triangles(frame);
+  if (orientation_) pick_triangles();
   draw_fill(frame);
   if (outline_width_ > 0.0f) draw_outline(frame);
 }

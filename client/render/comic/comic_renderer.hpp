@@ -25,7 +25,7 @@ class ComicRenderer final : public Renderer {
 
  private:
   // Fills dynamic_elements_ / drawn_slots_ with the triangles the orientation method keeps.
-  void pick_triangles(const FrameState& frame);
+  void pick_triangles();
   void draw_fill(const FrameState& frame);
   void draw_outline(const FrameState& frame);
   void upload_shade_map();
@@ -42,6 +42,8 @@ class ComicRenderer final : public Renderer {
   // Style.
   std::optional<Orientation> orientation_;  // empty: GL back-face culling
   int k_ = 1;
+  bool use_vertex_margins_ = true;
+  std::vector<float> vertex_margins_;
   float outline_width_ = 4.0f, outline_darkening_ = 0.6f, shadow_saturation_ = 0.12f;
   bool coloured_outline_ = false;
   glm::vec3 ink_{0.0f};

@@ -87,11 +87,12 @@ ShadeMap make_shade_map(const std::string& name, const ShadeMapOptions& o) {
   }
   if (name == "flat") return {tabulate([](float, float) { return grey(1.0f); }), false};
   if (name == "lines") {
-    // Bands separated by thin black lines: the lines sit on the band edges, a texel wide.
+    // Bands separated by thin black lines on the band edges, three texels (0.05 of N.L) wide:
+    // thinner ones break up where N.L changes quickly across the screen.
     const std::vector<float> edges = edges_for(o);
     return {tabulate([&](float nl, float rv) {
               for (float e : edges)
-                if (std::abs(nl - e) < 0.75f / kWidth) return grey(0.0f);
+                if (std::abs(nl - e) < 1.5f / kWidth) return grey(0.0f);
               if (in_highlight(nl, rv, o)) return lifted(o.highlight);
               return grey(band_factor(band_of(nl, edges), o.bands, o.shadow));
             }),
