@@ -9,6 +9,13 @@
 
 namespace inkwire {
 
+glm::vec4 flat_colour(const Mesh& mesh, size_t triangle) {
+  const auto& tri = mesh.triangles[triangle];
+  const glm::vec4 vertex_mean =
+      mesh.has_colours() ? (mesh.colours[tri[0]] + mesh.colours[tri[1]] + mesh.colours[tri[2]]) / 3.0f : glm::vec4(1.0f);
+  return vertex_mean * mesh.materials[mesh.material_of(triangle)].base_colour;
+}
+
 void validate_mesh(const Mesh& mesh) {
   if (mesh.triangles.empty()) throw Error("mesh has no triangles");
   if (mesh.positions.empty()) throw Error("mesh has no vertices");

@@ -43,6 +43,9 @@ struct Mesh {
 inline constexpr size_t kMaxMeshTriangles = 20'000'000;
 inline constexpr size_t kMaxMeshVertices = 20'000'000;
 
+// A triangle's one colour (SPEC C7): the mean of its vertex colours times its material colour.
+glm::vec4 flat_colour(const Mesh& mesh, size_t triangle);
+
 // Throws inkwire::Error with a one-line reason when the mesh cannot be rendered safely:
 // no triangles, non-finite positions, indices out of range, attribute arrays of the wrong size.
 void validate_mesh(const Mesh& mesh);

@@ -45,9 +45,10 @@ ViewSetup ViewSetup::from(const Topology& topology, const glm::vec3& eye) {
   return v;
 }
 
-std::vector<float> vertex_margins(const Mesh& mesh, const Topology& topology) {
-  std::vector<float> margin(mesh.positions.size(), 0.0f);
-  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+VertexMargins vertex_margins(const Mesh& mesh, const Topology& topology, float max_margin) {
+  VertexMargins m;
+  m.margin.assign(mesh.positions.size(), 0.0f);
+  for (uint32_t t = 0; t < mesh.triangles.size(); ++t) {
     const glm::vec3& face = topology.face_normals[t];
     uint32_t closest = mesh.triangles[t][0];
     float distance = 3.0f;
@@ -55,13 +56,14 @@ std::vector<float> vertex_margins(const Mesh& mesh, const Topology& topology) {
       const float d = glm::length(topology.vertex_normals[v] - face);
       if (d < distance) distance = d, closest = v;
     }
-    margin[closest] = std::max(margin[closest], distance);
+    if (distance <= max_margin) m.margin[closest] = std::max(m.margin[closest], distance);
+    else m.tested_per_face.push_back(t);
   }
-  return margin;
+  return m;
 }
 
 size_t orient_triangles(Orientation method, int k, const Mesh& mesh, const Topology& topology, const ViewSetup& view,
-                        std::vector<uint8_t>& draw, std::vector<uint8_t>& vertex_front, const std::vector<float>* margins) {
+                        std::vector<uint8_t>& draw, std::vector<uint8_t>& vertex_front, const VertexMargins* margins) {
   const size_t n = mesh.triangles.size();
   draw.resize(n);
   size_t count = 0;
@@ -78,14 +80,17 @@ size_t orient_triangles(Orientation method, int k, const Mesh& mesh, const Topol
     case Orientation::Vertex: {
       if (k < 1 || k > 3) throw Error("vertex orientation needs k = 1, 2 or 3");
       vertex_front.resize(mesh.positions.size());
-      if (margins && margins->size() != mesh.positions.size()) throw Error("vertex margins do not match the mesh");
+      if (margins && margins->margin.size() != mesh.positions.size()) throw Error("vertex margins do not match the mesh");
       for (size_t v = 0; v < mesh.positions.size(); ++v)
-        vertex_front[v] = glm::dot(topology.vertex_normals[v], view.view) < view.sin_alpha + (margins ? (*margins)[v] : 0.0f);
+        vertex_front[v] = glm::dot(topology.vertex_normals[v], view.view) < view.sin_alpha + (margins ? margins->margin[v] : 0.0f);
       for (size_t t = 0; t < n; ++t) {
         const auto& tri = mesh.triangles[t];
         const int front = vertex_front[tri[0]] + vertex_front[tri[1]] + vertex_front[tri[2]];
         count += draw[t] = front >= k;
       }
+      if (margins && k == 1)
+        for (uint32_t t : margins->tested_per_face)
+          if (!draw[t] && glm::dot(topology.face_normals[t], view.view) < view.sin_alpha) count += draw[t] = 1;
       return count;
     }
   }

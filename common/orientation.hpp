@@ -54,22 +54,28 @@ struct ViewSetup {
   static ViewSetup from(const Topology& topology, const glm::vec3& eye_object);
 };
 
-// Per-vertex widening of the vertex method's threshold, computed once per mesh.
+// What the vertex method needs beyond the study's rule to promise no holes with k = 1,
+// computed once per mesh.
 //
-// The study's vertex rule (N_v.V < sin(alpha)) leaves holes on coarse or sharp meshes: a face
-// can pass the corrected triangle test while all three of its vertex normals, averaged with
-// faces that turn away, fail. Each face therefore appoints the vertex whose normal is closest
-// to its own, and that vertex's threshold grows by the distance |N_v - N_f|. Since
-// N_v.V <= N_f.V + |N_v - N_f|, every face the corrected triangle test keeps then has at least
-// one front vertex, so k = 1 leaves no holes; k = 2 and 3 still can.
-std::vector<float> vertex_margins(const Mesh& mesh, const Topology& topology);
+// The study's rule (N_v.V < sin(alpha)) can leave holes on coarse or sharp meshes: a face can
+// pass the corrected triangle test while all three of its vertex normals, averaged with faces
+// that turn away, fail it. Each face therefore appoints the vertex whose normal is closest to
+// its own. When that distance d = |N_v - N_f| is small, the vertex's threshold grows by d;
+// since N_v.V <= N_f.V + d, the face then always keeps a front vertex. Faces whose every vertex
+// normal is farther than `max_margin` away (ridges, spikes) would inflate thresholds for all
+// their neighbours, so instead they are tested on their own with the corrected triangle test.
+struct VertexMargins {
+  std::vector<float> margin;                // per vertex
+  std::vector<uint32_t> tested_per_face;    // faces with no vertex normal close to their own
+};
+VertexMargins vertex_margins(const Mesh& mesh, const Topology& topology, float max_margin = 0.1f);
 
 // Chooses the triangles to draw by `method` (k is used by Vertex only: 1, 2 or 3), filling
 // `draw` with one flag per triangle and returning how many are drawn. `vertex_front` is
-// scratch space (one flag per vertex) for the vertex method; `margins` (from vertex_margins,
-// or null for the study's plain threshold) widens each vertex's threshold.
+// scratch space (one flag per vertex) for the vertex method; `margins` (or null for the
+// study's plain threshold) makes k = 1 hole-free as described above.
 size_t orient_triangles(Orientation method, int k, const Mesh& mesh, const Topology& topology, const ViewSetup& view,
                         std::vector<uint8_t>& draw, std::vector<uint8_t>& vertex_front,
-                        const std::vector<float>* margins = nullptr);
+                        const VertexMargins* margins = nullptr);
 
 }  // namespace inkwire

@@ -25,12 +25,14 @@ GpuMesh::GpuMesh(const SceneObject& object) {
   corners.reserve(mesh.triangles.size() * 3);
   for (uint32_t t : order) {
     const Material& mat = mesh.materials[mesh.material_of(t)];
+    const glm::vec4 triangle_colour = flat_colour(mesh, t);
     for (int c = 0; c < 3; ++c) {
       const uint32_t v = mesh.triangles[t][c];
       GpuVertex g{};
       g.position = mesh.positions[v];
       g.normal = topo.vertex_normals[v];
       g.colour = (mesh.has_colours() ? mesh.colours[v] : glm::vec4(1.0f)) * mat.base_colour;
+      g.flat_colour = triangle_colour;
       // Image rows are stored top-down while GL's v runs bottom-up: flip v here, once.
       g.uv = mesh.has_uvs() ? glm::vec2(mesh.corner_uvs[t][c].x, 1.0f - mesh.corner_uvs[t][c].y) : glm::vec2(0.0f);
       corners.push_back(g);
@@ -66,19 +68,12 @@ GpuMesh::GpuMesh(const SceneObject& object) {
     slots_of[key].push_back(order[i]);
   }
   triangle_source_.resize(order.size());
-  flat_colours_.resize(order.size());
   for (size_t i = 0; i < order.size(); ++i) {
     std::array<uint32_t, 3> key = {indices[3 * i], indices[3 * i + 1], indices[3 * i + 2]};
     std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
     auto& sources = slots_of[key];
-    const uint32_t t = sources.back();
+    triangle_source_[i] = sources.back();
     sources.pop_back();
-    triangle_source_[i] = t;
-    const auto& tri = mesh.triangles[t];
-    const glm::vec4 vertex_mean = mesh.has_colours()
-                                      ? (mesh.colours[tri[0]] + mesh.colours[tri[1]] + mesh.colours[tri[2]]) / 3.0f
-                                      : glm::vec4(1.0f);
-    flat_colours_[i] = vertex_mean * mesh.materials[mesh.material_of(t)].base_colour;
   }
   total_indices_ = uint32_t(indices.size());
 
@@ -94,6 +89,7 @@ VertexArray GpuMesh::vertex_array_with(const Buffer& elements) const {
   vao.attribute(kNormal, vertices_, 3, sizeof(GpuVertex), offsetof(GpuVertex, normal));
   vao.attribute(kColour, vertices_, 4, sizeof(GpuVertex), offsetof(GpuVertex, colour));
   vao.attribute(kUv, vertices_, 2, sizeof(GpuVertex), offsetof(GpuVertex, uv));
+  vao.attribute(kFlatColour, vertices_, 4, sizeof(GpuVertex), offsetof(GpuVertex, flat_colour));
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, elements.id());  // recorded in the bound vertex array
   glBindVertexArray(0);
   return vao;

@@ -13,8 +13,11 @@ namespace inkwire {
 
 struct GpuVertex {
   glm::vec3 position;
-  glm::vec3 normal;  // vertex normal (average of adjacent face normals)
-  glm::vec4 colour;  // vertex colour x material base colour
+  glm::vec3 normal;       // vertex normal (average of adjacent face normals)
+  glm::vec4 colour;       // vertex colour x material base colour, for smooth shading
+  glm::vec4 flat_colour;  // the triangle's one colour (mean of its vertex colours x material
+                          // colour) for `flat` shading, SPEC C7: any corner can be provoking.
+                          // Corners weld only where their triangles' colours agree.
   glm::vec2 uv;
 };
 
@@ -30,7 +33,7 @@ class GpuMesh {
   explicit GpuMesh(const SceneObject& object);
 
   // Attribute locations every mesh shader uses.
-  static constexpr GLuint kPosition = 0, kNormal = 1, kColour = 2, kUv = 3;
+  static constexpr GLuint kPosition = 0, kNormal = 1, kColour = 2, kUv = 3, kFlatColour = 4;
 
   void bind() const { vao_.bind(); }
   const std::vector<GpuBatch>& batches() const { return batches_; }
@@ -44,9 +47,6 @@ class GpuMesh {
   // slot i (indices 3i..3i+2) holds mesh triangle triangle_source()[i].
   const std::vector<uint32_t>& triangle_source() const { return triangle_source_; }
   const std::vector<uint32_t>& indices() const { return cpu_indices_; }
-  // One flat colour per slot: the mean of its vertex colours times its material colour, so
-  // colours never bleed across a triangle (SPEC C7).
-  const std::vector<glm::vec4>& flat_colours() const { return flat_colours_; }
   // A vertex array over this mesh's vertices that reads indices from `elements` instead.
   gl::VertexArray vertex_array_with(const gl::Buffer& elements) const;
 
@@ -58,7 +58,6 @@ class GpuMesh {
   size_t vertex_count_ = 0;
   uint32_t total_indices_ = 0;
   std::vector<uint32_t> triangle_source_, cpu_indices_;
-  std::vector<glm::vec4> flat_colours_;
 };
 
 }  // namespace inkwire

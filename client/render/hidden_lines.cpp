@@ -10,12 +10,14 @@ HiddenLineRemoval::HiddenLineRemoval()
 void HiddenLineRemoval::lay_depth(const GpuMesh& mesh, const glm::mat4& mvp) const {
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
   glEnable(GL_CULL_FACE);
   glCullFace(GL_BACK);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.0f, 2.0f);
+  // LEQUAL: the offset's slope term can clamp edge-on slivers to depth 1.0, which LESS would
+  // drop against the clear, letting hidden lines show through there.
+  glDepthFunc(GL_LEQUAL);
   depth_only_.use();
   depth_only_.set("model_view_projection", mvp);
   mesh.bind();

@@ -50,8 +50,9 @@ class Harness {
   // The LOD series, built once on first use.
   std::vector<BenchObject>& lod_series();
 
-  // Times `frames` frames of `renderer` (after a short warm-up) drawing `object`'s frame state
-  // over a flat clear, finishing GL work each frame so the time is the frame's real cost.
+  // Times `frames` frames of `renderer` (after a short warm-up) drawing `object` over a flat
+  // clear while it turns, finishing GL work each frame so the time is the frame's real cost.
+  // Ends with one frame at the study's pose, so the renderer's counters describe that pose.
   // Fills fps fields and `frames`; the caller fills names and counters.
   Result time_frames(Renderer& renderer, const BenchObject& object, int frames);
 
@@ -68,5 +69,6 @@ using Suite = std::function<std::vector<Result>(Harness&)>;
 const std::vector<std::pair<std::string, Suite>>& suites();
 
 std::vector<Result> run_default_suite(Harness& harness);
+std::vector<Result> run_comic_suite(Harness& harness);
 
 }  // namespace inkwire::bench

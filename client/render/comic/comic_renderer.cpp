@@ -1,6 +1,9 @@
 #include "client/render/comic/comic_renderer.hpp"
 
+#include <algorithm>
 #include <sstream>
+
+#include <glm/trigonometric.hpp>
 
 #include "common/error.hpp"
 
@@ -34,7 +37,8 @@ ComicRenderer::ComicRenderer(bool extended)
     : extended_(extended),
       fill_(Program::from_files({"comic/comic.vert", "comic/comic.frag"}, extended ? std::vector<std::string>{"EXTENDED 1"}
                                                                                     : std::vector<std::string>{})),
-      outline_(Program::from_files({"comic/outline.vert", "comic/outline.frag"})) {}
+      backface_outline_(Program::from_files({"comic/outline.vert", "comic/outline.frag"})),
+      edge_outline_(Program::from_files({"comic/edges.vert", "comic/edges.frag"})) {}
 
 std::vector<ParamSpec> ComicRenderer::params(bool extended) {
   return {
@@ -47,7 +51,13 @@ std::vector<ParamSpec> ComicRenderer::params(bool extended) {
       float_param("highlight", "0.7", 0, 1, "highlight band's lift toward white (extended)"),
       float_param("highlight_threshold", "0.96", 0, 1, "R.V where the highlight band starts, 0 = none (extended)"),
       float_param("shadow_saturation", "0.12", 0, 1, "saturation raised in shadow (studied cartoons: ~0.12)"),
-      float_param("outline_width", "4", 0, 16, "outline width in pixels (inner lines come out about half), 0 = none"),
+      choice_param("outline", "edges", {"edges", "backfaces"},
+                   "edges: silhouette and creases as lines; backfaces: every back face as a wide line (the study's method)"),
+      float_param("outline_width", "4", 0, 16, "silhouette width in pixels; crease lines are half as wide; 0 = none"),
+      float_param("crease_degrees", "60", 0, 180, "edges outline: draw creases sharper than this"),
+      float_param("outline_tolerance", "0.5", 0, 4,
+                  "edges outline: pixels a joined silhouette may be straightened by (0 = every edge as is)"),
+      float_param("outline_min_length", "2", 0, 50, "edges outline: leave out joined lines shorter than this on screen, in pixels"),
       colour_param("outline_colour", "#000000", "outline colour"),
       bool_param("coloured_outline", "false", "outline in the object's own colour, darkened"),
       float_param("outline_darkening", "0.6", 0, 1, "how much the coloured outline darkens the object colour"),
@@ -55,7 +65,7 @@ std::vector<ParamSpec> ComicRenderer::params(bool extended) {
                    "how front faces are chosen: GL culling or the study's CPU methods"),
       int_param("k", "1", 1, 3, "vertex orientation: draw triangles with at least k front vertices"),
       bool_param("vertex_margin", "true",
-                 "widen vertex thresholds so k=1 keeps every face the corrected triangle test keeps (false: the study's plain rule)"),
+                 "make k=1 keep every face the corrected triangle test keeps (false: the study's plain rule)"),
   };
 }
 
@@ -65,7 +75,11 @@ void ComicRenderer::configure(const StyleParams& p) {
   if (orientation != "gl") orientation_ = parse_orientation(orientation);
   k_ = p.get_int("k");
   use_vertex_margins_ = p.get_bool("vertex_margin");
+  backface_outline_mode_ = p.get_text("outline") == "backfaces";
   outline_width_ = p.get_float("outline_width");
+  crease_radians_ = glm::radians(p.get_float("crease_degrees"));
+  outline_tolerance_ = p.get_float("outline_tolerance");
+  outline_min_length_ = p.get_float("outline_min_length");
   ink_ = p.get_colour("outline_colour");
   coloured_outline_ = p.get_bool("coloured_outline");
   outline_darkening_ = p.get_float("outline_darkening");
@@ -101,10 +115,15 @@ void ComicRenderer::prepare(const SceneObject& object) {
   object_ = &object;
   mesh_ = std::make_unique<GpuMesh>(object);
   vertex_margins_ = vertex_margins(object.mesh, object.topology);
-  triangle_colours_ = Buffer::create(mesh_->flat_colours());
-  drawn_slots_ = Buffer::create(mesh_->triangle_source().size() * sizeof(uint32_t), nullptr, GL_STREAM_DRAW);
+  face_colours_.resize(object.mesh.face_count());
+  for (size_t t = 0; t < face_colours_.size(); ++t) face_colours_[t] = flat_colour(object.mesh, t);
   dynamic_elements_ = Buffer::create(mesh_->indices().size() * sizeof(uint32_t), nullptr, GL_STREAM_DRAW);
   dynamic_vao_ = mesh_->vertex_array_with(dynamic_elements_);
+  edge_vertices_ = Buffer::create(0, nullptr, GL_STREAM_DRAW);
+  edge_vao_ = VertexArray::create();
+  edge_vao_.attribute(0, edge_vertices_, 3, sizeof(LineVertex), offsetof(LineVertex, position));
+  edge_vao_.attribute(1, edge_vertices_, 3, sizeof(LineVertex), offsetof(LineVertex, colour));
+  glBindVertexArray(0);
 }
 
 void ComicRenderer::pick_triangles() {
@@ -114,26 +133,31 @@ void ComicRenderer::pick_triangles() {
   const auto& source = mesh_->triangle_source();
   const auto& indices = mesh_->indices();
   picked_indices_.clear();
-  picked_slots_.clear();
   picked_ranges_.clear();
   for (const GpuBatch& batch : mesh_->batches()) {
-    const uint32_t first = uint32_t(picked_slots_.size());
-    for (uint32_t slot = batch.first_index / 3, end = slot + batch.index_count / 3; slot < end; ++slot) {
-      if (!draw_flags_[source[slot]]) continue;
-      picked_indices_.insert(picked_indices_.end(), &indices[3 * slot], &indices[3 * slot] + 3);
-      picked_slots_.push_back(slot);
-    }
-    picked_ranges_.push_back({first, uint32_t(picked_slots_.size()) - first});
+    const uint32_t first = uint32_t(picked_indices_.size() / 3);
+    for (uint32_t slot = batch.first_index / 3, end = slot + batch.index_count / 3; slot < end; ++slot)
+      if (draw_flags_[source[slot]]) picked_indices_.insert(picked_indices_.end(), &indices[3 * slot], &indices[3 * slot] + 3);
+    picked_ranges_.push_back({first, uint32_t(picked_indices_.size() / 3) - first});
   }
   dynamic_elements_.upload(picked_indices_.size() * sizeof(uint32_t), picked_indices_.data());
-  drawn_slots_.upload(picked_slots_.size() * sizeof(uint32_t), picked_slots_.data());
 }
 
 void ComicRenderer::draw_fill(const FrameState& frame) {
   glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
+  // GL culling stays on behind the CPU methods: they decide what is submitted (and lit);
+  // culling never adds a hole, and keeps back faces a conservative method lets through
+  // from being rasterised.
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  // Push the fill back a little so outline lines lying on the surface win the depth test.
+  // The offset's slope term can push nearly edge-on slivers at the silhouette past the far
+  // end of the depth range, where they clamp to 1.0: LEQUAL still lets them cover the clear.
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(1.0f, 2.0f);
+  glDepthFunc(GL_LEQUAL);
   fill_.use();
   fill_.set("model_view_projection", frame.model_view_projection());
   const glm::vec3 light = frame.light_in_object_space();
@@ -147,37 +171,30 @@ void ComicRenderer::draw_fill(const FrameState& frame) {
   fill_.set("shade_map", 1);
   fill_.set("base_texture", 0);
   shade_texture_->bind(1);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, triangle_colours_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, drawn_slots_.id());
 
   const auto& batches = mesh_->batches();
   if (orientation_) {
-    glDisable(GL_CULL_FACE);  // the orientation method has already chosen the faces
-    fill_.set("remapped", 1);
     dynamic_vao_.bind();
     for (size_t b = 0; b < batches.size(); ++b) {
       const Range& r = picked_ranges_[b];
       if (r.triangles == 0) continue;
       fill_.set("textured", int(batches[b].textured));
-      fill_.set("first_primitive", int(r.first_triangle));
       mesh_->bind_texture(batches[b], 0);
       glDrawElements(GL_TRIANGLES, GLsizei(r.triangles * 3), GL_UNSIGNED_INT,
                      reinterpret_cast<const void*>(size_t(r.first_triangle) * 3 * sizeof(uint32_t)));
     }
   } else {
-    glEnable(GL_CULL_FACE);
-    glCullFace(GL_BACK);
-    fill_.set("remapped", 0);
     mesh_->bind();
     for (const GpuBatch& batch : batches) {
       fill_.set("textured", int(batch.textured));
-      fill_.set("first_primitive", int(batch.first_index / 3));
       mesh_->draw(batch, 0);
     }
   }
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glDepthFunc(GL_LESS);
 }
 
-void ComicRenderer::draw_outline(const FrameState& frame) {
+void ComicRenderer::draw_backface_outline(const FrameState& frame) {
   // Back faces as wide lines: the depth buffer hides their inner parts, leaving a thick
   // outline at the silhouette and thinner lines along creases.
   glEnable(GL_CULL_FACE);
@@ -185,17 +202,79 @@ void ComicRenderer::draw_outline(const FrameState& frame) {
   glDepthFunc(GL_LEQUAL);
   glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
   glLineWidth(outline_width_);
-  outline_.use();
-  outline_.set("model_view_projection", frame.model_view_projection());
-  outline_.set("coloured", int(coloured_outline_));
-  outline_.set("darkening", outline_darkening_);
-  outline_.set("ink", ink_);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, triangle_colours_.id());
+  backface_outline_.use();
+  backface_outline_.set("model_view_projection", frame.model_view_projection());
+  backface_outline_.set("coloured", int(coloured_outline_));
+  backface_outline_.set("darkening", outline_darkening_);
+  backface_outline_.set("ink", ink_);
   mesh_->bind();
   mesh_->draw_all();
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   glLineWidth(1.0f);
   glCullFace(GL_BACK);
+  glDepthFunc(GL_LESS);
+}
+
+void ComicRenderer::draw_edge_outline(const FrameState& frame) {
+  const Mesh& mesh = object_->mesh;
+  classify_faces(mesh, object_->topology, last_eye_, exact_front_);
+  // Silhouettes and open edges (group 0, full width) and creases seen from the front (group 1,
+  // half width), each with the face whose colour a coloured outline takes.
+  outline_edges_.clear();
+  outline_faces_.clear();
+  for (const Edge& e : object_->topology.edges) {
+    if (e.boundary || is_silhouette(e, exact_front_)) {
+      outline_edges_.push_back({e.v0, e.v1, 0});
+      outline_faces_.push_back(e.boundary || exact_front_[e.f0] ? e.f0 : e.f1);
+    } else if (e.dihedral > crease_radians_ && exact_front_[e.f0]) {
+      outline_edges_.push_back({e.v0, e.v1, 1});
+      outline_faces_.push_back(e.f0);
+    }
+  }
+  edges_drawn_ = outline_edges_.size();
+
+  // Only the outline's vertices need projecting to pixels.
+  const glm::mat4 mvp = frame.model_view_projection();
+  const glm::vec2 half_viewport = 0.5f * glm::vec2(frame.viewport);
+  screen_.resize(mesh.positions.size());
+  for (const ChainEdge& e : outline_edges_)
+    for (uint32_t v : {e.v0, e.v1}) {
+      const glm::vec4 clip = mvp * glm::vec4(mesh.positions[v], 1.0f);
+      screen_[v] = glm::vec2(clip) / std::max(clip.w, 1e-6f) * half_viewport;
+    }
+
+  for (auto& lines : line_vertices_) lines.clear();
+  for (const Chain& chain : chains_.build(outline_edges_, mesh.positions.size())) {
+    // Tiny closed loops and stubs (folds of a noisy surface) print as specks, not lines.
+    float length = 0.0f;
+    for (size_t i = 0; i + 1 < chain.vertices.size() && length < outline_min_length_; ++i)
+      length += glm::length(screen_[chain.vertices[i + 1]] - screen_[chain.vertices[i]]);
+    if (length < outline_min_length_) continue;
+    simplify_chain(chain.vertices, screen_, outline_tolerance_, kept_);
+    for (size_t i = 0; i + 1 < kept_.size(); ++i) {
+      const uint32_t face = outline_faces_[chain.edges[kept_[i]]];
+      const glm::vec3 c = coloured_outline_ ? glm::vec3(face_colours_[face]) * (1.0f - outline_darkening_) : ink_;
+      line_vertices_[chain.group].push_back({mesh.positions[chain.vertices[kept_[i]]], c});
+      line_vertices_[chain.group].push_back({mesh.positions[chain.vertices[kept_[i + 1]]], c});
+    }
+  }
+  const size_t silhouette = line_vertices_[0].size();
+  line_vertices_[0].insert(line_vertices_[0].end(), line_vertices_[1].begin(), line_vertices_[1].end());
+  segments_drawn_ = line_vertices_[0].size() / 2;
+  edge_vertices_.upload(line_vertices_[0].size() * sizeof(LineVertex), line_vertices_[0].data());
+
+  glDisable(GL_CULL_FACE);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  edge_outline_.use();
+  edge_outline_.set("model_view_projection", frame.model_view_projection());
+  edge_vao_.bind();
+  glLineWidth(outline_width_);
+  glDrawArrays(GL_LINES, 0, GLsizei(silhouette));
+  glLineWidth(std::max(1.0f, 0.5f * outline_width_));
+  glDrawArrays(GL_LINES, GLsizei(silhouette), GLsizei(line_vertices_[0].size() - silhouette));
+  glLineWidth(1.0f);
+  glDepthMask(GL_TRUE);
   glDepthFunc(GL_LESS);
 }
 
@@ -205,7 +284,9 @@ void ComicRenderer::draw(const FrameState& frame) {
   last_eye_ = frame.eye_in_object_space();
   if (orientation_) pick_triangles();
   draw_fill(frame);
-  if (outline_width_ > 0.0f) draw_outline(frame);
+  if (outline_width_ <= 0.0f) return;
+  if (backface_outline_mode_) draw_backface_outline(frame);
+  else draw_edge_outline(frame);
 }
 
 std::map<std::string, double> ComicRenderer::counters() const {
@@ -215,7 +296,7 @@ std::map<std::string, double> ComicRenderer::counters() const {
     std::vector<uint8_t> flags;
     front = double(classify_faces(object_->mesh, object_->topology, last_eye_, flags));
   }
-  return {{"front_faces", front}};
+  return {{"front_faces", front}, {"edges_drawn", double(edges_drawn_)}, {"outline_segments", double(segments_drawn_)}};
 }
 
 }  // namespace inkwire

@@ -1,8 +1,11 @@
 #pragma once
-// Comic renderers (SPEC C1-C9). "comic": a 1D shade map indexed by N.L, back-face culling by
-// GL. "comic-extended": a 2D shade map indexed by (N.L, R.V) for a view-dependent highlight,
-// and the study's fast orientation methods choosing the triangles to draw on the CPU.
-// Both draw the outline as back faces in wide lines behind the filled front faces.
+// Comic renderers (SPEC C1-C9). "comic": a 1D shade map indexed by N.L. "comic-extended": a
+// 2D shade map indexed by (N.L, R.V) for a view-dependent highlight, and the study's fast
+// orientation methods choosing on the CPU which triangles to submit.
+//
+// Outlines: "edges" (default) draws the silhouette (exact per-face test) and visible creases
+// as wide lines, creases at half width; "backfaces" is the study's method, every back face
+// as a wide line behind the fill, which costs several times more on a software rasteriser.
 #include <memory>
 #include <optional>
 #include <vector>
@@ -10,6 +13,7 @@
 #include "client/render/comic/shade_maps.hpp"
 #include "client/render/gpu_mesh.hpp"
 #include "client/render/renderer.hpp"
+#include "common/edge_chains.hpp"
 #include "common/orientation.hpp"
 
 namespace inkwire {
@@ -24,37 +28,48 @@ class ComicRenderer final : public Renderer {
   std::map<std::string, double> counters() const override;
 
  private:
-  // Fills dynamic_elements_ / drawn_slots_ with the triangles the orientation method keeps.
-  void pick_triangles();
+  void pick_triangles();  // fills dynamic_elements_ with what the orientation method keeps
   void draw_fill(const FrameState& frame);
-  void draw_outline(const FrameState& frame);
+  void draw_backface_outline(const FrameState& frame);
+  void draw_edge_outline(const FrameState& frame);
   void upload_shade_map();
 
   bool extended_;
-  gl::Program fill_, outline_;
+  gl::Program fill_, backface_outline_, edge_outline_;
   const SceneObject* object_ = nullptr;
   std::unique_ptr<GpuMesh> mesh_;
-  gl::Buffer triangle_colours_, drawn_slots_, dynamic_elements_;
-  gl::VertexArray dynamic_vao_;
+  gl::Buffer dynamic_elements_, edge_vertices_;
+  gl::VertexArray dynamic_vao_, edge_vao_;
   std::optional<gl::Texture> shade_texture_;
   ShadeMap shade_map_;
+  VertexMargins vertex_margins_;
+  std::vector<glm::vec4> face_colours_;
 
   // Style.
-  std::optional<Orientation> orientation_;  // empty: GL back-face culling
+  std::optional<Orientation> orientation_;  // empty: submit everything, GL culls
   int k_ = 1;
-  bool use_vertex_margins_ = true;
-  std::vector<float> vertex_margins_;
-  float outline_width_ = 4.0f, outline_darkening_ = 0.6f, shadow_saturation_ = 0.12f;
-  bool coloured_outline_ = false;
+  bool use_vertex_margins_ = true, backface_outline_mode_ = false, coloured_outline_ = false;
+  float outline_width_ = 4.0f, outline_darkening_ = 0.6f, shadow_saturation_ = 0.12f, crease_radians_ = 1.05f;
+  float outline_tolerance_ = 0.5f, outline_min_length_ = 2.0f;
   glm::vec3 ink_{0.0f};
 
   // Per frame.
-  std::vector<uint8_t> draw_flags_, vertex_scratch_;
-  std::vector<uint32_t> picked_indices_, picked_slots_;
+  std::vector<uint8_t> draw_flags_, vertex_scratch_, exact_front_;
+  std::vector<uint32_t> picked_indices_;
   struct Range {
     uint32_t first_triangle, triangles;
   };
   std::vector<Range> picked_ranges_;  // per GpuMesh batch
+  struct LineVertex {
+    glm::vec3 position, colour;
+  };
+  std::vector<LineVertex> line_vertices_[2];  // silhouettes (full width), creases (half)
+  std::vector<ChainEdge> outline_edges_;
+  std::vector<uint32_t> outline_faces_;  // the face whose colour each outline edge takes
+  ChainBuilder chains_;
+  std::vector<glm::vec2> screen_;
+  std::vector<uint32_t> kept_;
+  size_t edges_drawn_ = 0, segments_drawn_ = 0;
   size_t triangles_drawn_ = 0;
   glm::vec3 last_eye_{0.0f};
 };

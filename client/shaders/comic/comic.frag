@@ -1,13 +1,9 @@
 #version 450 core
-// One flat base colour per triangle (C7), times the base texture (C9), shaded by the map.
+// The triangle's flat base colour (C7), times the base texture (C9), shaded by the map.
 in vec2 shade_coord;
 in vec2 texcoord;
+flat in vec4 triangle_colour;
 
-layout(std430, binding = 0) readonly buffer TriangleColours { vec4 triangle_colour[]; };
-layout(std430, binding = 1) readonly buffer DrawnSlots { uint drawn_slot[]; };
-
-uniform bool remapped;      // triangles were picked per frame: gl_PrimitiveID indexes drawn_slot
-uniform int first_primitive;
 #ifdef EXTENDED
 uniform sampler2D shade_map;
 #else
@@ -26,9 +22,7 @@ vec3 apply_shade(vec3 base, vec3 texel) {
 }
 
 void main() {
-  int primitive = first_primitive + gl_PrimitiveID;
-  uint slot = remapped ? drawn_slot[primitive] : uint(primitive);
-  vec3 base = triangle_colour[slot].rgb;
+  vec3 base = triangle_colour.rgb;
   if (textured) base *= texture(base_texture, texcoord).rgb;
 #ifdef EXTENDED
   // Shade map images put R.V = 0 on their bottom row; textures start at the image's top row.

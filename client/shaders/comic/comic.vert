@@ -5,6 +5,7 @@
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 3) in vec2 uv;
+layout(location = 4) in vec4 flat_colour;
 
 uniform mat4 model_view_projection;
 uniform vec3 light_object;     // light direction in object space, rotated once per frame (C2)
@@ -15,6 +16,7 @@ uniform float light_dot_view;  // L.V, once per object when the view vector is c
 
 out vec2 shade_coord;  // (N.L, R.V)
 out vec2 texcoord;
+flat out vec4 triangle_colour;  // one colour per triangle, never interpolated (C7)
 
 void main() {
   vec3 n = normalize(normal);
@@ -30,5 +32,6 @@ void main() {
   shade_coord.y = 0.0;
 #endif
   texcoord = uv;
+  triangle_colour = flat_colour;
   gl_Position = model_view_projection * vec4(position, 1.0);
 }
