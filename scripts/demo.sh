@@ -2,7 +2,8 @@
 # The demo: installs what is missing, builds, and renders packaged models in every registered
 # style into a gallery, plus turntable videos.
 #   scripts/demo.sh [OUT_DIR]      (default: demo-output/)
-# Writes OUT_DIR/contact-sheet.png (models x styles), OUT_DIR/styles/<model>-<style>.png and
+# Writes OUT_DIR/contact-sheet.png (models x styles), OUT_DIR/styles/<model>-<style>.png,
+# OUT_DIR/shade-maps.png (the comic shade-map library on one model) and
 # OUT_DIR/turntable-<style>.mp4.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -28,9 +29,20 @@ for entry in "${models[@]}"; do
 done
 oiiotool "${tiles[@]}" --mosaic:pad=6 "${#styles[@]}x${#models[@]}" --ch R,G,B -o "$out/contact-sheet.png"
 
+# Every shipped comic shade map, on the textured duck.
+mapfile -t shade_maps < <("$bin/inkwire-render" --style list | awk '$1 == "shade_map" {sub(/,$/, "", $3); print $3}' | head -1 | tr '|' '\n')
+maps=()
+for map in "${shade_maps[@]}"; do
+  tile="$out/styles/duck-comic-extended-$map.png"
+  "$bin/inkwire-render" --mesh /usr/share/assimp/models/Collada/duck.dae --style comic-extended --set "shade_map=$map" \
+    --view 35,15,1.3 --size 320x256 --out "$tile"
+  maps+=("$tile" --text:x=10:y=22:size=16:color=0.15,0.15,0.15:font=$font "$map")
+done
+oiiotool "${maps[@]}" --mosaic:pad=2 "4x$(( (${#shade_maps[@]} + 3) / 4 ))" --ch R,G,B -o "$out/shade-maps.png"
+
 for style in "${styles[@]}"; do
   "$bin/inkwire-render" --mesh "$meshes/cow.off" --style "$style" --view 35,15,1.3 --size 640x480 \
     --frames 96 --out "$out/turntable-$style.mp4"
 done
 
-echo "demo: wrote $out/contact-sheet.png, $out/styles/ and $out/turntable-*.mp4"
+echo "demo: wrote $out/contact-sheet.png, $out/shade-maps.png, $out/styles/ and $out/turntable-*.mp4"

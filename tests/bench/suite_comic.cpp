@@ -46,6 +46,7 @@ struct Variant {
 std::vector<Result> run_comic_suite(Harness& harness) {
   const std::vector<Variant> variants = {
       {"comic", "", {}},
+      {"comic", "backfaces-outline", {"outline=backfaces"}},  // the study's outline method
       {"comic-extended", "triangle", {"orientation=triangle"}},
       {"comic-extended", "triangle-corrected", {"orientation=triangle-corrected"}},
       {"comic-extended", "triangle-exact", {"orientation=triangle-exact"}},
