@@ -18,37 +18,44 @@ std::vector<uint32_t> flat_indices(const Mesh& mesh) {
   return indices;
 }
 
-std::vector<uint32_t> run_simplifier(const Mesh& mesh, const std::vector<uint32_t>& indices, size_t target_faces) {
+std::vector<uint32_t> run_simplifier(const Mesh& mesh, const std::vector<uint32_t>& indices, size_t target_faces,
+                                     float& relative_error) {
   std::vector<uint32_t> out(indices.size());
   // An error bound of 1 (the whole mesh extent) lets the face count, not the error, decide.
-  const size_t n = meshopt_simplify(out.data(), indices.data(), indices.size(), &mesh.positions[0].x,
-                                    mesh.positions.size(), sizeof(glm::vec3), target_faces * 3, 1.0f, 0, nullptr);
+  const size_t n = meshopt_simplify(out.data(), indices.data(), indices.size(), &mesh.positions[0].x, mesh.positions.size(),
+                                    sizeof(glm::vec3), target_faces * 3, 1.0f, 0, &relative_error);
   out.resize(n);
   return out;
 }
 
 }  // namespace
 
-Mesh simplify_to_faces(const Mesh& mesh, size_t target_faces) {
+Mesh simplify_to_faces(const Mesh& mesh, size_t target_faces, float* error, bool exact) {
   validate_mesh(mesh);
   if (target_faces < 4) throw Error("cannot simplify to fewer than 4 triangles");
+  if (error) *error = 0.0f;
   if (target_faces >= mesh.face_count()) return mesh;
 
   const std::vector<uint32_t> indices = flat_indices(mesh);
   // meshoptimizer stops at or below the target; nudge the request so the result lands as close
   // to the target as it can (the study's LOD series names exact face counts).
   std::vector<uint32_t> best;
+  float best_error = 0.0f;
   size_t request = target_faces;
-  for (int attempt = 0; attempt < 8; ++attempt) {
-    std::vector<uint32_t> got = run_simplifier(mesh, indices, request);
+  for (int attempt = 0; attempt < (exact ? 8 : 1); ++attempt) {
+    float relative_error = 0.0f;
+    std::vector<uint32_t> got = run_simplifier(mesh, indices, request, relative_error);
     const size_t faces = got.size() / 3;
-    if (best.empty() || std::labs(long(faces) - long(target_faces)) < std::labs(long(best.size() / 3) - long(target_faces)))
+    if (best.empty() || std::labs(long(faces) - long(target_faces)) < std::labs(long(best.size() / 3) - long(target_faces))) {
       best = std::move(got);
+      best_error = relative_error;
+    }
     if (faces == target_faces) break;
     request = faces < target_faces ? request + (target_faces - faces) : request - std::min(request - 4, faces - target_faces);
     if (request >= mesh.face_count()) break;
   }
   if (best.empty()) throw Error("simplification removed every triangle");
+  if (error) *error = best_error * meshopt_simplifyScale(&mesh.positions[0].x, mesh.positions.size(), sizeof(glm::vec3));
 
   // Keep per-triangle attributes: find each surviving triangle's source by its vertex set.
   std::map<std::array<uint32_t, 3>, size_t> source_of;
@@ -87,6 +94,25 @@ Mesh simplify_to_faces(const Mesh& mesh, size_t target_faces) {
   remove_degenerate_and_unused(out);
   validate_mesh(out);
   return out;
+}
+
+MeshLevels::MeshLevels(const Mesh& mesh, const Topology& topology, size_t min_faces) {
+  levels_.push_back({mesh, topology, 0.0f});
+  for (size_t faces = mesh.face_count() / 2; faces >= min_faces; faces /= 2) {
+    MeshLevel level;
+    // Always from the full mesh, so each level's error is measured against it.
+    level.mesh = simplify_to_faces(mesh, faces, &level.error, false);
+    if (level.mesh.face_count() >= levels_.back().mesh.face_count()) break;  // the simplifier is stuck
+    level.topology = build_topology(level.mesh);
+    levels_.push_back(std::move(level));
+  }
+}
+
+const MeshLevel& MeshLevels::pick(float pixels_per_unit, float max_error_pixels) const {
+  size_t chosen = 0;
+  for (size_t i = 1; i < levels_.size(); ++i)
+    if (levels_[i].error * pixels_per_unit <= max_error_pixels) chosen = i;
+  return levels_[chosen];
 }
 
 }  // namespace inkwire

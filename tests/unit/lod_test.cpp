@@ -39,3 +39,21 @@ TEST(LodTest, UvsSurviveSimplification) {
   EXPECT_EQ(lod.has_uvs(), mesh.has_uvs());
   EXPECT_LE(lod.face_count(), mesh.face_count() / 2 + 1);
 }
+
+TEST(LodTest, LevelsHalveFacesAndGrowInError) {
+  const auto file = cgal_mesh("bull.off");
+  INKWIRE_REQUIRE_FILE(file);
+  const Mesh bull = load_mesh(file);
+  const MeshLevels levels(bull, build_topology(bull));
+  ASSERT_GE(levels.size(), 4u);
+  EXPECT_EQ(levels[0].error, 0.0f);
+  for (size_t i = 1; i < levels.size(); ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_LT(levels[i].mesh.face_count(), levels[i - 1].mesh.face_count());
+    EXPECT_GE(levels[i].error, levels[i - 1].error);
+    EXPECT_GT(levels[i].error, 0.0f);
+  }
+  // Far away (few pixels per unit) the coarsest level is good enough; close up only the full mesh.
+  EXPECT_EQ(&levels.pick(1e-6f, 0.5f), &levels[levels.size() - 1]);
+  EXPECT_EQ(&levels.pick(1e9f, 0.5f), &levels[0]);
+}

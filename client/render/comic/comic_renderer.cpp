@@ -1,6 +1,7 @@
 #include "client/render/comic/comic_renderer.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include <glm/trigonometric.hpp>
@@ -58,6 +59,8 @@ std::vector<ParamSpec> ComicRenderer::params(bool extended) {
       float_param("outline_tolerance", "0.5", 0, 4,
                   "edges outline: pixels a joined silhouette may be straightened by (0 = every edge as is)"),
       float_param("outline_min_length", "2", 0, 50, "edges outline: leave out joined lines shorter than this on screen, in pixels"),
+      float_param("outline_error", "0.5", 0, 10,
+                  "edges outline: find silhouettes on the coarsest level of detail straying less than this many pixels (0 = full mesh)"),
       colour_param("outline_colour", "#000000", "outline colour"),
       bool_param("coloured_outline", "false", "outline in the object's own colour, darkened"),
       float_param("outline_darkening", "0.6", 0, 1, "how much the coloured outline darkens the object colour"),
@@ -80,6 +83,7 @@ void ComicRenderer::configure(const StyleParams& p) {
   crease_radians_ = glm::radians(p.get_float("crease_degrees"));
   outline_tolerance_ = p.get_float("outline_tolerance");
   outline_min_length_ = p.get_float("outline_min_length");
+  outline_error_ = p.get_float("outline_error");
   ink_ = p.get_colour("outline_colour");
   coloured_outline_ = p.get_bool("coloured_outline");
   outline_darkening_ = p.get_float("outline_darkening");
@@ -115,8 +119,13 @@ void ComicRenderer::prepare(const SceneObject& object) {
   object_ = &object;
   mesh_ = std::make_unique<GpuMesh>(object);
   vertex_margins_ = vertex_margins(object.mesh, object.topology);
-  face_colours_.resize(object.mesh.face_count());
-  for (size_t t = 0; t < face_colours_.size(); ++t) face_colours_[t] = flat_colour(object.mesh, t);
+  outline_levels_ = std::make_unique<MeshLevels>(object.mesh, object.topology);
+  level_face_colours_.clear();
+  for (size_t l = 0; l < outline_levels_->size(); ++l) {
+    const Mesh& level = (*outline_levels_)[l].mesh;
+    level_face_colours_.emplace_back(level.face_count());
+    for (size_t t = 0; t < level.face_count(); ++t) level_face_colours_.back()[t] = flat_colour(level, t);
+  }
   dynamic_elements_ = Buffer::create(mesh_->indices().size() * sizeof(uint32_t), nullptr, GL_STREAM_DRAW);
   dynamic_vao_ = mesh_->vertex_array_with(dynamic_elements_);
   edge_vertices_ = Buffer::create(0, nullptr, GL_STREAM_DRAW);
@@ -131,15 +140,20 @@ void ComicRenderer::pick_triangles() {
   triangles_drawn_ = orient_triangles(*orientation_, k_, object_->mesh, object_->topology, view, draw_flags_, vertex_scratch_,
                                      use_vertex_margins_ ? &vertex_margins_ : nullptr);
   const auto& source = mesh_->triangle_source();
-  const auto& indices = mesh_->indices();
-  picked_indices_.clear();
+  const uint32_t* indices = mesh_->indices().data();
+  picked_indices_.resize(mesh_->indices().size());
+  uint32_t* out = picked_indices_.data();
   picked_ranges_.clear();
   for (const GpuBatch& batch : mesh_->batches()) {
-    const uint32_t first = uint32_t(picked_indices_.size() / 3);
+    const uint32_t first = uint32_t(out - picked_indices_.data()) / 3;
     for (uint32_t slot = batch.first_index / 3, end = slot + batch.index_count / 3; slot < end; ++slot)
-      if (draw_flags_[source[slot]]) picked_indices_.insert(picked_indices_.end(), &indices[3 * slot], &indices[3 * slot] + 3);
-    picked_ranges_.push_back({first, uint32_t(picked_indices_.size() / 3) - first});
+      if (draw_flags_[source[slot]]) {
+        out[0] = indices[3 * slot], out[1] = indices[3 * slot + 1], out[2] = indices[3 * slot + 2];
+        out += 3;
+      }
+    picked_ranges_.push_back({first, uint32_t(out - picked_indices_.data()) / 3 - first});
   }
+  picked_indices_.resize(size_t(out - picked_indices_.data()));
   dynamic_elements_.upload(picked_indices_.size() * sizeof(uint32_t), picked_indices_.data());
 }
 
@@ -216,13 +230,22 @@ void ComicRenderer::draw_backface_outline(const FrameState& frame) {
 }
 
 void ComicRenderer::draw_edge_outline(const FrameState& frame) {
-  const Mesh& mesh = object_->mesh;
-  classify_faces(mesh, object_->topology, last_eye_, exact_front_);
+  // Pixels per object unit at the object's nearest possible point: how far a level's error
+  // can show on screen.
+  const Bounds& bounds = object_->topology.bounds;
+  const float nearest = std::max(glm::length(last_eye_ - bounds.centre()) - 0.5f * bounds.diagonal(), 1e-3f * bounds.diagonal());
+  const float pixels_per_unit = float(frame.viewport.y) / (2.0f * std::tan(glm::radians(frame.camera.fov_y_degrees) * 0.5f) * nearest);
+  const MeshLevel& level = outline_error_ > 0.0f ? outline_levels_->pick(pixels_per_unit, outline_error_) : (*outline_levels_)[0];
+  const std::vector<glm::vec4>& face_colours = level_face_colours_[size_t(&level - &(*outline_levels_)[0])];
+  outline_level_faces_ = level.mesh.face_count();
+  const Mesh& mesh = level.mesh;
+  const Topology& topology = level.topology;
+  classify_faces(mesh, topology, last_eye_, exact_front_);
   // Silhouettes and open edges (group 0, full width) and creases seen from the front (group 1,
   // half width), each with the face whose colour a coloured outline takes.
   outline_edges_.clear();
   outline_faces_.clear();
-  for (const Edge& e : object_->topology.edges) {
+  for (const Edge& e : topology.edges) {
     if (e.boundary || is_silhouette(e, exact_front_)) {
       outline_edges_.push_back({e.v0, e.v1, 0});
       outline_faces_.push_back(e.boundary || exact_front_[e.f0] ? e.f0 : e.f1);
@@ -253,7 +276,7 @@ void ComicRenderer::draw_edge_outline(const FrameState& frame) {
     simplify_chain(chain.vertices, screen_, outline_tolerance_, kept_);
     for (size_t i = 0; i + 1 < kept_.size(); ++i) {
       const uint32_t face = outline_faces_[chain.edges[kept_[i]]];
-      const glm::vec3 c = coloured_outline_ ? glm::vec3(face_colours_[face]) * (1.0f - outline_darkening_) : ink_;
+      const glm::vec3 c = coloured_outline_ ? glm::vec3(face_colours[face]) * (1.0f - outline_darkening_) : ink_;
       line_vertices_[chain.group].push_back({mesh.positions[chain.vertices[kept_[i]]], c});
       line_vertices_[chain.group].push_back({mesh.positions[chain.vertices[kept_[i + 1]]], c});
     }
@@ -296,7 +319,8 @@ std::map<std::string, double> ComicRenderer::counters() const {
     std::vector<uint8_t> flags;
     front = double(classify_faces(object_->mesh, object_->topology, last_eye_, flags));
   }
-  return {{"front_faces", front}, {"edges_drawn", double(edges_drawn_)}, {"outline_segments", double(segments_drawn_)}};
+  return {{"front_faces", front}, {"edges_drawn", double(edges_drawn_)}, {"outline_segments", double(segments_drawn_)},
+          {"outline_level_faces", double(outline_level_faces_)}};
 }
 
 }  // namespace inkwire

@@ -14,6 +14,7 @@
 #include "client/render/gpu_mesh.hpp"
 #include "client/render/renderer.hpp"
 #include "common/edge_chains.hpp"
+#include "common/lod.hpp"
 #include "common/orientation.hpp"
 
 namespace inkwire {
@@ -43,14 +44,15 @@ class ComicRenderer final : public Renderer {
   std::optional<gl::Texture> shade_texture_;
   ShadeMap shade_map_;
   VertexMargins vertex_margins_;
-  std::vector<glm::vec4> face_colours_;
+  std::unique_ptr<MeshLevels> outline_levels_;            // silhouettes come from these
+  std::vector<std::vector<glm::vec4>> level_face_colours_;  // per level, per face (C8)
 
   // Style.
   std::optional<Orientation> orientation_;  // empty: submit everything, GL culls
   int k_ = 1;
   bool use_vertex_margins_ = true, backface_outline_mode_ = false, coloured_outline_ = false;
   float outline_width_ = 4.0f, outline_darkening_ = 0.6f, shadow_saturation_ = 0.12f, crease_radians_ = 1.05f;
-  float outline_tolerance_ = 0.5f, outline_min_length_ = 2.0f;
+  float outline_tolerance_ = 0.5f, outline_min_length_ = 2.0f, outline_error_ = 0.5f;
   glm::vec3 ink_{0.0f};
 
   // Per frame.
@@ -69,7 +71,7 @@ class ComicRenderer final : public Renderer {
   ChainBuilder chains_;
   std::vector<glm::vec2> screen_;
   std::vector<uint32_t> kept_;
-  size_t edges_drawn_ = 0, segments_drawn_ = 0;
+  size_t edges_drawn_ = 0, segments_drawn_ = 0, outline_level_faces_ = 0;
   size_t triangles_drawn_ = 0;
   glm::vec3 last_eye_{0.0f};
 };
