@@ -14,8 +14,6 @@ glm::mat4 Camera::projection(float aspect) const {
   return glm::perspective(glm::radians(fov_y_degrees), aspect, near_plane, far_plane);
 }
 
-glm::vec3 Camera::forward() const { return glm::normalize(target - position); }
-
 Camera thesis_camera() {
   const glm::quat orientation = glm::normalize(glm::quat(0.866f, -0.091f, 0.490f, 0.051f));
   Camera c;

@@ -17,7 +17,6 @@ struct Camera {
 
   glm::mat4 view() const;
   glm::mat4 projection(float aspect) const;
-  glm::vec3 forward() const;
 };
 
 // The study's viewer: at (12.73, 17.85, 12.52) with orientation (w,x,y,z) =

@@ -24,6 +24,7 @@ ParamSpec float_param(std::string name, std::string default_value, double min, d
 ParamSpec int_param(std::string name, std::string default_value, double min, double max, std::string help);
 ParamSpec bool_param(std::string name, std::string default_value, std::string help);
 ParamSpec colour_param(std::string name, std::string default_value, std::string help);
+ParamSpec text_param(std::string name, std::string default_value, std::string help);
 ParamSpec choice_param(std::string name, std::string default_value, std::vector<std::string> choices, std::string help);
 
 class StyleParams {

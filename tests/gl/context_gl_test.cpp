@@ -80,6 +80,28 @@ TEST(ContextGLTest, GlfwWindowInTheSameBinary) {
   EXPECT_EQ(window->backend(), "glfw");
   EXPECT_NE(window->gl_version().find("4.5"), std::string::npos) << window->gl_version();
   expect_upright(draw_asymmetric(40, 30));
+  {
+    // A canvas shown in the window lands in its default framebuffer the right way up.
+    Canvas canvas(64, 48);
+    canvas.bind();
+    glClearColor(0, 0, 1, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, 24, 32, 24);
+    glClearColor(1, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
+    canvas.present_to_default(window->framebuffer_size());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glReadBuffer(GL_BACK);
+    const glm::ivec2 size = window->framebuffer_size();
+    uint8_t top_left[4] = {}, bottom_right[4] = {};
+    glReadPixels(1, size.y - 2, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, top_left);  // GL rows run upward
+    glReadPixels(size.x - 2, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, bottom_right);
+    EXPECT_EQ(top_left[0], 255);
+    EXPECT_EQ(bottom_right[2], 255);
+    window->present();
+  }
   // Switching back must reload entry points from OSMesa and keep drawing correctly.
   test::offscreen_context();
   expect_upright(draw_asymmetric(40, 30));

@@ -30,8 +30,6 @@ std::vector<float> parse_floats(const std::string& text) {
   return values;
 }
 
-std::vector<std::string> shade_map_choices() { return shade_map_names(); }
-
 }  // namespace
 
 ComicRenderer::ComicRenderer(bool extended)
@@ -43,11 +41,11 @@ ComicRenderer::ComicRenderer(bool extended)
 
 std::vector<ParamSpec> ComicRenderer::params(bool extended) {
   return {
-      choice_param("shade_map", "comic", shade_map_choices(), "generated shade map"),
-      {"shade_file", ParamType::Text, "", "shade map image (x: N.L, up: R.V; 128 = own colour, 255 = white); overrides shade_map", 0, 0, {}},
+      choice_param("shade_map", "comic", shade_map_names(), "generated shade map"),
+      text_param("shade_file", "", "shade map image (x: N.L, up: R.V; 128 = own colour, 255 = white); overrides shade_map"),
       bool_param("shade_smooth", "false", "filter a loaded shade map linearly instead of keeping hard bands"),
       int_param("bands", "3", 1, 16, "diffuse bands of the 'comic', 'lines' and 'warm-cool' maps"),
-      {"band_edges", ParamType::Text, "", "N.L where bands change, comma-separated (empty: equal bands)", 0, 0, {}},
+      text_param("band_edges", "", "N.L where bands change, comma-separated (empty: equal bands)"),
       float_param("shadow", "0.24", 0, 1, "how much darker the darkest band is (studied cartoons: 0.24 +- 0.07)"),
       float_param("highlight", "0.7", 0, 1, "highlight band's lift toward white (extended)"),
       float_param("highlight_threshold", "0.96", 0, 1, "R.V where the highlight band starts, 0 = none (extended)"),
@@ -136,8 +134,7 @@ void ComicRenderer::prepare(const SceneObject& object) {
 }
 
 void ComicRenderer::pick_triangles() {
-  const ViewSetup view = ViewSetup::from(object_->topology, last_eye_);
-  triangles_drawn_ = orient_triangles(*orientation_, k_, object_->mesh, object_->topology, view, draw_flags_, vertex_scratch_,
+  triangles_drawn_ = orient_triangles(*orientation_, k_, object_->mesh, object_->topology, view_, draw_flags_, vertex_scratch_,
                                      use_vertex_margins_ ? &vertex_margins_ : nullptr);
   const auto& source = mesh_->triangle_source();
   const uint32_t* indices = mesh_->indices().data();
@@ -175,12 +172,11 @@ void ComicRenderer::draw_fill(const FrameState& frame) {
   fill_.use();
   fill_.set("model_view_projection", frame.model_view_projection());
   const glm::vec3 light = frame.light_in_object_space();
-  const ViewSetup view = ViewSetup::from(object_->topology, last_eye_);
   fill_.set("light_object", light);
-  fill_.set("view_object", view.view);
-  fill_.set("eye_object", last_eye_);
+  fill_.set("view_object", view_.view);
+  fill_.set("eye_object", view_.eye);
   fill_.set("exact_view", int(orientation_ == Orientation::TriangleExact));
-  fill_.set("light_dot_view", glm::dot(light, view.view));
+  fill_.set("light_dot_view", glm::dot(light, view_.view));
   fill_.set("shadow_saturation", shadow_saturation_);
   fill_.set("shade_map", 1);
   fill_.set("base_texture", 0);
@@ -233,14 +229,14 @@ void ComicRenderer::draw_edge_outline(const FrameState& frame) {
   // Pixels per object unit at the object's nearest possible point: how far a level's error
   // can show on screen.
   const Bounds& bounds = object_->topology.bounds;
-  const float nearest = std::max(glm::length(last_eye_ - bounds.centre()) - 0.5f * bounds.diagonal(), 1e-3f * bounds.diagonal());
+  const float nearest = std::max(glm::length(view_.eye - bounds.centre()) - 0.5f * bounds.diagonal(), 1e-3f * bounds.diagonal());
   const float pixels_per_unit = float(frame.viewport.y) / (2.0f * std::tan(glm::radians(frame.camera.fov_y_degrees) * 0.5f) * nearest);
   const MeshLevel& level = outline_error_ > 0.0f ? outline_levels_->pick(pixels_per_unit, outline_error_) : (*outline_levels_)[0];
   const std::vector<glm::vec4>& face_colours = level_face_colours_[size_t(&level - &(*outline_levels_)[0])];
   outline_level_faces_ = level.mesh.face_count();
   const Mesh& mesh = level.mesh;
   const Topology& topology = level.topology;
-  classify_faces(mesh, topology, last_eye_, exact_front_);
+  classify_faces(mesh, topology, view_.eye, exact_front_);
   // Silhouettes and open edges (group 0, full width) and creases seen from the front (group 1,
   // half width), each with the face whose colour a coloured outline takes.
   outline_edges_.clear();
@@ -304,7 +300,7 @@ void ComicRenderer::draw_edge_outline(const FrameState& frame) {
 void ComicRenderer::draw(const FrameState& frame) {
   if (!mesh_) throw Error("ComicRenderer::draw(): prepare() was not called");
   if (!shade_texture_) upload_shade_map();
-  last_eye_ = frame.eye_in_object_space();
+  view_ = ViewSetup::from(object_->topology, frame.eye_in_object_space());
   if (orientation_) pick_triangles();
   draw_fill(frame);
   if (outline_width_ <= 0.0f) return;
@@ -317,7 +313,7 @@ std::map<std::string, double> ComicRenderer::counters() const {
   double front = double(triangles_drawn_);
   if (!orientation_) {  // GL culls: count what it keeps with the exact test it applies
     std::vector<uint8_t> flags;
-    front = double(classify_faces(object_->mesh, object_->topology, last_eye_, flags));
+    front = double(classify_faces(object_->mesh, object_->topology, view_.eye, flags));
   }
   return {{"front_faces", front}, {"edges_drawn", double(edges_drawn_)}, {"outline_segments", double(segments_drawn_)},
           {"outline_level_faces", double(outline_level_faces_)}};

@@ -73,7 +73,7 @@ class ComicRenderer final : public Renderer {
   std::vector<uint32_t> kept_;
   size_t edges_drawn_ = 0, segments_drawn_ = 0, outline_level_faces_ = 0;
   size_t triangles_drawn_ = 0;
-  glm::vec3 last_eye_{0.0f};
+  ViewSetup view_{};  // this frame's viewer, in object space
 };
 
 }  // namespace inkwire
