@@ -1,0 +1,57 @@
+#pragma once
+// Uncertainty functions (SPEC S2): lines that look drawn by hand.
+//
+// Recursive midpoint displacement: a line longer than the maximum segment (compared as squared
+// lengths) is split at its midpoint, moved sideways by a random amount, and each half is
+// treated the same way with half the amplitude. Endpoints are offset too, so strokes overshoot
+// or stop short. The amplitude is proportional to the edge's length but clamped to a threshold
+// taken from the bounding box, so small and large objects and very long edges all look right.
+// Every point stays within `amplitude` of the true edge: endpoints move at most a quarter of it,
+// and the midpoint displacements (a quarter, then halving) add up to less than a half.
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace inkwire {
+
+// A small, fast, deterministic generator (SplitMix64): the same seed gives the same stroke.
+class StrokeRandom {
+ public:
+  explicit StrokeRandom(uint64_t seed) : state_(seed) {}
+  uint64_t next() {
+    uint64_t z = (state_ += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+  }
+  float uniform(float lo, float hi) { return lo + (hi - lo) * float(next() >> 40) / float(1ull << 24); }
+
+ private:
+  uint64_t state_;
+};
+
+// Mixes numbers into one seed (edge id, repetition, boil step, ...).
+inline uint64_t stroke_seed(uint64_t a, uint64_t b, uint64_t c = 0) {
+  StrokeRandom r(a * 0x9e3779b97f4a7c15ull ^ (b + 0x632be59bd9b4e019ull) ^ (c << 17));
+  return r.next();
+}
+
+struct PerturbOptions {
+  float max_segment = 0.05f;     // split lines longer than this (mesh units)
+  float amplitude_ratio = 0.04f; // sideways amplitude as a fraction of the edge's length...
+  float amplitude_clamp = 0.02f; // ...but never more than this (mesh units, from the bounds)
+};
+
+// The amplitude for an edge of `length`.
+inline float perturb_amplitude(float length, const PerturbOptions& o) {
+  return std::min(length * o.amplitude_ratio, o.amplitude_clamp);
+}
+
+// Appends a perturbed polyline from a to b (its points, in order) to `out`. `side` is the
+// direction points move in (unit, across the edge as seen by the viewer).
+void perturb_edge(const glm::vec3& a, const glm::vec3& b, const glm::vec3& side, const PerturbOptions& options,
+                  StrokeRandom& random, std::vector<glm::vec3>& out);
+
+}  // namespace inkwire

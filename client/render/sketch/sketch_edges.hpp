@@ -1,0 +1,46 @@
+#pragma once
+// Per-frame edge choice for the sketch renderers (SPEC S1 dynamic importance, S6 fading).
+//
+// With d1, d2 the cosines between the two faces' normals and the direction to the viewer, an
+// edge with d1 * d2 < 0 is on the silhouette. Edge fading maps d1 * d2 through a lookup that
+// is 1 for negative values and falls to 0 over a small positive range, so edges fade in and
+// out as the object turns instead of popping. The lookup is indexed by d1 * d2 divided by the
+// larger of |d1|, |d2| (that is the smaller one: the sine of the nearer face's angle to edge-on),
+// so "about 5 degrees" means the same for every edge, whatever its other face does.
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "common/mesh.hpp"
+#include "common/topology.hpp"
+
+namespace inkwire {
+
+struct FadeOptions {
+  bool enabled = false;
+  float range_degrees = 5.0f;  // the nearer face this far past edge-on: fully faded out
+};
+
+// The S6 lookup. Without fading it is a step: 1 on the silhouette, 0 elsewhere.
+inline float fade_opacity(float d1, float d2, const FadeOptions& fade) {
+  if (d1 * d2 < 0.0f) return 1.0f;
+  if (!fade.enabled) return 0.0f;
+  const float nearer = std::min(std::abs(d1), std::abs(d2));
+  const float range = std::sin(fade.range_degrees * 0.017453292f);
+  return nearer >= range ? 0.0f : 1.0f - nearer / range;
+}
+
+struct DrawnEdge {
+  uint32_t edge;  // index into topology.edges
+  float opacity;  // 0..1
+};
+
+// From the candidate edges (importance.hpp), those drawn this frame: silhouettes (faded when
+// fading is on), open edges, and creases sharper than `crease_radians` with a face toward
+// the viewer. `eye` is in the mesh's own coordinates.
+void choose_sketch_edges(const Mesh& mesh, const Topology& topology, const std::vector<uint32_t>& candidates,
+                         const glm::vec3& eye, float crease_radians, const FadeOptions& fade, std::vector<DrawnEdge>& out);
+
+}  // namespace inkwire

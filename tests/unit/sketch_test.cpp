@@ -1,0 +1,125 @@
+// Sketch logic without GL: importance (S1), perturbation (S2), fading (S6).
+#include <cmath>
+#include <random>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+#include "client/render/sketch/importance.hpp"
+#include "client/render/sketch/perturb.hpp"
+#include "client/render/sketch/sketch_edges.hpp"
+#include "common/error.hpp"
+#include "common/mesh_import.hpp"
+#include "test_data.hpp"
+
+using namespace inkwire;
+using namespace inkwire::test;
+
+TEST(SketchTest, ImportanceDropsOnlyEdgesThatAreBothShortAndFlat) {
+  const ImportanceOptions o{.min_length = 1.0f, .max_angle = 0.5f};
+  struct Case {
+    float length, dihedral;
+    bool kept;
+  };
+  for (const Case& c : {Case{0.5f, 0.1f, false},   // short and flat: dropped
+                        Case{0.5f, 0.9f, true},    // short crease: kept
+                        Case{2.0f, 0.1f, true},    // long flat edge: kept
+                        Case{2.0f, 0.9f, true},    // long crease: kept
+                        Case{1.0f, 0.1f, true},    // exactly the minimum length is not short
+                        Case{0.5f, 0.5f, true}}) { // exactly the angle is not flat
+    Edge e{};
+    e.length = c.length;
+    e.dihedral = c.dihedral;
+    EXPECT_EQ(statically_important(e, o), c.kept) << "length " << c.length << ", angle " << c.dihedral;
+  }
+}
+
+TEST(SketchTest, ImportanceCountsOnARealMeshAndFlaggedEdgesStay) {
+  const auto file = cgal_mesh("cow.off");
+  INKWIRE_REQUIRE_FILE(file);
+  const Mesh cow = load_mesh(file);
+  const Topology topo = build_topology(cow);
+  const float diag = topo.bounds.diagonal();
+  const auto length_only = important_edges(topo, {.min_length = 0.02f * diag, .max_angle = 10.0f});
+  const auto angle_only = important_edges(topo, {.min_length = 10.0f * diag, .max_angle = 0.3f});
+  const auto both = important_edges(topo, {.min_length = 0.02f * diag, .max_angle = 0.3f});
+  EXPECT_LT(both.size(), topo.edges.size());
+  EXPECT_GE(both.size(), std::max(length_only.size(), angle_only.size())) << "dropped only when both tests drop";
+  std::printf("cow: %zu edges; kept by MinLength alone %zu, by MaxAngle alone %zu, by the S1 rule %zu\n", topo.edges.size(),
+              length_only.size(), angle_only.size(), both.size());
+  // A flagged edge that the rule drops comes back.
+  const auto dropped_everything = important_edges(topo, {.min_length = 10.0f * diag, .max_angle = 4.0f});
+  EXPECT_TRUE(dropped_everything.empty());
+  const Edge& e = topo.edges[17];
+  const auto flagged = load_flagged_edges(write_temp("flags.txt", "# keep this one\n" + std::to_string(e.v1) + " " + std::to_string(e.v0) + "\n"),
+                                          topo, cow.positions.size());
+  EXPECT_EQ(important_edges(topo, {.min_length = 10.0f * diag, .max_angle = 4.0f}, flagged), std::vector<uint32_t>{17});
+  EXPECT_THROW(load_flagged_edges(write_temp("bad1.txt", "1\n"), topo, cow.positions.size()), Error);
+  EXPECT_THROW(load_flagged_edges(write_temp("bad2.txt", "1 99999999\n"), topo, cow.positions.size()), Error);
+  EXPECT_THROW(load_flagged_edges(write_temp("bad3.txt", "0 1 2\n"), topo, cow.positions.size()), Error);
+}
+
+TEST(SketchTest, RecursiveSubdivisionStaysShortAndClose) {
+  std::mt19937 rng(3);  // replayable
+  std::uniform_real_distribution<float> coord(-5.0f, 5.0f);
+  const PerturbOptions o{.max_segment = 0.3f, .amplitude_ratio = 0.05f, .amplitude_clamp = 0.1f};
+  for (int trial = 0; trial < 200; ++trial) {
+    const glm::vec3 a(coord(rng), coord(rng), coord(rng)), b(coord(rng), coord(rng), coord(rng));
+    const glm::vec3 side = glm::normalize(glm::cross(b - a, glm::vec3(0.3f, 0.8f, 0.5f)));
+    StrokeRandom random(stroke_seed(uint64_t(trial), 1));
+    std::vector<glm::vec3> line;
+    perturb_edge(a, b, side, o, random, line);
+    ASSERT_GE(line.size(), 2u);
+    const float amplitude = perturb_amplitude(glm::length(b - a), o);
+    EXPECT_LE(amplitude, o.amplitude_clamp);
+    for (size_t i = 0; i + 1 < line.size(); ++i)
+      EXPECT_LE(glm::length(line[i + 1] - line[i]), o.max_segment + 1e-5f) << "segment " << i << " too long";
+    for (const glm::vec3& p : line) {
+      const float t = std::clamp(glm::dot(p - a, b - a) / glm::dot(b - a, b - a), 0.0f, 1.0f);
+      EXPECT_LE(glm::length(p - (a + t * (b - a))), amplitude + 1e-5f) << "point strays beyond the clamped amplitude";
+    }
+  }
+}
+
+TEST(SketchTest, SameSeedSameStroke) {
+  const PerturbOptions o{};
+  std::vector<glm::vec3> first, second, other;
+  StrokeRandom r1(stroke_seed(5, 2)), r2(stroke_seed(5, 2)), r3(stroke_seed(5, 3));
+  perturb_edge({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, o, r1, first);
+  perturb_edge({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, o, r2, second);
+  perturb_edge({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, o, r3, other);
+  EXPECT_EQ(first, second);
+  EXPECT_NE(first, other);
+}
+
+TEST(SketchTest, FadingStopsEdgesPoppingAsTheObjectTurns) {
+  // Turn the cow in 0.5-degree steps and follow every edge's opacity: with fading on, none
+  // jumps from 0 to 1 in one step; with fading off (a step function) some do.
+  const auto file = cgal_mesh("cow.off");
+  INKWIRE_REQUIRE_FILE(file);
+  const Mesh cow = load_mesh(file);
+  const Topology topo = build_topology(cow);
+  std::vector<uint32_t> all(topo.edges.size());
+  for (uint32_t i = 0; i < all.size(); ++i) all[i] = i;
+  auto opacities = [&](float degrees, bool fading) {
+    const glm::mat4 turn = glm::rotate(glm::mat4(1.0f), glm::radians(degrees), glm::vec3(0, 1, 0));
+    const glm::vec3 eye = glm::vec3(glm::inverse(turn) * glm::vec4(topo.bounds.centre() + glm::vec3(0, 0.3f, 2.0f) * topo.bounds.diagonal(), 1.0f));
+    std::vector<DrawnEdge> drawn;
+    choose_sketch_edges(cow, topo, all, eye, 10.0f /* no creases */, {.enabled = fading, .range_degrees = 5.0f}, drawn);
+    std::vector<float> opacity(topo.edges.size(), 0.0f);
+    for (const DrawnEdge& d : drawn) opacity[d.edge] = d.opacity;
+    return opacity;
+  };
+  for (bool fading : {true, false}) {
+    size_t pops = 0;
+    std::vector<float> before = opacities(0.0f, fading);
+    for (float deg = 0.5f; deg <= 90.0f; deg += 0.5f) {
+      const std::vector<float> after = opacities(deg, fading);
+      for (size_t i = 0; i < after.size(); ++i) pops += before[i] == 0.0f && after[i] == 1.0f;
+      before = after;
+    }
+    if (fading) EXPECT_EQ(pops, 0u) << "edges popped in with fading on";
+    else EXPECT_GT(pops, 0u) << "without fading edges should pop (or the test proves nothing)";
+  }
+}
