@@ -1,6 +1,7 @@
 #include "common/edge_chains.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include <glm/geometric.hpp>
@@ -12,7 +13,8 @@ constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
 
 }  // namespace
 
-std::span<const Chain> ChainBuilder::build(const std::vector<ChainEdge>& edges, size_t vertex_count) {
+std::span<const Chain> ChainBuilder::build(const std::vector<ChainEdge>& edges, size_t vertex_count,
+                                           const std::vector<glm::vec3>* positions, float max_turn_degrees) {
   // Incidence lists as linked lists in flat arrays: first_[v] -> edge end e (edge e/2,
   // end e%2), next_[e] -> the next end at the same vertex.
   first_.assign(vertex_count, kNone);
@@ -26,7 +28,9 @@ std::span<const Chain> ChainBuilder::build(const std::vector<ChainEdge>& edges, 
     }
   }
   auto vertex_at = [&](uint32_t end) { return end % 2 ? edges[end / 2].v1 : edges[end / 2].v0; };
-  // The single other unused edge of `group` at vertex v, if v joins exactly two of them.
+  const float min_cos = std::cos(max_turn_degrees * 0.017453292f);
+  // Where the chain goes on from vertex v, arriving by `from_edge`: the other edge of `group`
+  // if v joins exactly two; with positions, at a branch, the unused one that turns least.
   auto continuation = [&](uint32_t v, uint32_t group, uint32_t from_edge) {
     uint32_t found = kNone, count = 0;
     for (uint32_t end = first_[v]; end != kNone; end = next_[end]) {
@@ -34,7 +38,20 @@ std::span<const Chain> ChainBuilder::build(const std::vector<ChainEdge>& edges, 
       ++count;
       if (end / 2 != from_edge) found = end;
     }
-    return count == 2 && found != kNone && !used_[found / 2] ? found : kNone;
+    if (count == 2) return found != kNone && !used_[found / 2] ? found : kNone;
+    if (!positions || count < 2) return kNone;
+    const ChainEdge& in = edges[from_edge];
+    const glm::vec3 arriving = glm::normalize((*positions)[v] - (*positions)[in.v0 == v ? in.v1 : in.v0]);
+    uint32_t best = kNone;
+    float best_cos = min_cos;
+    for (uint32_t end = first_[v]; end != kNone; end = next_[end]) {
+      const ChainEdge& out = edges[end / 2];
+      if (out.group != group || used_[end / 2] || end / 2 == from_edge) continue;
+      const glm::vec3 leaving = glm::normalize((*positions)[out.v0 == v ? out.v1 : out.v0] - (*positions)[v]);
+      const float c = glm::dot(arriving, leaving);
+      if (c > best_cos) best_cos = c, best = end;
+    }
+    return best;
   };
   // Degree of v within a group: chains start where it is not 2.
   auto degree = [&](uint32_t v, uint32_t group) {

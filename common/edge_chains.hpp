@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 namespace inkwire {
 
@@ -27,11 +28,15 @@ struct Chain {
 
 // Joins edges into maximal chains through vertices shared by exactly two edges of one group
 // (at branch points and ends a chain stops). Every edge ends up in exactly one chain.
-// `vertex_count` bounds the vertex indices. Keep one builder for per-frame use: it reuses its
-// storage, and the chains returned stay valid until the next build().
+// `vertex_count` bounds the vertex indices. Given `positions`, a chain also carries on through
+// branch points, along the unused edge that turns least (if it turns less than
+// `max_turn_degrees`): long strokes for sketching rather than the shortest pieces.
+// Keep one builder for per-frame use: it reuses its storage, and the chains returned stay valid
+// until the next build().
 class ChainBuilder {
  public:
-  std::span<const Chain> build(const std::vector<ChainEdge>& edges, size_t vertex_count);
+  std::span<const Chain> build(const std::vector<ChainEdge>& edges, size_t vertex_count,
+                               const std::vector<glm::vec3>* positions = nullptr, float max_turn_degrees = 60.0f);
 
  private:
   std::vector<uint32_t> first_, next_;  // incidence lists: per vertex, per edge end

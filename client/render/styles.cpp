@@ -3,6 +3,7 @@
 #include "client/render/comic/comic_renderer.hpp"
 #include "client/render/default_renderer.hpp"
 #include "client/render/hidden_line_renderer.hpp"
+#include "client/render/sketch/recursive_sketcher.hpp"
 #include "common/error.hpp"
 
 namespace inkwire {
@@ -17,6 +18,8 @@ const std::vector<StyleInfo>& styles() {
        [] { return ComicRenderer::params(false); }, [] { return std::make_unique<ComicRenderer>(false); }},
       {"comic-extended", "2D shade map over (N.L, R.V) with a moving highlight band; fast CPU face orientation", "paper",
        [] { return ComicRenderer::params(true); }, [] { return std::make_unique<ComicRenderer>(true); }},
+      {"sketch-recursive", "silhouettes and creases drawn 1-4 times as wobbling hand-drawn lines that boil at 12 Hz", "paper",
+       &RecursiveSketcher::params, [] { return std::make_unique<RecursiveSketcher>(); }},
   };
   return all;
 }

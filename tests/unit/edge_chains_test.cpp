@@ -84,3 +84,20 @@ TEST(EdgeChainsTest, RandomEdgeSoupIsCoveredExactlyOnce) {
   for (const Chain& c : builder.build(edges, 41)) covered += c.vertices.size() - 1;
   EXPECT_EQ(covered, edges.size());
 }
+
+TEST(EdgeChainsTest, WithPositionsChainsRunStraightThroughBranches) {
+  // A cross: 0-1-2 along x and 3-1-4 along y meet at vertex 1. Without positions the branch
+  // cuts them into four pieces; with positions each line is one chain.
+  const std::vector<glm::vec3> positions = {{-1, 0, 0}, {0, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}};
+  const std::vector<ChainEdge> edges = {{0, 1, 0}, {1, 2, 0}, {3, 1, 0}, {1, 4, 0}};
+  ChainBuilder builder;
+  EXPECT_EQ(builder.build(edges, 5).size(), 4u);
+  const auto chains = builder.build(edges, 5, &positions);
+  ASSERT_EQ(chains.size(), 2u);
+  for (const Chain& c : chains) {
+    ASSERT_EQ(c.vertices.size(), 3u);
+    EXPECT_EQ(c.vertices[1], 1u);
+    const glm::vec3 a = positions[c.vertices[0]], b = positions[c.vertices[2]];
+    EXPECT_NEAR(glm::length(b - a), 2.0f, 1e-6f) << "each chain is a straight line through the crossing";
+  }
+}

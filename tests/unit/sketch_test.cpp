@@ -123,3 +123,29 @@ TEST(SketchTest, FadingStopsEdgesPoppingAsTheObjectTurns) {
     else EXPECT_GT(pops, 0u) << "without fading edges should pop (or the test proves nothing)";
   }
 }
+
+TEST(SketchTest, WholeStrokesWobbleWithinTheirAmplitude) {
+  // A quarter circle of 40 short edges: perturbed as one stroke it wobbles by an amount set by
+  // its whole length, and never strays further than that from the curve.
+  std::vector<glm::vec3> points, sides;
+  for (int i = 0; i <= 40; ++i) {
+    const float a = 1.5707963f * float(i) / 40.0f;
+    points.push_back({std::cos(a), std::sin(a), 0.0f});
+    sides.push_back({std::cos(a), std::sin(a), 0.0f});  // outward, across the curve
+  }
+  const PerturbOptions o{.max_segment = 0.02f, .amplitude_ratio = 0.05f, .amplitude_clamp = 1.0f};
+  const float amplitude = perturb_amplitude(1.5707963f, o);
+  float largest = 0.0f;
+  for (uint64_t seed = 0; seed < 50; ++seed) {
+    StrokeRandom random(stroke_seed(seed, 9));
+    std::vector<glm::vec3> out;
+    perturb_stroke(points, sides, o, random, out);
+    for (size_t i = 0; i + 1 < out.size(); ++i) ASSERT_LE(glm::length(out[i + 1] - out[i]), o.max_segment + 1e-5f);
+    for (const glm::vec3& p : out) {
+      const float off = std::abs(glm::length(glm::vec2(p)) - 1.0f);  // distance from the arc
+      EXPECT_LE(off, amplitude + 1e-4f);
+      largest = std::max(largest, off);
+    }
+  }
+  EXPECT_GT(largest, 0.25f * amplitude) << "a whole stroke should visibly wobble, not just each tiny edge";
+}

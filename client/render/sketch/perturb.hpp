@@ -54,4 +54,12 @@ inline float perturb_amplitude(float length, const PerturbOptions& o) {
 void perturb_edge(const glm::vec3& a, const glm::vec3& b, const glm::vec3& side, const PerturbOptions& options,
                   StrokeRandom& random, std::vector<glm::vec3>& out);
 
+// The same for a whole stroke (a chain of edges, at least two points): segments longer than
+// the maximum are split first (squared-length tests), then one sideways offset per point is
+// made by midpoint displacement over the stroke's length, so a long stroke wobbles as a whole.
+// `sides` holds each point's unit sideways direction; the amplitude follows the stroke's
+// length. Every point stays within that amplitude of the stroke.
+void perturb_stroke(const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& sides, const PerturbOptions& options,
+                    StrokeRandom& random, std::vector<glm::vec3>& out);
+
 }  // namespace inkwire

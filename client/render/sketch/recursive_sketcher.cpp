@@ -1,0 +1,203 @@
+#include "client/render/sketch/recursive_sketcher.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "common/error.hpp"
+
+namespace inkwire {
+
+using namespace gl;
+
+RecursiveSketcher::RecursiveSketcher() : strokes_(Program::from_files({"sketch/strokes.vert", "sketch/strokes.frag"})) {}
+
+std::vector<ParamSpec> RecursiveSketcher::params() {
+  return {
+      float_param("min_length", "0.01", 0, 1, "importance: edges shorter than this fraction of the bounding-box diagonal..."),
+      float_param("max_angle", "12", 0, 180, "importance: ...and flatter than this many degrees are never drawn"),
+      text_param("flagged_edges", "", "file of vertex-index pairs: edges always drawn"),
+      float_param("crease_degrees", "50", 0, 180, "draw creases sharper than this"),
+      bool_param("fade", "false", "fade edges in and out near the silhouette instead of popping"),
+      float_param("fade_degrees", "5", 0.1, 45, "fading range"),
+      int_param("repetitions", "3", 1, 4, "strokes per edge at most (fewer when many edges are drawn)"),
+      int_param("stroke_budget", "900", 1, 1000000, "strokes per frame the repetitions aim for"),
+      float_param("min_stroke", "0.03", 0, 1, "leave out joined lines shorter than this fraction of the diagonal (specks)"),
+      float_param("boil_hz", "12", 0, 120, "how often per second of animation the wobble changes (0 = never)"),
+      int_param("search_every", "3", 1, 60, "under rotation, find the edges again every this many frames"),
+      float_param("wobble", "0.04", 0, 0.5, "sideways wobble as a fraction of the edge's length"),
+      float_param("wobble_clamp", "0.006", 0, 0.1, "...at most this fraction of the bounding-box diagonal"),
+      float_param("segment", "0.02", 0.001, 1, "wobble detail: longest straight piece, fraction of the diagonal"),
+      float_param("stroke_length", "0.3", 0.01, 10, "longest stroke, fraction of the diagonal (longer outlines take several)"),
+      float_param("line_width", "1.6", 0.5, 8, "stroke width in pixels"),
+      colour_param("ink", "#26262a", "stroke colour"),
+      float_param("ink_opacity", "0.8", 0, 1, "stroke opacity (overlapping repetitions darken)"),
+  };
+}
+
+void RecursiveSketcher::configure(const StyleParams& p) {
+  min_length_ratio_ = p.get_float("min_length");
+  importance_.max_angle = glm::radians(p.get_float("max_angle"));
+  flagged_file_ = p.get_text("flagged_edges");
+  crease_radians_ = glm::radians(p.get_float("crease_degrees"));
+  fade_ = {p.get_bool("fade"), p.get_float("fade_degrees")};
+  max_repetitions_ = p.get_int("repetitions");
+  stroke_budget_ = p.get_int("stroke_budget");
+  boil_hz_ = p.get_float("boil_hz");
+  search_every_ = p.get_int("search_every");
+  perturb_.amplitude_ratio = p.get_float("wobble");
+  amplitude_clamp_ratio_ = p.get_float("wobble_clamp");
+  max_segment_ratio_ = p.get_float("segment");
+  max_stroke_ratio_ = p.get_float("stroke_length");
+  min_stroke_ratio_ = p.get_float("min_stroke");
+  line_width_ = p.get_float("line_width");
+  ink_ = glm::vec4(p.get_colour("ink"), p.get_float("ink_opacity"));
+  if (object_) prepare(*object_);  // thresholds depend on the object's size
+}
+
+void RecursiveSketcher::prepare(const SceneObject& object) {
+  object_ = &object;
+  if (!mesh_ || mesh_object_ != &object) mesh_ = std::make_unique<GpuMesh>(object);
+  mesh_object_ = &object;
+  const float diagonal = object.topology.bounds.diagonal();
+  importance_.min_length = min_length_ratio_ * diagonal;
+  perturb_.amplitude_clamp = amplitude_clamp_ratio_ * diagonal;
+  perturb_.max_segment = max_segment_ratio_ * diagonal;
+  max_stroke_ = max_stroke_ratio_ * diagonal;
+  min_stroke_ = min_stroke_ratio_ * diagonal;
+  const std::vector<uint32_t> flagged =
+      flagged_file_.empty() ? std::vector<uint32_t>{} : load_flagged_edges(flagged_file_, object.topology, object.mesh.positions.size());
+  candidates_ = important_edges(object.topology, importance_, flagged);
+  for (StrokeSet& set : sets_) {
+    set.buffer = Buffer::create(0, nullptr, GL_STREAM_DRAW);
+    set.vao = VertexArray::create();
+    set.vao.attribute(0, set.buffer, 3, sizeof(Vertex), offsetof(Vertex, position));
+    set.vao.attribute(1, set.buffer, 1, sizeof(Vertex), offsetof(Vertex, opacity));
+    set.generation = -1;
+  }
+  glBindVertexArray(0);
+  frames_since_search_ = 1 << 30;
+}
+
+int RecursiveSketcher::repetitions() const {
+  // Fewer repetitions when the outline breaks into many strokes, so the drawing stays light.
+  const int per_stroke = stroke_budget_ / std::max<int>(1, int(stroke_count_));
+  return std::clamp(per_stroke, 1, max_repetitions_);
+}
+
+void RecursiveSketcher::find_edges(const FrameState& frame) {
+  choose_sketch_edges(object_->mesh, object_->topology, candidates_, frame.eye_in_object_space(), crease_radians_, fade_, drawn_);
+  ++generation_;
+}
+
+void RecursiveSketcher::build_set(int set, const FrameState& frame) {
+  const Mesh& mesh = object_->mesh;
+  const glm::vec3 eye = frame.eye_in_object_space();
+  chain_edges_.clear();
+  for (const DrawnEdge& d : drawn_) {
+    const Edge& e = object_->topology.edges[d.edge];
+    chain_edges_.push_back({e.v0, e.v1, 0});
+  }
+  // Strokes: chains cut to at most the stroke length, each starting where the last ended;
+  // chains shorter than the minimum (specks from a ragged silhouette) are left out. A stroke's
+  // opacity is the mean of its edges' (so fading changes it gradually).
+  strokes_found_.clear();
+  for (const Chain& chain : chains_.build(chain_edges_, mesh.positions.size(), &mesh.positions)) {
+    float chain_length = 0.0f;
+    for (size_t i = 0; i + 1 < chain.vertices.size(); ++i)
+      chain_length += glm::length(mesh.positions[chain.vertices[i + 1]] - mesh.positions[chain.vertices[i]]);
+    if (chain_length < min_stroke_) continue;
+    Stroke stroke{drawn_[chain.edges[0]].edge, 0.0f, {chain.vertices[0]}};
+    float length = 0.0f;
+    for (size_t i = 0; i < chain.edges.size(); ++i) {
+      length += glm::length(mesh.positions[chain.vertices[i + 1]] - mesh.positions[chain.vertices[i]]);
+      stroke.opacity += drawn_[chain.edges[i]].opacity;
+      stroke.vertices.push_back(chain.vertices[i + 1]);
+      if (length >= max_stroke_ || i + 1 == chain.edges.size()) {
+        stroke.opacity /= float(stroke.vertices.size() - 1);
+        strokes_found_.push_back(stroke);
+        stroke = {i + 1 < chain.edges.size() ? drawn_[chain.edges[i + 1]].edge : 0u, 0.0f, {chain.vertices[i + 1]}};
+        length = 0.0f;
+      }
+    }
+  }
+  stroke_count_ = strokes_found_.size();
+
+  const int reps = repetitions();
+  scratch_.clear();
+  for (const Stroke& stroke : strokes_found_) {
+    stroke_points_.resize(stroke.vertices.size());
+    stroke_sides_.resize(stroke.vertices.size());
+    for (size_t i = 0; i < stroke.vertices.size(); ++i) stroke_points_[i] = mesh.positions[stroke.vertices[i]];
+    // Wobble across the stroke as the viewer sees it.
+    for (size_t i = 0; i < stroke_points_.size(); ++i) {
+      const glm::vec3 tangent = stroke_points_[std::min(i + 1, stroke_points_.size() - 1)] - stroke_points_[i ? i - 1 : 0];
+      const glm::vec3 side = glm::cross(tangent, stroke_points_[i] - eye);
+      const float l = glm::length(side);
+      stroke_sides_[i] = l > 1e-12f ? side / l : glm::vec3(0.0f);
+    }
+    for (int r = 0; r < reps; ++r) {
+      StrokeRandom random(stroke_seed(stroke.id, uint64_t(set), uint64_t(r)));
+      polyline_.clear();
+      perturb_stroke(stroke_points_, stroke_sides_, perturb_, random, polyline_);
+      const float o = stroke.opacity * (1.0f - 0.2f * float(r) / float(std::max(1, reps - 1)));
+      for (size_t i = 0; i + 1 < polyline_.size(); ++i) {
+        scratch_.push_back({polyline_[i], o});
+        scratch_.push_back({polyline_[i + 1], o});
+      }
+    }
+  }
+  StrokeSet& s = sets_[size_t(set)];
+  s.buffer.upload(scratch_.size() * sizeof(Vertex), scratch_.data());
+  s.vertices = scratch_.size();
+  s.generation = generation_;
+}
+
+void RecursiveSketcher::draw(const FrameState& frame) {
+  if (!mesh_) throw Error("RecursiveSketcher::draw(): prepare() was not called");
+  // Find the edges again every few frames (the first frame always searches).
+  ++frames_since_search_;
+  if (frames_since_search_ >= search_every_) {
+    find_edges(frame);
+    frames_since_search_ = 0;
+  }
+  // Boil: one step per 1/boil_hz seconds; the sets are replayed in an order reshuffled every
+  // cycle (deterministically, so recordings repeat).
+  const long step = boil_hz_ > 0.0f ? long(std::floor(frame.time_seconds * boil_hz_)) : 0;
+  const long cycle = step / kSets;
+  std::array<int, kSets> order;
+  for (int i = 0; i < kSets; ++i) order[size_t(i)] = i;
+  StrokeRandom shuffle(stroke_seed(uint64_t(cycle), 77));
+  for (int i = kSets - 1; i > 0; --i) std::swap(order[size_t(i)], order[shuffle.next() % uint64_t(i + 1)]);
+  const int set = order[size_t(step % kSets)];
+  if (sets_[size_t(set)].generation != generation_) build_set(set, frame);
+
+  const glm::mat4 mvp = frame.model_view_projection();
+  hlr_.lay_depth(*mesh_, mvp);
+  HiddenLineRemoval::begin_lines();
+  glEnable(GL_BLEND);
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  strokes_.use();
+  strokes_.set("model_view_projection", mvp);
+  strokes_.set("depth_bias", depth_bias_);
+  strokes_.set("ink", ink_);
+  glLineWidth(line_width_);
+  sets_[size_t(set)].vao.bind();
+  glDrawArrays(GL_LINES, 0, GLsizei(sets_[size_t(set)].vertices));
+  glLineWidth(1.0f);
+  glDisable(GL_BLEND);
+  HiddenLineRemoval::end_lines();
+}
+
+std::map<std::string, double> RecursiveSketcher::counters() const {
+  if (!object_) return {};
+  return {{"edges_total", double(object_->topology.edges.size())},
+          {"edges_candidates", double(candidates_.size())},
+          {"edges_drawn", double(drawn_.size())},
+          {"strokes", double(stroke_count_)},
+          {"repetitions", double(repetitions())}};
+}
+
+}  // namespace inkwire
