@@ -1,0 +1,93 @@
+// Sketch renderers, headless: goldens, boiling, and ink only where the object is.
+#include <cstring>
+
+#include <gtest/gtest.h>
+
+#include "client/gl/canvas.hpp"
+#include "client/render/styles.hpp"
+#include "gl_test_support.hpp"
+#include "../unit/test_data.hpp"
+
+using namespace inkwire;
+
+namespace {
+
+size_t differing_pixels(const Image& a, const Image& b) {
+  size_t n = 0;
+  for (size_t i = 0; i < a.pixels.size(); i += 4) n += std::memcmp(&a.pixels[i], &b.pixels[i], 4) != 0;
+  return n;
+}
+
+}  // namespace
+
+TEST(SketchGLTest, BoilsAtItsRateAndRepeatsExactly) {
+  INKWIRE_REQUIRE_FILE(test::cgal_mesh("cow.off"));
+  test::offscreen_context();
+  Canvas canvas(320, 240);
+  const SceneObject cow = load_scene_object(test::cgal_mesh("cow.off"));
+  auto sketch = make_renderer("sketch-recursive", {"boil_hz=12"});
+  sketch->prepare(cow);
+  FrameState frame = test::view_of(cow, canvas, 40, 15, 1.2f);
+  frame.time_seconds = 0.01;
+  const Image first = test::render_frame(*sketch, frame, canvas);
+  frame.time_seconds = 0.07;  // same 1/12 s step: the same strokes
+  EXPECT_EQ(differing_pixels(first, test::render_frame(*sketch, frame, canvas)), 0u);
+  // Over the next steps the wobble changes (each step replays one of four sets, so at least
+  // one of three consecutive steps differs from the first).
+  size_t changed = 0;
+  for (double t : {0.1, 0.19, 0.27}) {
+    frame.time_seconds = t;
+    changed = std::max(changed, differing_pixels(first, test::render_frame(*sketch, frame, canvas)));
+  }
+  EXPECT_GT(changed, 200u) << "the lines should boil";
+  // A fresh renderer at the same time draws the same picture: recordings repeat.
+  auto again = make_renderer("sketch-recursive", {"boil_hz=12"});
+  again->prepare(cow);
+  frame.time_seconds = 0.01;
+  EXPECT_EQ(differing_pixels(first, test::render_frame(*again, frame, canvas)), 0u);
+}
+
+TEST(SketchGLTest, InkStaysOnTheObject) {
+  INKWIRE_REQUIRE_FILE(test::cgal_mesh("cow.off"));
+  test::offscreen_context();
+  Canvas canvas(320, 240);
+  const SceneObject cow = load_scene_object(test::cgal_mesh("cow.off"));
+  const FrameState frame = test::view_of(cow, canvas, 40, 15, 1.2f);
+  auto shaded = make_renderer("default");
+  shaded->prepare(cow);
+  const Image mask = test::render_frame(*shaded, frame, canvas);
+  auto sketch = make_renderer("sketch-recursive");
+  sketch->prepare(cow);
+  const Image drawn = test::render_frame(*sketch, frame, canvas);
+  // Strokes wobble and overshoot a little, so ink may lie a few pixels past the silhouette,
+  // never far from the object; and there must be a drawing at all.
+  const int reach = 5;
+  size_t ink = 0, stray = 0;
+  for (int y = 0; y < drawn.height; ++y)
+    for (int x = 0; x < drawn.width; ++x) {
+      if (drawn.rgba(x, y).a == 0) continue;
+      ++ink;
+      bool near = false;
+      for (int dy = -reach; dy <= reach && !near; ++dy)
+        for (int dx = -reach; dx <= reach && !near; ++dx) {
+          const int u = x + dx, v = y + dy;
+          near = u >= 0 && v >= 0 && u < mask.width && v < mask.height && mask.rgba(u, v).a > 0;
+        }
+      stray += !near;
+    }
+  EXPECT_GT(ink, 1000u);
+  EXPECT_EQ(stray, 0u);
+}
+
+// Sketches boil with time: goldens are taken at time 0 with a fixed view. Tolerance as for
+// the default renderer (llvmpipe rounding only); any change to the strokes fails.
+TEST(SketchGLTest, RecursiveMatchesGolden) {
+  INKWIRE_REQUIRE_FILE(test::cgal_mesh("cow.off"));
+  test::offscreen_context();
+  Canvas canvas(320, 240);
+  const SceneObject cow = load_scene_object(test::cgal_mesh("cow.off"));
+  auto sketch = make_renderer("sketch-recursive");
+  sketch->prepare(cow);
+  const Image img = test::render_frame(*sketch, test::view_of(cow, canvas, 40, 20, 1.1f), canvas, "#ffffff");
+  EXPECT_EQ(test::compare_with_golden(img, "sketch_recursive", {3, 0.005, 0.3}), "");
+}
