@@ -73,12 +73,7 @@ TEST(HiddenLineGLTest, BackdropOutsideTheObjectIsUntouched) {
       other += !ink;
       // A 2-pixel line centred on the silhouette reaches one pixel past the mask, plus one
       // where the line and triangle rasterisation rules round differently.
-      bool near_object = false;
-      for (int dy = -2; dy <= 2; ++dy)
-        for (int dx = -2; dx <= 2; ++dx) {
-          const int u = std::clamp(x + dx, 0, mask.width - 1), v = std::clamp(y + dy, 0, mask.height - 1);
-          near_object = near_object || mask.rgba(u, v).a > 0;
-        }
+      const bool near_object = test::near_covered(mask, x, y, 2);
       (near_object ? ink_inside : ink_outside) += ink;
     }
   EXPECT_EQ(other, 0u) << "pixels that are neither paper nor ink: the depth pass wrote colour";

@@ -20,6 +20,9 @@ Image render_frame(Renderer& renderer, const FrameState& frame, const Canvas& ca
 // A UV sphere of unit radius, outward-facing, with `segments` around and `rings` pole to pole.
 Mesh make_sphere(int segments, int rings);
 
+// True when a covered pixel (alpha > 0) of `mask` lies within `reach` pixels of (x, y).
+bool near_covered(const Image& mask, int x, int y, int reach);
+
 // A unit cube of 12 triangles: the sharpest case for averaged vertex normals.
 Mesh make_box();
 

@@ -51,6 +51,13 @@ Mesh make_sphere(int segments, int rings) {
   return m;
 }
 
+bool near_covered(const Image& mask, int x, int y, int reach) {
+  for (int v = std::max(0, y - reach); v <= std::min(mask.height - 1, y + reach); ++v)
+    for (int u = std::max(0, x - reach); u <= std::min(mask.width - 1, x + reach); ++u)
+      if (mask.rgba(u, v).a > 0) return true;
+  return false;
+}
+
 Mesh make_box() {
   Mesh m;
   m.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};

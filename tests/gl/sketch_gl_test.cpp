@@ -67,13 +67,7 @@ TEST(SketchGLTest, InkStaysOnTheObject) {
     for (int x = 0; x < drawn.width; ++x) {
       if (drawn.rgba(x, y).a == 0) continue;
       ++ink;
-      bool near = false;
-      for (int dy = -reach; dy <= reach && !near; ++dy)
-        for (int dx = -reach; dx <= reach && !near; ++dx) {
-          const int u = x + dx, v = y + dy;
-          near = u >= 0 && v >= 0 && u < mask.width && v < mask.height && mask.rgba(u, v).a > 0;
-        }
-      stray += !near;
+      stray += !test::near_covered(mask, x, y, reach);
     }
   EXPECT_GT(ink, 1000u);
   EXPECT_EQ(stray, 0u);
