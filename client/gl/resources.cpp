@@ -78,6 +78,27 @@ Texture Texture::from_image(const Image& image, const TextureOptions& options) {
   return t;
 }
 
+Texture Texture::array_from_images(const std::vector<Image>& layers, const TextureOptions& options) {
+  if (layers.empty() || layers[0].empty()) throw Error("cannot make an array texture with no layers");
+  const int w = layers[0].width, h = layers[0].height;
+  std::vector<uint8_t> texels;
+  texels.reserve(size_t(w) * h * 4 * layers.size());
+  for (const Image& layer : layers) {
+    if (layer.width != w || layer.height != h) throw Error("array texture layers differ in size");
+    texels.insert(texels.end(), layer.pixels.begin(), layer.pixels.end());
+  }
+  Texture t = create_bound(GL_TEXTURE_2D_ARRAY);
+  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA8, w, h, GLsizei(layers.size()), 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+  const GLint wrap = options.repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, wrap);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, options.linear ? GL_LINEAR : GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER,
+                  options.mipmaps ? GL_LINEAR_MIPMAP_LINEAR : (options.linear ? GL_LINEAR : GL_NEAREST));
+  if (options.mipmaps) glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
+  return t;
+}
+
 Texture Texture::lookup_1d(const std::vector<glm::u8vec4>& texels, bool linear) {
   if (texels.empty()) throw Error("cannot make a lookup texture with no texels");
   Texture t = create_bound(GL_TEXTURE_1D);

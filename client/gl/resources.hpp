@@ -87,6 +87,8 @@ struct TextureOptions {
 class Texture : public Handle<delete_texture> {
  public:
   static Texture from_image(const Image& image, const TextureOptions& options = {});
+  // Equal-sized images as the layers of one 2D array texture (one texture, many variants).
+  static Texture array_from_images(const std::vector<Image>& layers, const TextureOptions& options = {});
   // A 1D lookup (shade maps): RGBA rows of `width` texels.
   static Texture lookup_1d(const std::vector<glm::u8vec4>& texels, bool linear);
   void bind(int unit) const;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "common/error.hpp"
+#include "common/noise.hpp"
 #include "common/style_params.hpp"
 
 namespace inkwire {
@@ -31,38 +32,6 @@ BackdropSpec BackdropSpec::parse(const std::string& text) {
   throw Error("backdrop '" + text + "' is not paper, paper:FILE, none or #rrggbb");
 }
 
-namespace {
-
-// Periodic value noise: lattice values wrap every `period` cells, so the texture tiles.
-class TileableNoise {
- public:
-  TileableNoise(int period, uint32_t seed) : period_(period), values_(size_t(period) * period) {
-    uint32_t state = seed * 747796405u + 2891336453u;
-    for (float& v : values_) {
-      state = state * 1664525u + 1013904223u;
-      v = float(state >> 8) / float(1u << 24);
-    }
-  }
-  // u, v in cells; smooth (cubic) interpolation.
-  float at(float u, float v) const {
-    const int x0 = int(std::floor(u)), y0 = int(std::floor(v));
-    const float fx = u - x0, fy = v - y0;
-    const float sx = fx * fx * (3 - 2 * fx), sy = fy * fy * (3 - 2 * fy);
-    const float a = lattice(x0, y0), b = lattice(x0 + 1, y0), c = lattice(x0, y0 + 1), d = lattice(x0 + 1, y0 + 1);
-    return (a + (b - a) * sx) * (1 - sy) + (c + (d - c) * sx) * sy;
-  }
-
- private:
-  float lattice(int x, int y) const {
-    x = ((x % period_) + period_) % period_;
-    y = ((y % period_) + period_) % period_;
-    return values_[size_t(y) * period_ + x];
-  }
-  int period_;
-  std::vector<float> values_;
-};
-
-}  // namespace
 
 Image generate_paper(int size, uint32_t seed) {
   if (size < 16 || size > 4096) throw Error("paper size must be 16..4096");

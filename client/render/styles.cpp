@@ -4,6 +4,7 @@
 #include "client/render/default_renderer.hpp"
 #include "client/render/hidden_line_renderer.hpp"
 #include "client/render/sketch/recursive_sketcher.hpp"
+#include "client/render/sketch/textured_sketcher.hpp"
 #include "common/error.hpp"
 
 namespace inkwire {
@@ -20,6 +21,12 @@ const std::vector<StyleInfo>& styles() {
        [] { return ComicRenderer::params(true); }, [] { return std::make_unique<ComicRenderer>(true); }},
       {"sketch-recursive", "silhouettes and creases drawn 1-4 times as wobbling hand-drawn lines that boil at 12 Hz", "paper",
        &RecursiveSketcher::params, [] { return std::make_unique<RecursiveSketcher>(); }},
+      {"sketch-pencil", "graphite strokes with paper grain along every outline edge, fading in and out", "paper",
+       [] { return TexturedSketcher::params(Medium::Pencil); }, [] { return std::make_unique<TexturedSketcher>(Medium::Pencil); }},
+      {"sketch-charcoal", "broad, crumbling charcoal strokes along every outline edge, fading in and out", "paper",
+       [] { return TexturedSketcher::params(Medium::Charcoal); }, [] { return std::make_unique<TexturedSketcher>(Medium::Charcoal); }},
+      {"sketch-chalk", "dry white chalk strokes on a dark board", "#2e3b35",
+       [] { return TexturedSketcher::params(Medium::Chalk); }, [] { return std::make_unique<TexturedSketcher>(Medium::Chalk); }},
   };
   return all;
 }

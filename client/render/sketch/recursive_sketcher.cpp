@@ -15,13 +15,8 @@ using namespace gl;
 RecursiveSketcher::RecursiveSketcher() : strokes_(Program::from_files({"sketch/strokes.vert", "sketch/strokes.frag"})) {}
 
 std::vector<ParamSpec> RecursiveSketcher::params() {
-  return {
-      float_param("min_length", "0.01", 0, 1, "importance: edges shorter than this fraction of the bounding-box diagonal..."),
-      float_param("max_angle", "12", 0, 180, "importance: ...and flatter than this many degrees are never drawn"),
-      text_param("flagged_edges", "", "file of vertex-index pairs: edges always drawn"),
-      float_param("crease_degrees", "50", 0, 180, "draw creases sharper than this"),
-      bool_param("fade", "false", "fade edges in and out near the silhouette instead of popping"),
-      float_param("fade_degrees", "5", 0.1, 45, "fading range"),
+  std::vector<ParamSpec> specs = SketchEdgeSource::params(false);
+  const std::vector<ParamSpec> own = {
       int_param("repetitions", "3", 1, 4, "strokes per edge at most (fewer when many edges are drawn)"),
       int_param("stroke_budget", "900", 1, 1000000, "strokes per frame the repetitions aim for"),
       float_param("min_stroke", "0.03", 0, 1, "leave out joined lines shorter than this fraction of the diagonal (specks)"),
@@ -35,14 +30,12 @@ std::vector<ParamSpec> RecursiveSketcher::params() {
       colour_param("ink", "#26262a", "stroke colour"),
       float_param("ink_opacity", "0.8", 0, 1, "stroke opacity (overlapping repetitions darken)"),
   };
+  specs.insert(specs.end(), own.begin(), own.end());
+  return specs;
 }
 
 void RecursiveSketcher::configure(const StyleParams& p) {
-  min_length_ratio_ = p.get_float("min_length");
-  importance_.max_angle = glm::radians(p.get_float("max_angle"));
-  flagged_file_ = p.get_text("flagged_edges");
-  crease_radians_ = glm::radians(p.get_float("crease_degrees"));
-  fade_ = {p.get_bool("fade"), p.get_float("fade_degrees")};
+  edges_.configure(p);
   max_repetitions_ = p.get_int("repetitions");
   stroke_budget_ = p.get_int("stroke_budget");
   boil_hz_ = p.get_float("boil_hz");
@@ -61,15 +54,12 @@ void RecursiveSketcher::prepare(const SceneObject& object) {
   object_ = &object;
   if (!mesh_ || mesh_object_ != &object) mesh_ = std::make_unique<GpuMesh>(object);
   mesh_object_ = &object;
+  edges_.prepare(object);
   const float diagonal = object.topology.bounds.diagonal();
-  importance_.min_length = min_length_ratio_ * diagonal;
   perturb_.amplitude_clamp = amplitude_clamp_ratio_ * diagonal;
   perturb_.max_segment = max_segment_ratio_ * diagonal;
   max_stroke_ = max_stroke_ratio_ * diagonal;
   min_stroke_ = min_stroke_ratio_ * diagonal;
-  const std::vector<uint32_t> flagged =
-      flagged_file_.empty() ? std::vector<uint32_t>{} : load_flagged_edges(flagged_file_, object.topology, object.mesh.positions.size());
-  candidates_ = important_edges(object.topology, importance_, flagged);
   for (StrokeSet& set : sets_) {
     set.buffer = Buffer::create(0, nullptr, GL_STREAM_DRAW);
     set.vao = VertexArray::create();
@@ -87,16 +77,12 @@ int RecursiveSketcher::repetitions() const {
   return std::clamp(per_stroke, 1, max_repetitions_);
 }
 
-void RecursiveSketcher::find_edges(const FrameState& frame) {
-  choose_sketch_edges(object_->mesh, object_->topology, candidates_, frame.eye_in_object_space(), crease_radians_, fade_, drawn_);
-  ++generation_;
-}
-
 void RecursiveSketcher::build_set(int set, const FrameState& frame) {
   const Mesh& mesh = object_->mesh;
   const glm::vec3 eye = frame.eye_in_object_space();
+  const std::vector<DrawnEdge>& drawn = edges_.drawn();
   chain_edges_.clear();
-  for (const DrawnEdge& d : drawn_) {
+  for (const DrawnEdge& d : drawn) {
     const Edge& e = object_->topology.edges[d.edge];
     chain_edges_.push_back({e.v0, e.v1, 0});
   }
@@ -109,16 +95,16 @@ void RecursiveSketcher::build_set(int set, const FrameState& frame) {
     for (size_t i = 0; i + 1 < chain.vertices.size(); ++i)
       chain_length += glm::length(mesh.positions[chain.vertices[i + 1]] - mesh.positions[chain.vertices[i]]);
     if (chain_length < min_stroke_) continue;
-    Stroke stroke{drawn_[chain.edges[0]].edge, 0.0f, {chain.vertices[0]}};
+    Stroke stroke{drawn[chain.edges[0]].edge, 0.0f, {chain.vertices[0]}};
     float length = 0.0f;
     for (size_t i = 0; i < chain.edges.size(); ++i) {
       length += glm::length(mesh.positions[chain.vertices[i + 1]] - mesh.positions[chain.vertices[i]]);
-      stroke.opacity += drawn_[chain.edges[i]].opacity;
+      stroke.opacity += drawn[chain.edges[i]].opacity;
       stroke.vertices.push_back(chain.vertices[i + 1]);
       if (length >= max_stroke_ || i + 1 == chain.edges.size()) {
         stroke.opacity /= float(stroke.vertices.size() - 1);
         strokes_found_.push_back(stroke);
-        stroke = {i + 1 < chain.edges.size() ? drawn_[chain.edges[i + 1]].edge : 0u, 0.0f, {chain.vertices[i + 1]}};
+        stroke = {i + 1 < chain.edges.size() ? drawn[chain.edges[i + 1]].edge : 0u, 0.0f, {chain.vertices[i + 1]}};
         length = 0.0f;
       }
     }
@@ -160,7 +146,8 @@ void RecursiveSketcher::draw(const FrameState& frame) {
   // Find the edges again every few frames (the first frame always searches).
   ++frames_since_search_;
   if (frames_since_search_ >= search_every_) {
-    find_edges(frame);
+    edges_.choose(frame.eye_in_object_space());
+    ++generation_;
     frames_since_search_ = 0;
   }
   // Boil: one step per 1/boil_hz seconds; the sets are replayed in an order reshuffled every
@@ -194,8 +181,8 @@ void RecursiveSketcher::draw(const FrameState& frame) {
 std::map<std::string, double> RecursiveSketcher::counters() const {
   if (!object_) return {};
   return {{"edges_total", double(object_->topology.edges.size())},
-          {"edges_candidates", double(candidates_.size())},
-          {"edges_drawn", double(drawn_.size())},
+          {"edges_candidates", double(edges_.candidate_count())},
+          {"edges_drawn", double(edges_.drawn().size())},
           {"strokes", double(stroke_count_)},
           {"repetitions", double(repetitions())}};
 }

@@ -37,16 +37,15 @@ class RecursiveSketcher final : public Renderer {
   static constexpr int kSets = 4;
 
  private:
-  void find_edges(const FrameState& frame);
   void build_set(int set, const FrameState& frame);
   int repetitions() const;
 
   gl::Program strokes_;
   HiddenLineRemoval hlr_;
+  SketchEdgeSource edges_;
   const SceneObject* object_ = nullptr;
   const SceneObject* mesh_object_ = nullptr;  // which object mesh_ was uploaded from
   std::unique_ptr<GpuMesh> mesh_;
-  std::vector<uint32_t> candidates_;
 
   struct Vertex {
     glm::vec3 position;
@@ -59,7 +58,6 @@ class RecursiveSketcher final : public Renderer {
     long generation = -1;  // which edge search it was built for
   };
   std::array<StrokeSet, kSets> sets_;
-  std::vector<DrawnEdge> drawn_;
   std::vector<ChainEdge> chain_edges_;
   ChainBuilder chains_;
   std::vector<Vertex> scratch_;
@@ -74,15 +72,12 @@ class RecursiveSketcher final : public Renderer {
   long generation_ = 0, frames_since_search_ = 1 << 30;  // first frame always searches
 
   // Style.
-  ImportanceOptions importance_;
-  std::string flagged_file_;
   PerturbOptions perturb_;
-  FadeOptions fade_;
-  float crease_radians_ = 0.9f, line_width_ = 1.6f, boil_hz_ = 12.0f, depth_bias_ = 0.002f;
+  float line_width_ = 1.6f, boil_hz_ = 12.0f, depth_bias_ = 0.002f;
   glm::vec4 ink_{0.15f, 0.15f, 0.16f, 0.8f};
   int max_repetitions_ = 3, stroke_budget_ = 1500, search_every_ = 3;
   // Relative to the bounding-box diagonal, resolved at prepare().
-  float min_length_ratio_ = 0.01f, max_segment_ratio_ = 0.02f, amplitude_clamp_ratio_ = 0.006f, max_stroke_ratio_ = 0.3f;
+  float max_segment_ratio_ = 0.02f, amplitude_clamp_ratio_ = 0.006f, max_stroke_ratio_ = 0.3f;
   float max_stroke_ = 1.0f, min_stroke_ratio_ = 0.03f, min_stroke_ = 0.0f;
 };
 

@@ -1,6 +1,7 @@
 #include "client/render/sketch/sketch_edges.hpp"
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 namespace inkwire {
 
@@ -24,6 +25,39 @@ void choose_sketch_edges(const Mesh& mesh, const Topology& topology, const std::
     const float opacity = fade_opacity(d1, d2, fade);
     if (opacity > 0.0f) out.push_back({i, opacity});
   }
+}
+
+std::vector<ParamSpec> SketchEdgeSource::params(bool fade_by_default) {
+  return {
+      float_param("min_length", "0.01", 0, 1, "importance: edges shorter than this fraction of the bounding-box diagonal..."),
+      float_param("max_angle", "12", 0, 180, "importance: ...and flatter than this many degrees are never drawn"),
+      text_param("flagged_edges", "", "file of vertex-index pairs: edges always drawn"),
+      float_param("crease_degrees", "50", 0, 180, "draw creases sharper than this"),
+      bool_param("fade", fade_by_default ? "true" : "false", "fade edges in and out near the silhouette instead of popping"),
+      float_param("fade_degrees", "5", 0.1, 45, "fading range"),
+  };
+}
+
+void SketchEdgeSource::configure(const StyleParams& p) {
+  min_length_ratio_ = p.get_float("min_length");
+  max_angle_ = glm::radians(p.get_float("max_angle"));
+  flagged_file_ = p.get_text("flagged_edges");
+  crease_radians_ = glm::radians(p.get_float("crease_degrees"));
+  fade_ = {p.get_bool("fade"), p.get_float("fade_degrees")};
+  if (object_) prepare(*object_);  // thresholds depend on the object's size
+}
+
+void SketchEdgeSource::prepare(const SceneObject& object) {
+  object_ = &object;
+  const ImportanceOptions importance{min_length_ratio_ * object.topology.bounds.diagonal(), max_angle_};
+  const std::vector<uint32_t> flagged =
+      flagged_file_.empty() ? std::vector<uint32_t>{} : load_flagged_edges(flagged_file_, object.topology, object.mesh.positions.size());
+  candidates_ = important_edges(object.topology, importance, flagged);
+}
+
+const std::vector<DrawnEdge>& SketchEdgeSource::choose(const glm::vec3& eye) {
+  choose_sketch_edges(object_->mesh, object_->topology, candidates_, eye, crease_radians_, fade_, drawn_);
+  return drawn_;
 }
 
 }  // namespace inkwire

@@ -13,7 +13,10 @@
 
 #include <glm/vec3.hpp>
 
+#include "client/render/scene_object.hpp"
+#include "client/render/sketch/importance.hpp"
 #include "common/mesh.hpp"
+#include "common/style_params.hpp"
 #include "common/topology.hpp"
 
 namespace inkwire {
@@ -42,5 +45,28 @@ struct DrawnEdge {
 // the viewer. `eye` is in the mesh's own coordinates.
 void choose_sketch_edges(const Mesh& mesh, const Topology& topology, const std::vector<uint32_t>& candidates,
                          const glm::vec3& eye, float crease_radians, const FadeOptions& fade, std::vector<DrawnEdge>& out);
+
+// What every sketcher shares: the importance thresholds (relative to the object's size), the
+// flagged-edges file, creases and fading, as style parameters, and the per-frame edge choice.
+class SketchEdgeSource {
+ public:
+  static std::vector<ParamSpec> params(bool fade_by_default);
+  void configure(const StyleParams& params);
+  // Resolves thresholds for this object and picks its candidate edges (static importance).
+  void prepare(const SceneObject& object);
+  // The edges to draw for a viewer at `eye` (object space).
+  const std::vector<DrawnEdge>& choose(const glm::vec3& eye);
+
+  const std::vector<DrawnEdge>& drawn() const { return drawn_; }
+  size_t candidate_count() const { return candidates_.size(); }
+
+ private:
+  const SceneObject* object_ = nullptr;
+  float min_length_ratio_ = 0.01f, max_angle_ = 0.2f, crease_radians_ = 0.9f;
+  std::string flagged_file_;
+  FadeOptions fade_;
+  std::vector<uint32_t> candidates_;
+  std::vector<DrawnEdge> drawn_;
+};
 
 }  // namespace inkwire
