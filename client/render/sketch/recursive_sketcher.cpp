@@ -152,13 +152,15 @@ void RecursiveSketcher::draw(const FrameState& frame) {
   }
   // Boil: one step per 1/boil_hz seconds; the sets are replayed in an order reshuffled every
   // cycle (deterministically, so recordings repeat).
+  // Floor division, so times before zero (warm-up frames, scrubbing back) still pick a set.
   const long step = boil_hz_ > 0.0f ? long(std::floor(frame.time_seconds * boil_hz_)) : 0;
-  const long cycle = step / kSets;
+  const long cycle = step >= 0 ? step / kSets : -((-step + kSets - 1) / kSets);
+  const long slot = step - cycle * kSets;  // 0..kSets-1
   std::array<int, kSets> order;
   for (int i = 0; i < kSets; ++i) order[size_t(i)] = i;
   StrokeRandom shuffle(stroke_seed(uint64_t(cycle), 77));
   for (int i = kSets - 1; i > 0; --i) std::swap(order[size_t(i)], order[shuffle.next() % uint64_t(i + 1)]);
-  const int set = order[size_t(step % kSets)];
+  const int set = order[size_t(slot)];
   if (sets_[size_t(set)].generation != generation_) build_set(set, frame);
 
   const glm::mat4 mvp = frame.model_view_projection();
