@@ -92,6 +92,10 @@ const ParamSpec& StyleParams::spec(const std::string& key) const {
   throw Error("unknown parameter '" + key + "'" + (names.empty() ? " (this style has none)" : " (known: " + join(names) + ")"));
 }
 
+bool StyleParams::has(const std::string& key) const {
+  return std::any_of(specs_.begin(), specs_.end(), [&](const ParamSpec& s) { return s.name == key; });
+}
+
 void StyleParams::set(const std::string& key, const std::string& value) {
   const ParamSpec& s = spec(key);
   const std::string bad = "parameter '" + key + "' = '" + value + "': ";

@@ -42,6 +42,7 @@ class StyleParams {
   glm::vec3 get_colour(const std::string& key) const;
   const std::string& get_text(const std::string& key) const;
 
+  bool has(const std::string& key) const;
   const std::vector<ParamSpec>& specs() const { return specs_; }
   const std::map<std::string, std::string>& values() const { return values_; }
 

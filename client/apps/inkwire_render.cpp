@@ -57,15 +57,14 @@ int run(const Options& o) {
   if (o.out.empty()) throw Error("--out is required");
   if (o.frames < 1 || o.frames > 100000) throw Error("--frames must be 1..100000");
   const glm::ivec2 size = parse_size(o.size);
-  const StyleInfo& style = find_style(o.style);
-  const BackdropSpec backdrop_spec = BackdropSpec::parse(o.backdrop.empty() ? style.default_backdrop : o.backdrop);
+  const BackdropSpec backdrop_spec = BackdropSpec::parse(o.backdrop.empty() ? default_backdrop(o.style) : o.backdrop);
 
   SceneObject object = load_scene_object(o.mesh, o.lod);
   for (const std::string& w : object.warnings) std::cerr << "inkwire-render: warning: " << w << "\n";
 
   auto context = create_offscreen_context(size.x, size.y, o.gl);
   Canvas canvas(size.x, size.y, o.msaa);
-  std::unique_ptr<Renderer> renderer = make_renderer(o.style, o.set);
+  std::unique_ptr<Renderer> renderer = make_renderer(o.style, o.set);  // validates names and settings
   renderer->prepare(object);
   Backdrop backdrop(backdrop_spec);
 
@@ -112,7 +111,7 @@ int main(int argc, char** argv) {
   CLI::App app{"inkwire-render: render one mesh in one style to PNG images or an MP4 video"};
   app.add_option("--mesh", o.mesh, "mesh file (OBJ, PLY, OFF, 3DS, ASE, glTF, ...)");
   app.add_option("--lod", o.lod, "simplify to about this many triangles first");
-  app.add_option("--style", o.style, "style name, or 'list' to print every style and its parameters");
+  app.add_option("--style", o.style, "style name, styles joined by '+' (drawn in turn), or 'list'");
   app.add_option("--set", o.set, "style parameter KEY=VALUE (repeatable)");
   app.add_option("--pose", o.pose, "camera pose: thesis (the study's benchmark viewer)");
   app.add_option("--view", o.view, "orbit camera AZIMUTH_DEG,ELEVATION_DEG[,DISTANCE in bounding-box diagonals]");

@@ -83,6 +83,7 @@
   X(PFNGLUNIFORM2FPROC, glUniform2f)                                         \
   X(PFNGLUNIFORM3FPROC, glUniform3f)                                         \
   X(PFNGLUNIFORM4FPROC, glUniform4f)                                         \
+  X(PFNGLUNIFORMMATRIX2FVPROC, glUniformMatrix2fv)                           \
   X(PFNGLUNIFORMMATRIX3FVPROC, glUniformMatrix3fv)                           \
   X(PFNGLUNIFORMMATRIX4FVPROC, glUniformMatrix4fv)                           \
   X(PFNGLGENFRAMEBUFFERSPROC, glGenFramebuffers)                             \

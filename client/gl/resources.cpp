@@ -78,24 +78,25 @@ Texture Texture::from_image(const Image& image, const TextureOptions& options) {
   return t;
 }
 
-Texture Texture::array_from_images(const std::vector<Image>& layers, const TextureOptions& options) {
-  if (layers.empty() || layers[0].empty()) throw Error("cannot make an array texture with no layers");
+Texture Texture::stack_from_images(const std::vector<Image>& layers, GLenum target, const TextureOptions& options) {
+  if (target != GL_TEXTURE_2D_ARRAY && target != GL_TEXTURE_3D) throw Error("stacked textures are 2D arrays or 3D");
+  if (layers.empty() || layers[0].empty()) throw Error("cannot stack a texture from no layers");
   const int w = layers[0].width, h = layers[0].height;
   std::vector<uint8_t> texels;
   texels.reserve(size_t(w) * h * 4 * layers.size());
   for (const Image& layer : layers) {
-    if (layer.width != w || layer.height != h) throw Error("array texture layers differ in size");
+    if (layer.width != w || layer.height != h) throw Error("stacked texture layers differ in size");
     texels.insert(texels.end(), layer.pixels.begin(), layer.pixels.end());
   }
-  Texture t = create_bound(GL_TEXTURE_2D_ARRAY);
-  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA8, w, h, GLsizei(layers.size()), 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+  Texture t = create_bound(target);
+  glTexImage3D(target, 0, GL_RGBA8, w, h, GLsizei(layers.size()), 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
   const GLint wrap = options.repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, wrap);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, options.linear ? GL_LINEAR : GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER,
-                  options.mipmaps ? GL_LINEAR_MIPMAP_LINEAR : (options.linear ? GL_LINEAR : GL_NEAREST));
-  if (options.mipmaps) glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
+  glTexParameteri(target, GL_TEXTURE_WRAP_S, wrap);
+  glTexParameteri(target, GL_TEXTURE_WRAP_T, wrap);
+  if (target == GL_TEXTURE_3D) glTexParameteri(target, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);  // tone does not wrap
+  glTexParameteri(target, GL_TEXTURE_MAG_FILTER, options.linear ? GL_LINEAR : GL_NEAREST);
+  glTexParameteri(target, GL_TEXTURE_MIN_FILTER, options.mipmaps ? GL_LINEAR_MIPMAP_LINEAR : (options.linear ? GL_LINEAR : GL_NEAREST));
+  if (options.mipmaps) glGenerateMipmap(target);
   return t;
 }
 

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include <glm/mat2x2.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 
@@ -87,8 +88,9 @@ struct TextureOptions {
 class Texture : public Handle<delete_texture> {
  public:
   static Texture from_image(const Image& image, const TextureOptions& options = {});
-  // Equal-sized images as the layers of one 2D array texture (one texture, many variants).
-  static Texture array_from_images(const std::vector<Image>& layers, const TextureOptions& options = {});
+  // Equal-sized images stacked into one texture: GL_TEXTURE_2D_ARRAY (layers picked by index,
+  // e.g. stroke variants) or GL_TEXTURE_3D (filtered along the stack too, e.g. hatch tones).
+  static Texture stack_from_images(const std::vector<Image>& layers, GLenum target, const TextureOptions& options = {});
   // A 1D lookup (shade maps): RGBA rows of `width` texels.
   static Texture lookup_1d(const std::vector<glm::u8vec4>& texels, bool linear);
   void bind(int unit) const;
@@ -121,6 +123,7 @@ class Program : public Handle<delete_program> {
   void set(const char* name, const glm::vec2& v) const { glUniform2f(location(name), v.x, v.y); }
   void set(const char* name, const glm::vec3& v) const { glUniform3f(location(name), v.x, v.y, v.z); }
   void set(const char* name, const glm::vec4& v) const { glUniform4f(location(name), v.x, v.y, v.z, v.w); }
+  void set(const char* name, const glm::mat2& m) const { glUniformMatrix2fv(location(name), 1, GL_FALSE, &m[0][0]); }
   void set(const char* name, const glm::mat3& m) const { glUniformMatrix3fv(location(name), 1, GL_FALSE, &m[0][0]); }
   void set(const char* name, const glm::mat4& m) const { glUniformMatrix4fv(location(name), 1, GL_FALSE, &m[0][0]); }
 

@@ -2,6 +2,7 @@
 
 #include "client/render/comic/comic_renderer.hpp"
 #include "client/render/default_renderer.hpp"
+#include "client/render/hatching/hatching_renderer.hpp"
 #include "client/render/hidden_line_renderer.hpp"
 #include "client/render/sketch/recursive_sketcher.hpp"
 #include "client/render/sketch/textured_sketcher.hpp"
@@ -27,6 +28,8 @@ const std::vector<StyleInfo>& styles() {
        [] { return TexturedSketcher::params(Medium::Charcoal); }, [] { return std::make_unique<TexturedSketcher>(Medium::Charcoal); }},
       {"sketch-chalk", "dry white chalk strokes on a dark board", "#2e3b35",
        [] { return TexturedSketcher::params(Medium::Chalk); }, [] { return std::make_unique<TexturedSketcher>(Medium::Chalk); }},
+      {"hatching", "screen-space pencil hatching whose density follows the light; combine with an outline: hatching+sketch-pencil",
+       "paper", &HatchingRenderer::params, [] { return std::make_unique<HatchingRenderer>(); }},
   };
   return all;
 }
@@ -40,13 +43,72 @@ const StyleInfo& find_style(const std::string& name) {
   throw Error("unknown style '" + name + "' (known: " + known + ")");
 }
 
-std::unique_ptr<Renderer> make_renderer(const std::string& name, const std::vector<std::string>& assignments) {
-  const StyleInfo& style = find_style(name);
-  StyleParams params(style.params());
-  for (const std::string& a : assignments) params.set_assignment(a);
-  std::unique_ptr<Renderer> renderer = style.create();
-  renderer->configure(params);
-  return renderer;
+namespace {
+
+std::vector<std::string> split_parts(const std::string& name) {
+  std::vector<std::string> parts;
+  size_t start = 0;
+  for (size_t plus = name.find('+'); ; plus = name.find('+', start)) {
+    parts.push_back(name.substr(start, plus == std::string::npos ? std::string::npos : plus - start));
+    if (plus == std::string::npos) break;
+    start = plus + 1;
+  }
+  return parts;
 }
+
+// Several renderers drawing the same object in turn: e.g. hatching, then outline strokes.
+class CompositeRenderer final : public Renderer {
+ public:
+  CompositeRenderer(std::vector<std::unique_ptr<Renderer>> parts, std::vector<StyleParams> params)
+      : parts_(std::move(parts)), params_(std::move(params)) {}
+  void configure(const StyleParams& changes) override {
+    for (size_t i = 0; i < parts_.size(); ++i) {
+      for (const auto& [key, value] : changes.values())
+        if (params_[i].has(key)) params_[i].set(key, value);
+      parts_[i]->configure(params_[i]);
+    }
+  }
+  void prepare(const SceneObject& object) override {
+    for (auto& p : parts_) p->prepare(object);
+  }
+  void draw(const FrameState& frame) override {
+    for (auto& p : parts_) p->draw(frame);
+  }
+  std::map<std::string, double> counters() const override {
+    std::map<std::string, double> all;
+    for (const auto& p : parts_) all.merge(p->counters());
+    return all;
+  }
+
+ private:
+  std::vector<std::unique_ptr<Renderer>> parts_;
+  std::vector<StyleParams> params_;
+};
+
+}  // namespace
+
+std::unique_ptr<Renderer> make_renderer(const std::string& name, const std::vector<std::string>& assignments) {
+  const std::vector<std::string> names = split_parts(name);
+  std::vector<StyleParams> params;
+  for (const std::string& part : names) params.emplace_back(find_style(part).params());
+  for (const std::string& a : assignments) {
+    const auto eq = a.find('=');
+    if (eq == std::string::npos || eq == 0) throw Error("'" + a + "' is not of the form KEY=VALUE");
+    const std::string key = a.substr(0, eq);
+    bool used = false;
+    for (StyleParams& p : params)
+      if (p.has(key)) p.set(key, a.substr(eq + 1)), used = true;
+    if (!used) params.front().set(key, a.substr(eq + 1));  // throws, naming the known keys
+  }
+  std::vector<std::unique_ptr<Renderer>> parts;
+  for (size_t i = 0; i < names.size(); ++i) {
+    parts.push_back(find_style(names[i]).create());
+    parts.back()->configure(params[i]);
+  }
+  if (parts.size() == 1) return std::move(parts.front());
+  return std::make_unique<CompositeRenderer>(std::move(parts), std::move(params));
+}
+
+std::string default_backdrop(const std::string& name) { return find_style(split_parts(name).front()).default_backdrop; }
 
 }  // namespace inkwire

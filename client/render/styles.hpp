@@ -24,6 +24,11 @@ const std::vector<StyleInfo>& styles();
 const StyleInfo& find_style(const std::string& name);
 
 // Makes a renderer for `name`, configured with defaults overridden by `assignments` (KEY=VALUE).
+// "a+b" combines styles drawn in turn over one backdrop (e.g. "hatching+sketch-charcoal"); an
+// assignment goes to every part that has the key, and one no part has is an error.
 std::unique_ptr<Renderer> make_renderer(const std::string& name, const std::vector<std::string>& assignments = {});
+
+// The backdrop a style (or the first style of a combination) is drawn over by default.
+std::string default_backdrop(const std::string& name);
 
 }  // namespace inkwire

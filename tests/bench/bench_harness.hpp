@@ -71,5 +71,6 @@ const std::vector<std::pair<std::string, Suite>>& suites();
 std::vector<Result> run_default_suite(Harness& harness);
 std::vector<Result> run_comic_suite(Harness& harness);
 std::vector<Result> run_sketch_suite(Harness& harness);
+std::vector<Result> run_hatching_suite(Harness& harness);
 
 }  // namespace inkwire::bench
