@@ -92,7 +92,7 @@ Texture Texture::stack_from_images(const std::vector<Image>& layers, GLenum targ
   glTexImage3D(target, 0, GL_RGBA8, w, h, GLsizei(layers.size()), 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
   const GLint wrap = options.repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
   glTexParameteri(target, GL_TEXTURE_WRAP_S, wrap);
-  glTexParameteri(target, GL_TEXTURE_WRAP_T, wrap);
+  glTexParameteri(target, GL_TEXTURE_WRAP_T, options.clamp_t ? GL_CLAMP_TO_EDGE : wrap);
   if (target == GL_TEXTURE_3D) glTexParameteri(target, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);  // tone does not wrap
   glTexParameteri(target, GL_TEXTURE_MAG_FILTER, options.linear ? GL_LINEAR : GL_NEAREST);
   glTexParameteri(target, GL_TEXTURE_MIN_FILTER, options.mipmaps ? GL_LINEAR_MIPMAP_LINEAR : (options.linear ? GL_LINEAR : GL_NEAREST));

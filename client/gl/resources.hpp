@@ -81,6 +81,7 @@ class VertexArray : public Handle<delete_vertex_array> {
 
 struct TextureOptions {
   bool repeat = true;
+  bool clamp_t = false;  // clamp across t even when repeating along s (stroke strips)
   bool mipmaps = true;
   bool linear = true;
 };

@@ -49,7 +49,8 @@ void TexturedSketcher::prepare(const SceneObject& object) {
   object_ = &object;
   edges_.prepare(object);
   if (new_object || !mesh_) mesh_ = std::make_unique<GpuMesh>(object);
-  if (!textures_) textures_ = std::make_unique<Texture>(Texture::stack_from_images(make_stroke_textures(medium_, variants_), GL_TEXTURE_2D_ARRAY));
+  if (!textures_) textures_ = std::make_unique<Texture>(Texture::stack_from_images(make_stroke_textures(medium_, variants_), GL_TEXTURE_2D_ARRAY,
+                                                                                  {.repeat = true, .clamp_t = true, .mipmaps = true, .linear = true}));
   const float diagonal = object.topology.bounds.diagonal();
   min_width_ = min_width_ratio_ * diagonal;
   max_width_ = max_width_ratio_ * diagonal;
