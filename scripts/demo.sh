@@ -15,6 +15,7 @@ meshes="$here/build/packaged-data/data/meshes"
 # Packaged models: a textured duck (assimp-testmodels) and a closed cow (libcgal-demo).
 models=("duck:/usr/share/assimp/models/Collada/duck.dae" "cow:$meshes/cow.off")
 mapfile -t styles < <("$bin/inkwire-render" --style list | awk '/^[^ ]/ {print $1}')
+styles+=("hatching+sketch-pencil")  # styles also combine
 font=/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf
 mkdir -p "$out/styles"
 

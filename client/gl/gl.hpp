@@ -42,6 +42,8 @@
   X(PFNGLPIXELSTOREIPROC, glPixelStorei)                                     \
   X(PFNGLDRAWARRAYSPROC, glDrawArrays)                                       \
   X(PFNGLDRAWELEMENTSPROC, glDrawElements)                                   \
+  X(PFNGLDRAWARRAYSINSTANCEDBASEINSTANCEPROC, glDrawArraysInstancedBaseInstance) \
+  X(PFNGLVERTEXATTRIBDIVISORPROC, glVertexAttribDivisor)                     \
   X(PFNGLGENBUFFERSPROC, glGenBuffers)                                       \
   X(PFNGLDELETEBUFFERSPROC, glDeleteBuffers)                                 \
   X(PFNGLBINDBUFFERPROC, glBindBuffer)                                       \

@@ -5,6 +5,7 @@
 #include "client/render/hatching/hatching_renderer.hpp"
 #include "client/render/hidden_line_renderer.hpp"
 #include "client/render/sketch/recursive_sketcher.hpp"
+#include "client/render/sketch/segment_sketcher.hpp"
 #include "client/render/sketch/textured_sketcher.hpp"
 #include "common/error.hpp"
 
@@ -22,6 +23,8 @@ const std::vector<StyleInfo>& styles() {
        [] { return ComicRenderer::params(true); }, [] { return std::make_unique<ComicRenderer>(true); }},
       {"sketch-recursive", "silhouettes and creases drawn 1-4 times as wobbling hand-drawn lines that boil at 12 Hz", "paper",
        &RecursiveSketcher::params, [] { return std::make_unique<RecursiveSketcher>(); }},
+      {"sketch-segments", "every outline edge drawn with one of a few pre-made sketchy lines, chosen anew 12 times a second",
+       "paper", &SegmentSketcher::params, [] { return std::make_unique<SegmentSketcher>(); }},
       {"sketch-pencil", "graphite strokes with paper grain along every outline edge, fading in and out", "paper",
        [] { return TexturedSketcher::params(Medium::Pencil); }, [] { return std::make_unique<TexturedSketcher>(Medium::Pencil); }},
       {"sketch-charcoal", "broad, crumbling charcoal strokes along every outline edge, fading in and out", "paper",

@@ -8,7 +8,7 @@
 namespace inkwire::bench {
 
 std::vector<Result> run_sketch_suite(Harness& harness) {
-  const std::vector<std::string> sketchers = {"sketch-recursive", "sketch-pencil", "sketch-charcoal", "sketch-chalk"};
+  const std::vector<std::string> sketchers = {"sketch-recursive", "sketch-segments", "sketch-pencil", "sketch-charcoal", "sketch-chalk"};
   const int frames = harness.options().frames;
   std::vector<Result> results;
   for (BenchObject& object : harness.lod_series()) {

@@ -99,7 +99,7 @@ TEST_P(SketchStyleGLTest, MatchesGolden) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EverySketcher, SketchStyleGLTest,
-                         ::testing::Values("sketch-recursive", "sketch-pencil", "sketch-charcoal", "sketch-chalk"),
+                         ::testing::Values("sketch-recursive", "sketch-segments", "sketch-pencil", "sketch-charcoal", "sketch-chalk"),
                          [](const auto& info) {
                            std::string n = info.param;
                            std::replace(n.begin(), n.end(), '-', '_');

@@ -8,6 +8,7 @@
 
 #include "client/render/sketch/importance.hpp"
 #include "client/render/sketch/perturb.hpp"
+#include "client/render/sketch/segment_sketcher.hpp"
 #include "client/render/sketch/sketch_edges.hpp"
 #include "common/error.hpp"
 #include "common/mesh_import.hpp"
@@ -148,4 +149,27 @@ TEST(SketchTest, WholeStrokesWobbleWithinTheirAmplitude) {
     }
   }
   EXPECT_GT(largest, 0.25f * amplitude) << "a whole stroke should visibly wobble, not just each tiny edge";
+}
+
+TEST(SketchTest, UnitLinesWobbleAlikePerUnitLengthInEveryBin) {
+  // S4: lines made once at load time, in length bins. Mapped onto an edge of its bin's typical
+  // length, each line's sideways wobble (y times the length) stays within the absolute
+  // amplitude a stroke of that length gets, so short and long edges look alike.
+  const float diagonal = 10.0f;
+  const PerturbOptions o{.max_segment = 0.2f, .amplitude_ratio = 0.05f, .amplitude_clamp = 0.06f};
+  const UnitLines lines = make_unit_lines(diagonal, o, 8);
+  ASSERT_EQ(lines.bin_upper.size(), lines.points.size());
+  const float typical[] = {0.003f, 0.009f, 0.025f, 0.065f, 0.15f};
+  for (size_t b = 0; b < lines.points.size(); ++b) {
+    SCOPED_TRACE(b);
+    const float length = typical[b] * diagonal;
+    EXPECT_EQ(lines.bin_of(length), int(b));
+    const float amplitude = perturb_amplitude(length, o);
+    for (int l = 0; l < lines.lines; ++l) {
+      const glm::vec2* p = &lines.data[size_t(lines.first[b] + l * lines.points[b])];
+      EXPECT_NEAR(p[0].x, 0.0f, 0.3f);
+      EXPECT_NEAR(p[lines.points[b] - 1].x, 1.0f, 0.3f);
+      for (int i = 0; i < lines.points[b]; ++i) EXPECT_LE(std::abs(p[i].y) * length, amplitude + 1e-5f);
+    }
+  }
 }

@@ -19,7 +19,8 @@ HatchingRenderer::HatchingRenderer()
 std::vector<ParamSpec> HatchingRenderer::params() {
   return {
       choice_param("variant", "3d-texture", {"3d-texture", "multipass"}, "one pass over a 3D tone texture, or one pass per tone"),
-      int_param("tones", "16", 2, 64, "tone layers"),
+      int_param("tones", "16", 2, 64, "3d-texture: tone layers along the depth axis"),
+      int_param("passes", "4", 1, 32, "multipass: densities, one pass each"),
       float_param("angle", "0", -180, 180, "rotation of the hatching, degrees"),
       float_param("scale", "96", 8, 1024, "size of one hatch tile on screen, pixels"),
       float_param("lightness", "0.85", -1, 1, "N.L above which the surface stays paper-white"),
@@ -29,10 +30,11 @@ std::vector<ParamSpec> HatchingRenderer::params() {
 
 void HatchingRenderer::configure(const StyleParams& p) {
   multipass_ = p.get_text("variant") == "multipass";
-  const int tones = p.get_int("tones");
+  const int tones = p.get_int("tones"), passes = p.get_int("passes");
   const float lightness = p.get_float("lightness");
-  if (tones != tone_layers_ || lightness != lightness_) volume_.reset();  // rebuilt on the next draw
+  if (tones != tone_layers_ || passes != passes_wanted_ || lightness != lightness_) volume_.reset();  // rebuilt on the next draw
   tone_layers_ = tones;
+  passes_wanted_ = passes;
   lightness_ = lightness;
   angle_ = glm::radians(p.get_float("angle"));
   scale_px_ = p.get_float("scale");
@@ -45,10 +47,13 @@ void HatchingRenderer::prepare(const SceneObject& object) {
 }
 
 void HatchingRenderer::build_textures() {
+  // No mipmaps for the 3D texture: they would halve the tone axis too, averaging tones. The
+  // multipass layers are a separate, coarser set (bare paper plus one layer per pass), made
+  // from the same stroke list, so they nest the same way.
   const HatchTones tones = make_hatch_tones(tone_layers_);
-  // No mipmaps for the 3D texture: they would halve the tone axis too, averaging tones.
   volume_ = std::make_unique<Texture>(Texture::stack_from_images(tones.layers, GL_TEXTURE_3D, {.repeat = true, .mipmaps = false, .linear = true}));
-  layers_ = std::make_unique<Texture>(Texture::stack_from_images(tones.layers, GL_TEXTURE_2D_ARRAY, {.repeat = true, .mipmaps = true, .linear = true}));
+  const HatchTones densities = make_hatch_tones(passes_wanted_ + 1);
+  layers_ = std::make_unique<Texture>(Texture::stack_from_images(densities.layers, GL_TEXTURE_2D_ARRAY, {.repeat = true, .mipmaps = true, .linear = true}));
   // Tone by N.L: paper above `lightness`, darkening to full tone facing away from the light.
   std::vector<glm::u8vec4> lookup(256);
   for (size_t i = 0; i < lookup.size(); ++i) {
@@ -86,12 +91,12 @@ void HatchingRenderer::draw(const FrameState& frame) {
   mesh_->bind();
   if (multipass_) {
     layers_->bind(0);
-    program.set("layer_count", float(tone_layers_));
-    for (int layer = 1; layer < tone_layers_; ++layer) {  // layer 0 is bare paper
+    program.set("layer_count", float(passes_wanted_ + 1));
+    for (int layer = 1; layer <= passes_wanted_; ++layer) {  // layer 0 is bare paper
       program.set("layer", float(layer));
       mesh_->draw_all();
     }
-    passes_ = size_t(tone_layers_ - 1);
+    passes_ = size_t(passes_wanted_);
   } else {
     volume_->bind(0);
     mesh_->draw_all();

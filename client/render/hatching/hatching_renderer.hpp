@@ -34,7 +34,7 @@ class HatchingRenderer final : public Renderer {
   std::unique_ptr<gl::Texture> volume_, layers_, tone_lookup_;
 
   bool multipass_ = false;
-  int tone_layers_ = 16;
+  int tone_layers_ = 16, passes_wanted_ = 4;
   float angle_ = 0.0f, scale_px_ = 96.0f, lightness_ = 0.85f, strength_ = 0.9f;
   size_t passes_ = 0;
 };

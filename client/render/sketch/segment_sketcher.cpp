@@ -1,0 +1,173 @@
+#include "client/render/sketch/segment_sketcher.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "common/error.hpp"
+
+namespace inkwire {
+
+using namespace gl;
+
+namespace {
+
+// `n` points evenly spaced by arc length along a polyline.
+std::vector<glm::vec3> resample(const std::vector<glm::vec3>& line, int n) {
+  std::vector<float> at(line.size(), 0.0f);
+  for (size_t i = 1; i < line.size(); ++i) at[i] = at[i - 1] + glm::length(line[i] - line[i - 1]);
+  std::vector<glm::vec3> out;
+  size_t seg = 0;
+  for (int k = 0; k < n; ++k) {
+    const float target = at.back() * float(k) / float(n - 1);
+    while (seg + 2 < line.size() && at[seg + 1] < target) ++seg;
+    const float span = std::max(at[seg + 1] - at[seg], 1e-12f);
+    out.push_back(glm::mix(line[seg], line[seg + 1], std::clamp((target - at[seg]) / span, 0.0f, 1.0f)));
+  }
+  return out;
+}
+
+}  // namespace
+
+int UnitLines::bin_of(float length) const {
+  for (size_t b = 0; b + 1 < bin_upper.size(); ++b)
+    if (length < bin_upper[b]) return int(b);
+  return int(bin_upper.size()) - 1;
+}
+
+UnitLines make_unit_lines(float diagonal, const PerturbOptions& o, int lines, uint64_t seed) {
+  if (lines < 1 || lines > 64 || diagonal <= 0.0f) throw Error("unit lines: bad sizes");
+  UnitLines u;
+  u.lines = lines;
+  // Bins by edge length (fractions of the diagonal), each with a representative length.
+  const float upper[] = {0.005f, 0.015f, 0.04f, 0.1f, 1e30f};
+  const float typical[] = {0.003f, 0.009f, 0.025f, 0.065f, 0.15f};
+  for (int b = 0; b < 5; ++b) {
+    u.bin_upper.push_back(upper[b] * diagonal);
+    const float length = typical[b] * diagonal;
+    // In units of the edge's length: the same absolute wiggle as a stroke of this length.
+    PerturbOptions unit;
+    unit.amplitude_ratio = perturb_amplitude(length, o) / length;
+    unit.amplitude_clamp = unit.amplitude_ratio;
+    unit.max_segment = std::clamp(o.max_segment / length, 1.0f / 32.0f, 1.0f);
+    const int points = int(std::ceil(1.0f / unit.max_segment)) + 1;
+    u.points.push_back(points);
+    u.first.push_back(int(u.data.size()));
+    for (int l = 0; l < lines; ++l) {
+      StrokeRandom random(stroke_seed(seed, uint64_t(b), uint64_t(l)));
+      std::vector<glm::vec3> line;
+      perturb_stroke({{0, 0, 0}, {1, 0, 0}}, {{0, 1, 0}, {0, 1, 0}}, unit, random, line);
+      for (const glm::vec3& p : resample(line, points)) u.data.push_back({p.x, p.y});
+    }
+  }
+  return u;
+}
+
+SegmentSketcher::SegmentSketcher() : program_(Program::from_files({"sketch/segments.vert", "sketch/strokes.frag"})) {}
+
+std::vector<ParamSpec> SegmentSketcher::params() {
+  std::vector<ParamSpec> specs = SketchEdgeSource::params(false);
+  const std::vector<ParamSpec> own = {
+      float_param("boil_hz", "12", 0, 120, "how often per second of animation each edge picks another line (0 = never)"),
+      float_param("wobble", "0.04", 0, 0.5, "sideways wobble as a fraction of the edge's length..."),
+      float_param("wobble_clamp", "0.006", 0, 0.1, "...at most this fraction of the bounding-box diagonal"),
+      float_param("segment", "0.02", 0.001, 1, "wobble detail: longest straight piece, fraction of the diagonal"),
+      float_param("line_width", "1.6", 0.5, 8, "stroke width in pixels"),
+      colour_param("ink", "#26262a", "stroke colour"),
+      float_param("ink_opacity", "0.8", 0, 1, "stroke opacity"),
+  };
+  specs.insert(specs.end(), own.begin(), own.end());
+  return specs;
+}
+
+void SegmentSketcher::configure(const StyleParams& p) {
+  edges_.configure(p);
+  boil_hz_ = p.get_float("boil_hz");
+  wobble_ = p.get_float("wobble");
+  wobble_clamp_ratio_ = p.get_float("wobble_clamp");
+  segment_ratio_ = p.get_float("segment");
+  line_width_ = p.get_float("line_width");
+  ink_ = glm::vec4(p.get_colour("ink"), p.get_float("ink_opacity"));
+  if (object_) prepare(*object_);
+}
+
+void SegmentSketcher::prepare(const SceneObject& object) {
+  const bool new_object = object_ != &object;
+  object_ = &object;
+  edges_.prepare(object);
+  if (new_object || !mesh_) mesh_ = std::make_unique<GpuMesh>(object);
+  const float diagonal = object.topology.bounds.diagonal();
+  PerturbOptions o;
+  o.amplitude_ratio = wobble_;
+  o.amplitude_clamp = wobble_clamp_ratio_ * diagonal;
+  o.max_segment = segment_ratio_ * diagonal;
+  unit_lines_ = make_unit_lines(diagonal, o);
+  unit_buffer_ = Buffer::create(unit_lines_.data);
+  by_bin_.assign(unit_lines_.points.size(), {});
+  instances_ = Buffer::create(0, nullptr, GL_STREAM_DRAW);
+  vao_ = VertexArray::create();
+  vao_.attribute(0, instances_, 3, sizeof(Instance), offsetof(Instance, start));
+  vao_.attribute(1, instances_, 3, sizeof(Instance), offsetof(Instance, end));
+  vao_.attribute(2, instances_, 4, sizeof(Instance), offsetof(Instance, side_and_line));
+  vao_.attribute(3, instances_, 1, sizeof(Instance), offsetof(Instance, opacity));
+  for (GLuint i = 0; i < 4; ++i) glVertexAttribDivisor(i, 1);  // one edge per instance
+  glBindVertexArray(0);
+}
+
+void SegmentSketcher::draw(const FrameState& frame) {
+  if (!mesh_) throw Error("SegmentSketcher::draw(): prepare() was not called");
+  const Mesh& mesh = object_->mesh;
+  const glm::vec3 eye = frame.eye_in_object_space();
+  const long step = boil_hz_ > 0.0f ? long(std::floor(frame.time_seconds * boil_hz_)) : 0;
+  for (auto& bin : by_bin_) bin.clear();
+  for (const DrawnEdge& d : edges_.choose(eye)) {
+    const Edge& e = object_->topology.edges[d.edge];
+    const glm::vec3 a = mesh.positions[e.v0], b = mesh.positions[e.v1];
+    glm::vec3 side = glm::cross(b - a, 0.5f * (a + b) - eye);
+    const float l = glm::length(side);
+    if (l <= 1e-12f) continue;
+    // A pseudo-random line of the edge's bin, changing with time.
+    const float line = float(stroke_seed(d.edge, uint64_t(step), 91) % uint64_t(unit_lines_.lines));
+    by_bin_[size_t(unit_lines_.bin_of(e.length))].push_back({a, b, glm::vec4(side / l, line), d.opacity});
+  }
+  packed_.clear();
+  std::vector<size_t> base(by_bin_.size());
+  for (size_t bin = 0; bin < by_bin_.size(); ++bin) {
+    base[bin] = packed_.size();
+    packed_.insert(packed_.end(), by_bin_[bin].begin(), by_bin_[bin].end());
+  }
+  instances_.upload(packed_.size() * sizeof(Instance), packed_.data());
+
+  const glm::mat4 mvp = frame.model_view_projection();
+  hlr_.lay_depth(*mesh_, mvp);
+  HiddenLineRemoval::begin_lines();
+  glEnable(GL_BLEND);
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  program_.use();
+  program_.set("model_view_projection", mvp);
+  program_.set("depth_bias", depth_bias_);
+  program_.set("ink", ink_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, unit_buffer_.id());
+  glLineWidth(line_width_);
+  vao_.bind();
+  for (size_t bin = 0; bin < by_bin_.size(); ++bin) {
+    if (by_bin_[bin].empty()) continue;
+    const int points = unit_lines_.points[bin];
+    program_.set("points_per_line", points);
+    program_.set("first_point", unit_lines_.first[bin]);
+    glDrawArraysInstancedBaseInstance(GL_LINES, 0, GLsizei(2 * (points - 1)), GLsizei(by_bin_[bin].size()), GLuint(base[bin]));
+  }
+  glLineWidth(1.0f);
+  glDisable(GL_BLEND);
+  HiddenLineRemoval::end_lines();
+}
+
+std::map<std::string, double> SegmentSketcher::counters() const {
+  if (!object_) return {};
+  return {{"edges_total", double(object_->topology.edges.size())},
+          {"edges_candidates", double(edges_.candidate_count())},
+          {"edges_drawn", double(edges_.drawn().size())}};
+}
+
+}  // namespace inkwire
