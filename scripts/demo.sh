@@ -25,10 +25,15 @@ for entry in "${models[@]}"; do
   for style in "${styles[@]}"; do
     tile="$out/styles/$model-$style.png"
     "$bin/inkwire-render" --mesh "$file" --style "$style" --view 35,15,1.3 --size 400x320 --out "$tile"
-    tiles+=("$tile" --text:x=12:y=26:size=18:color=0.15,0.15,0.15:font=$font "$model / $style")
+    tiles+=("$tile" --text:x=12:y=26:size=18:color=1,1,1:shadow=2:font=$font "$model / $style")
   done
 done
-oiiotool "${tiles[@]}" --mosaic:pad=6 "${#styles[@]}x${#models[@]}" --ch R,G,B -o "$out/contact-sheet.png"
+# Six tiles to a row; blank paper fills the last row.
+count=$(( ${#styles[@]} * ${#models[@]} ))
+columns=6
+rows=$(( (count + columns - 1) / columns ))
+for ((i = count; i < columns * rows; ++i)); do tiles+=(--pattern constant:color=0.96,0.94,0.9,1 400x320 4); done
+oiiotool "${tiles[@]}" --mosaic:pad=4 "${columns}x${rows}" --ch R,G,B -o "$out/contact-sheet.png"
 
 # Every shipped comic shade map, on the textured duck.
 mapfile -t shade_maps < <("$bin/inkwire-render" --style list | awk '$1 == "shade_map" {sub(/,$/, "", $3); print $3}' | head -1 | tr '|' '\n')
@@ -37,7 +42,7 @@ for map in "${shade_maps[@]}"; do
   tile="$out/styles/duck-comic-extended-$map.png"
   "$bin/inkwire-render" --mesh /usr/share/assimp/models/Collada/duck.dae --style comic-extended --set "shade_map=$map" \
     --view 35,15,1.3 --size 320x256 --out "$tile"
-  maps+=("$tile" --text:x=10:y=22:size=16:color=0.15,0.15,0.15:font=$font "$map")
+  maps+=("$tile" --text:x=10:y=22:size=16:color=1,1,1:shadow=2:font=$font "$map")
 done
 oiiotool "${maps[@]}" --mosaic:pad=2 "4x$(( (${#shade_maps[@]} + 3) / 4 ))" --ch R,G,B -o "$out/shade-maps.png"
 
