@@ -26,14 +26,20 @@ void HiddenLineRemoval::lay_depth(const GpuMesh& mesh, const glm::mat4& mvp) con
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
-void HiddenLineRemoval::begin_lines() {
+void HiddenLineRemoval::begin_lines(bool translucent) {
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LEQUAL);
   glDepthMask(GL_FALSE);
   glDisable(GL_CULL_FACE);
+  if (translucent) {
+    glEnable(GL_BLEND);
+    // Alpha accumulates too, so strokes over a transparent backdrop stay visible.
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  }
 }
 
 void HiddenLineRemoval::end_lines() {
+  glDisable(GL_BLEND);
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_LESS);
 }

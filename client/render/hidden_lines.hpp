@@ -15,9 +15,10 @@ class HiddenLineRemoval {
   // Pass 1 for one object. The depth is pushed back slightly (polygon offset) so lines lying on
   // the surface win the less-or-equal test instead of stitching with it.
   void lay_depth(const GpuMesh& mesh, const glm::mat4& model_view_projection) const;
-  // Pass 2 state: colour writes on, depth test less-or-equal, depth writes off.
-  static void begin_lines();
-  // Back to the usual state (depth writes on, depth test less).
+  // Pass 2 state: colour writes on, depth test less-or-equal, depth writes off; with
+  // `translucent`, ink blends over what is there (strokes with alpha, faded edges, hatching).
+  static void begin_lines(bool translucent = false);
+  // Back to the usual state (depth writes on, depth test less, no blending).
   static void end_lines();
 
  private:

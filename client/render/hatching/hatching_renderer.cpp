@@ -70,13 +70,9 @@ void HatchingRenderer::draw(const FrameState& frame) {
   if (!volume_) build_textures();
   const glm::mat4 mvp = frame.model_view_projection();
   hlr_.lay_depth(*mesh_, mvp);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LEQUAL);
-  glDepthMask(GL_FALSE);
+  HiddenLineRemoval::begin_lines(/*translucent=*/true);  // only the visible surface is hatched
   glEnable(GL_CULL_FACE);
   glCullFace(GL_BACK);
-  glEnable(GL_BLEND);
-  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   const float c = std::cos(angle_) / scale_px_, s = std::sin(angle_) / scale_px_;
   const glm::mat2 screen_to_tile(c, s, -s, c);
   const Program& program = multipass_ ? layer_program_ : volume_program_;
@@ -102,9 +98,7 @@ void HatchingRenderer::draw(const FrameState& frame) {
     mesh_->draw_all();
     passes_ = 1;
   }
-  glDisable(GL_BLEND);
-  glDepthMask(GL_TRUE);
-  glDepthFunc(GL_LESS);
+  HiddenLineRemoval::end_lines();
 }
 
 std::map<std::string, double> HatchingRenderer::counters() const { return {{"passes", double(passes_)}}; }

@@ -20,17 +20,12 @@ std::vector<ParamSpec> RecursiveSketcher::params() {
       int_param("repetitions", "3", 1, 4, "strokes per edge at most (fewer when many edges are drawn)"),
       int_param("stroke_budget", "900", 1, 1000000, "strokes per frame the repetitions aim for"),
       float_param("min_stroke", "0.03", 0, 1, "leave out joined lines shorter than this fraction of the diagonal (specks)"),
-      float_param("boil_hz", "12", 0, 120, "how often per second of animation the wobble changes (0 = never)"),
       int_param("search_every", "3", 1, 60, "under rotation, find the edges again every this many frames"),
-      float_param("wobble", "0.04", 0, 0.5, "sideways wobble as a fraction of the edge's length"),
-      float_param("wobble_clamp", "0.006", 0, 0.1, "...at most this fraction of the bounding-box diagonal"),
-      float_param("segment", "0.02", 0.001, 1, "wobble detail: longest straight piece, fraction of the diagonal"),
       float_param("stroke_length", "0.3", 0.01, 10, "longest stroke, fraction of the diagonal (longer outlines take several)"),
-      float_param("line_width", "1.6", 0.5, 8, "stroke width in pixels"),
-      colour_param("ink", "#26262a", "stroke colour"),
-      float_param("ink_opacity", "0.8", 0, 1, "stroke opacity (overlapping repetitions darken)"),
   };
   specs.insert(specs.end(), own.begin(), own.end());
+  const std::vector<ParamSpec> ink = InkLineStyle::params();
+  specs.insert(specs.end(), ink.begin(), ink.end());
   return specs;
 }
 
@@ -38,15 +33,10 @@ void RecursiveSketcher::configure(const StyleParams& p) {
   edges_.configure(p);
   max_repetitions_ = p.get_int("repetitions");
   stroke_budget_ = p.get_int("stroke_budget");
-  boil_hz_ = p.get_float("boil_hz");
   search_every_ = p.get_int("search_every");
-  perturb_.amplitude_ratio = p.get_float("wobble");
-  amplitude_clamp_ratio_ = p.get_float("wobble_clamp");
-  max_segment_ratio_ = p.get_float("segment");
   max_stroke_ratio_ = p.get_float("stroke_length");
   min_stroke_ratio_ = p.get_float("min_stroke");
-  line_width_ = p.get_float("line_width");
-  ink_ = glm::vec4(p.get_colour("ink"), p.get_float("ink_opacity"));
+  ink_.configure(p);
   if (object_) prepare(*object_);  // thresholds depend on the object's size
 }
 
@@ -56,8 +46,7 @@ void RecursiveSketcher::prepare(const SceneObject& object) {
   mesh_object_ = &object;
   edges_.prepare(object);
   const float diagonal = object.topology.bounds.diagonal();
-  perturb_.amplitude_clamp = amplitude_clamp_ratio_ * diagonal;
-  perturb_.max_segment = max_segment_ratio_ * diagonal;
+  perturb_ = ink_.perturb_for(diagonal);
   max_stroke_ = max_stroke_ratio_ * diagonal;
   min_stroke_ = min_stroke_ratio_ * diagonal;
   for (StrokeSet& set : sets_) {
@@ -153,7 +142,7 @@ void RecursiveSketcher::draw(const FrameState& frame) {
   // Boil: one step per 1/boil_hz seconds; the sets are replayed in an order reshuffled every
   // cycle (deterministically, so recordings repeat).
   // Floor division, so times before zero (warm-up frames, scrubbing back) still pick a set.
-  const long step = boil_hz_ > 0.0f ? long(std::floor(frame.time_seconds * boil_hz_)) : 0;
+  const long step = ink_.boil_step(frame.time_seconds);
   const long cycle = step >= 0 ? step / kSets : -((-step + kSets - 1) / kSets);
   const long slot = step - cycle * kSets;  // 0..kSets-1
   std::array<int, kSets> order;
@@ -165,18 +154,15 @@ void RecursiveSketcher::draw(const FrameState& frame) {
 
   const glm::mat4 mvp = frame.model_view_projection();
   hlr_.lay_depth(*mesh_, mvp);
-  HiddenLineRemoval::begin_lines();
-  glEnable(GL_BLEND);
-  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  HiddenLineRemoval::begin_lines(/*translucent=*/true);  // depth test on, writes off
   strokes_.use();
   strokes_.set("model_view_projection", mvp);
   strokes_.set("depth_bias", depth_bias_);
-  strokes_.set("ink", ink_);
-  glLineWidth(line_width_);
+  strokes_.set("ink", ink_.ink);
+  glLineWidth(ink_.line_width);
   sets_[size_t(set)].vao.bind();
   glDrawArrays(GL_LINES, 0, GLsizei(sets_[size_t(set)].vertices));
   glLineWidth(1.0f);
-  glDisable(GL_BLEND);
   HiddenLineRemoval::end_lines();
 }
 

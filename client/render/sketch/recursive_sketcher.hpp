@@ -19,6 +19,7 @@
 #include "client/render/hidden_lines.hpp"
 #include "client/render/renderer.hpp"
 #include "client/render/sketch/importance.hpp"
+#include "client/render/sketch/ink_lines.hpp"
 #include "client/render/sketch/perturb.hpp"
 #include "client/render/sketch/sketch_edges.hpp"
 #include "common/edge_chains.hpp"
@@ -72,13 +73,12 @@ class RecursiveSketcher final : public Renderer {
   long generation_ = 0, frames_since_search_ = 1 << 30;  // first frame always searches
 
   // Style.
-  PerturbOptions perturb_;
-  float line_width_ = 1.6f, boil_hz_ = 12.0f, depth_bias_ = 0.002f;
-  glm::vec4 ink_{0.15f, 0.15f, 0.16f, 0.8f};
+  InkLineStyle ink_;
+  PerturbOptions perturb_;  // ink_ resolved for the object's size
+  float depth_bias_ = 0.002f;
   int max_repetitions_ = 3, stroke_budget_ = 1500, search_every_ = 3;
   // Relative to the bounding-box diagonal, resolved at prepare().
-  float max_segment_ratio_ = 0.02f, amplitude_clamp_ratio_ = 0.006f, max_stroke_ratio_ = 0.3f;
-  float max_stroke_ = 1.0f, min_stroke_ratio_ = 0.03f, min_stroke_ = 0.0f;
+  float max_stroke_ratio_ = 0.3f, max_stroke_ = 1.0f, min_stroke_ratio_ = 0.03f, min_stroke_ = 0.0f;
 };
 
 }  // namespace inkwire

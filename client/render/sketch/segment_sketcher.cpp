@@ -68,27 +68,14 @@ SegmentSketcher::SegmentSketcher() : program_(Program::from_files({"sketch/segme
 
 std::vector<ParamSpec> SegmentSketcher::params() {
   std::vector<ParamSpec> specs = SketchEdgeSource::params(false);
-  const std::vector<ParamSpec> own = {
-      float_param("boil_hz", "12", 0, 120, "how often per second of animation each edge picks another line (0 = never)"),
-      float_param("wobble", "0.04", 0, 0.5, "sideways wobble as a fraction of the edge's length..."),
-      float_param("wobble_clamp", "0.006", 0, 0.1, "...at most this fraction of the bounding-box diagonal"),
-      float_param("segment", "0.02", 0.001, 1, "wobble detail: longest straight piece, fraction of the diagonal"),
-      float_param("line_width", "1.6", 0.5, 8, "stroke width in pixels"),
-      colour_param("ink", "#26262a", "stroke colour"),
-      float_param("ink_opacity", "0.8", 0, 1, "stroke opacity"),
-  };
+  const std::vector<ParamSpec> own = InkLineStyle::params();
   specs.insert(specs.end(), own.begin(), own.end());
   return specs;
 }
 
 void SegmentSketcher::configure(const StyleParams& p) {
   edges_.configure(p);
-  boil_hz_ = p.get_float("boil_hz");
-  wobble_ = p.get_float("wobble");
-  wobble_clamp_ratio_ = p.get_float("wobble_clamp");
-  segment_ratio_ = p.get_float("segment");
-  line_width_ = p.get_float("line_width");
-  ink_ = glm::vec4(p.get_colour("ink"), p.get_float("ink_opacity"));
+  ink_.configure(p);
   if (object_) prepare(*object_);
 }
 
@@ -98,11 +85,7 @@ void SegmentSketcher::prepare(const SceneObject& object) {
   edges_.prepare(object);
   if (new_object || !mesh_) mesh_ = std::make_unique<GpuMesh>(object);
   const float diagonal = object.topology.bounds.diagonal();
-  PerturbOptions o;
-  o.amplitude_ratio = wobble_;
-  o.amplitude_clamp = wobble_clamp_ratio_ * diagonal;
-  o.max_segment = segment_ratio_ * diagonal;
-  unit_lines_ = make_unit_lines(diagonal, o);
+  unit_lines_ = make_unit_lines(diagonal, ink_.perturb_for(diagonal));
   unit_buffer_ = Buffer::create(unit_lines_.data);
   by_bin_.assign(unit_lines_.points.size(), {});
   instances_ = Buffer::create(0, nullptr, GL_STREAM_DRAW);
@@ -119,7 +102,7 @@ void SegmentSketcher::draw(const FrameState& frame) {
   if (!mesh_) throw Error("SegmentSketcher::draw(): prepare() was not called");
   const Mesh& mesh = object_->mesh;
   const glm::vec3 eye = frame.eye_in_object_space();
-  const long step = boil_hz_ > 0.0f ? long(std::floor(frame.time_seconds * boil_hz_)) : 0;
+  const long step = ink_.boil_step(frame.time_seconds);
   for (auto& bin : by_bin_) bin.clear();
   for (const DrawnEdge& d : edges_.choose(eye)) {
     const Edge& e = object_->topology.edges[d.edge];
@@ -141,15 +124,13 @@ void SegmentSketcher::draw(const FrameState& frame) {
 
   const glm::mat4 mvp = frame.model_view_projection();
   hlr_.lay_depth(*mesh_, mvp);
-  HiddenLineRemoval::begin_lines();
-  glEnable(GL_BLEND);
-  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  HiddenLineRemoval::begin_lines(/*translucent=*/true);  // depth test on, writes off
   program_.use();
   program_.set("model_view_projection", mvp);
   program_.set("depth_bias", depth_bias_);
-  program_.set("ink", ink_);
+  program_.set("ink", ink_.ink);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, unit_buffer_.id());
-  glLineWidth(line_width_);
+  glLineWidth(ink_.line_width);
   vao_.bind();
   for (size_t bin = 0; bin < by_bin_.size(); ++bin) {
     if (by_bin_[bin].empty()) continue;
@@ -159,7 +140,6 @@ void SegmentSketcher::draw(const FrameState& frame) {
     glDrawArraysInstancedBaseInstance(GL_LINES, 0, GLsizei(2 * (points - 1)), GLsizei(by_bin_[bin].size()), GLuint(base[bin]));
   }
   glLineWidth(1.0f);
-  glDisable(GL_BLEND);
   HiddenLineRemoval::end_lines();
 }
 

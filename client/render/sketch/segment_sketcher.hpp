@@ -12,6 +12,7 @@
 #include "client/render/gpu_mesh.hpp"
 #include "client/render/hidden_lines.hpp"
 #include "client/render/renderer.hpp"
+#include "client/render/sketch/ink_lines.hpp"
 #include "client/render/sketch/perturb.hpp"
 #include "client/render/sketch/sketch_edges.hpp"
 
@@ -57,9 +58,8 @@ class SegmentSketcher final : public Renderer {
   std::vector<std::vector<Instance>> by_bin_;
   std::vector<Instance> packed_;
 
-  float boil_hz_ = 12.0f, line_width_ = 1.6f, depth_bias_ = 0.002f;
-  float wobble_ = 0.04f, wobble_clamp_ratio_ = 0.006f, segment_ratio_ = 0.02f;
-  glm::vec4 ink_{0.15f, 0.15f, 0.16f, 0.8f};
+  InkLineStyle ink_;
+  float depth_bias_ = 0.002f;
 };
 
 }  // namespace inkwire

@@ -109,9 +109,7 @@ void TexturedSketcher::draw(const FrameState& frame) {
 
   const glm::mat4 mvp = frame.model_view_projection();
   hlr_.lay_depth(*mesh_, mvp);
-  HiddenLineRemoval::begin_lines();  // depth test on (less-or-equal), depth writes off
-  glEnable(GL_BLEND);
-  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  HiddenLineRemoval::begin_lines(/*translucent=*/true);  // depth test on, writes off
   program_.use();
   program_.set("model_view_projection", mvp);
   program_.set("depth_bias", depth_bias_);
@@ -120,7 +118,6 @@ void TexturedSketcher::draw(const FrameState& frame) {
   textures_->bind(0);
   vao_.bind();
   glDrawElements(GL_TRIANGLES, GLsizei(quads_.size() / 4 * 6), GL_UNSIGNED_INT, nullptr);
-  glDisable(GL_BLEND);
   HiddenLineRemoval::end_lines();
 }
 
