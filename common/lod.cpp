@@ -108,11 +108,11 @@ MeshLevels::MeshLevels(const Mesh& mesh, const Topology& topology, size_t min_fa
   }
 }
 
-const MeshLevel& MeshLevels::pick(float pixels_per_unit, float max_error_pixels) const {
+size_t MeshLevels::pick_index(float pixels_per_unit, float max_error_pixels) const {
   size_t chosen = 0;
   for (size_t i = 1; i < levels_.size(); ++i)
     if (levels_[i].error * pixels_per_unit <= max_error_pixels) chosen = i;
-  return levels_[chosen];
+  return chosen;
 }
 
 }  // namespace inkwire

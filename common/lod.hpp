@@ -31,7 +31,10 @@ class MeshLevels {
   // `min_faces`.
   MeshLevels(const Mesh& mesh, const Topology& topology, size_t min_faces = 400);
   // The coarsest level whose error, at `pixels_per_unit`, is at most `max_error_pixels`.
-  const MeshLevel& pick(float pixels_per_unit, float max_error_pixels) const;
+  size_t pick_index(float pixels_per_unit, float max_error_pixels) const;
+  const MeshLevel& pick(float pixels_per_unit, float max_error_pixels) const {
+    return levels_[pick_index(pixels_per_unit, max_error_pixels)];
+  }
   size_t size() const { return levels_.size(); }
   const MeshLevel& operator[](size_t i) const { return levels_[i]; }
 

@@ -127,10 +127,15 @@ void StyleParams::set(const std::string& key, const std::string& value) {
   values_[key] = value;
 }
 
-void StyleParams::set_assignment(const std::string& kv) {
+std::pair<std::string, std::string> split_assignment(const std::string& kv) {
   const auto eq = kv.find('=');
   if (eq == std::string::npos || eq == 0) throw Error("'" + kv + "' is not of the form KEY=VALUE");
-  set(kv.substr(0, eq), kv.substr(eq + 1));
+  return {kv.substr(0, eq), kv.substr(eq + 1)};
+}
+
+void StyleParams::set_assignment(const std::string& kv) {
+  const auto [key, value] = split_assignment(kv);
+  set(key, value);
 }
 
 float StyleParams::get_float(const std::string& key) const {

@@ -2,6 +2,7 @@
 // Named style parameters ("--set KEY=VALUE", style-change messages). Each style declares its
 // parameters with defaults; values are validated when set, so a renderer never sees junk.
 #include <map>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,9 @@ class StyleParams {
   std::vector<ParamSpec> specs_;
   std::map<std::string, std::string> values_;
 };
+
+// Splits "KEY=VALUE". Throws inkwire::Error when there is no '=' or no key.
+std::pair<std::string, std::string> split_assignment(const std::string& key_equals_value);
 
 // "#rrggbb" -> linear-ish 0..1 RGB. Throws inkwire::Error on anything else.
 glm::vec3 parse_hex_colour(const std::string& text);

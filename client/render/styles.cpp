@@ -95,13 +95,11 @@ std::unique_ptr<Renderer> make_renderer(const std::string& name, const std::vect
   std::vector<StyleParams> params;
   for (const std::string& part : names) params.emplace_back(find_style(part).params());
   for (const std::string& a : assignments) {
-    const auto eq = a.find('=');
-    if (eq == std::string::npos || eq == 0) throw Error("'" + a + "' is not of the form KEY=VALUE");
-    const std::string key = a.substr(0, eq);
+    const auto [key, value] = split_assignment(a);
     bool used = false;
     for (StyleParams& p : params)
-      if (p.has(key)) p.set(key, a.substr(eq + 1)), used = true;
-    if (!used) params.front().set(key, a.substr(eq + 1));  // throws, naming the known keys
+      if (p.has(key)) p.set(key, value), used = true;
+    if (!used) params.front().set(key, value);  // throws, naming the known keys
   }
   std::vector<std::unique_ptr<Renderer>> parts;
   for (size_t i = 0; i < names.size(); ++i) {

@@ -231,8 +231,9 @@ void ComicRenderer::draw_edge_outline(const FrameState& frame) {
   const Bounds& bounds = object_->topology.bounds;
   const float nearest = std::max(glm::length(view_.eye - bounds.centre()) - 0.5f * bounds.diagonal(), 1e-3f * bounds.diagonal());
   const float pixels_per_unit = float(frame.viewport.y) / (2.0f * std::tan(glm::radians(frame.camera.fov_y_degrees) * 0.5f) * nearest);
-  const MeshLevel& level = outline_error_ > 0.0f ? outline_levels_->pick(pixels_per_unit, outline_error_) : (*outline_levels_)[0];
-  const std::vector<glm::vec4>& face_colours = level_face_colours_[size_t(&level - &(*outline_levels_)[0])];
+  const size_t level_index = outline_error_ > 0.0f ? outline_levels_->pick_index(pixels_per_unit, outline_error_) : 0;
+  const MeshLevel& level = (*outline_levels_)[level_index];
+  const std::vector<glm::vec4>& face_colours = level_face_colours_[level_index];
   outline_level_faces_ = level.mesh.face_count();
   const Mesh& mesh = level.mesh;
   const Topology& topology = level.topology;

@@ -41,9 +41,9 @@ void RecursiveSketcher::configure(const StyleParams& p) {
 }
 
 void RecursiveSketcher::prepare(const SceneObject& object) {
+  const bool new_object = object_ != &object;
   object_ = &object;
-  if (!mesh_ || mesh_object_ != &object) mesh_ = std::make_unique<GpuMesh>(object);
-  mesh_object_ = &object;
+  if (new_object || !mesh_) mesh_ = std::make_unique<GpuMesh>(object);
   edges_.prepare(object);
   const float diagonal = object.topology.bounds.diagonal();
   perturb_ = ink_.perturb_for(diagonal);
@@ -167,12 +167,9 @@ void RecursiveSketcher::draw(const FrameState& frame) {
 }
 
 std::map<std::string, double> RecursiveSketcher::counters() const {
-  if (!object_) return {};
-  return {{"edges_total", double(object_->topology.edges.size())},
-          {"edges_candidates", double(edges_.candidate_count())},
-          {"edges_drawn", double(edges_.drawn().size())},
-          {"strokes", double(stroke_count_)},
-          {"repetitions", double(repetitions())}};
+  std::map<std::string, double> c = edges_.counters();
+  if (object_) c.insert({{"strokes", double(stroke_count_)}, {"repetitions", double(repetitions())}});
+  return c;
 }
 
 }  // namespace inkwire

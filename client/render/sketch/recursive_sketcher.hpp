@@ -45,7 +45,6 @@ class RecursiveSketcher final : public Renderer {
   HiddenLineRemoval hlr_;
   SketchEdgeSource edges_;
   const SceneObject* object_ = nullptr;
-  const SceneObject* mesh_object_ = nullptr;  // which object mesh_ was uploaded from
   std::unique_ptr<GpuMesh> mesh_;
 
   struct Vertex {

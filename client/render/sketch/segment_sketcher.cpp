@@ -143,11 +143,6 @@ void SegmentSketcher::draw(const FrameState& frame) {
   HiddenLineRemoval::end_lines();
 }
 
-std::map<std::string, double> SegmentSketcher::counters() const {
-  if (!object_) return {};
-  return {{"edges_total", double(object_->topology.edges.size())},
-          {"edges_candidates", double(edges_.candidate_count())},
-          {"edges_drawn", double(edges_.drawn().size())}};
-}
+std::map<std::string, double> SegmentSketcher::counters() const { return edges_.counters(); }
 
 }  // namespace inkwire

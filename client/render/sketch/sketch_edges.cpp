@@ -55,6 +55,13 @@ void SketchEdgeSource::prepare(const SceneObject& object) {
   candidates_ = important_edges(object.topology, importance, flagged);
 }
 
+std::map<std::string, double> SketchEdgeSource::counters() const {
+  if (!object_) return {};
+  return {{"edges_total", double(object_->topology.edges.size())},
+          {"edges_candidates", double(candidates_.size())},
+          {"edges_drawn", double(drawn_.size())}};
+}
+
 const std::vector<DrawnEdge>& SketchEdgeSource::choose(const glm::vec3& eye) {
   choose_sketch_edges(object_->mesh, object_->topology, candidates_, eye, crease_radians_, fade_, drawn_);
   return drawn_;

@@ -9,6 +9,8 @@
 // so "about 5 degrees" means the same for every edge, whatever its other face does.
 #include <cmath>
 #include <cstdint>
+#include <map>
+#include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -58,7 +60,8 @@ class SketchEdgeSource {
   const std::vector<DrawnEdge>& choose(const glm::vec3& eye);
 
   const std::vector<DrawnEdge>& drawn() const { return drawn_; }
-  size_t candidate_count() const { return candidates_.size(); }
+  // edges_total, edges_candidates, edges_drawn: what every sketcher reports.
+  std::map<std::string, double> counters() const;
 
  private:
   const SceneObject* object_ = nullptr;

@@ -121,11 +121,6 @@ void TexturedSketcher::draw(const FrameState& frame) {
   HiddenLineRemoval::end_lines();
 }
 
-std::map<std::string, double> TexturedSketcher::counters() const {
-  if (!object_) return {};
-  return {{"edges_total", double(object_->topology.edges.size())},
-          {"edges_candidates", double(edges_.candidate_count())},
-          {"edges_drawn", double(edges_.drawn().size())}};
-}
+std::map<std::string, double> TexturedSketcher::counters() const { return edges_.counters(); }
 
 }  // namespace inkwire
