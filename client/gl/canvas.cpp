@@ -41,11 +41,15 @@ const Framebuffer& Canvas::resolved() const {
   return resolve_fbo_;
 }
 
-Image Canvas::read() const {
+Image Canvas::read() const { return read(0, 0, width_, height_); }
+
+Image Canvas::read(int x, int y, int width, int height) const {
+  if (x < 0 || y < 0 || width <= 0 || height <= 0 || x + width > width_ || y + height > height_)
+    throw Error("Canvas::read(): rectangle outside the canvas");
   resolved().bind(GL_READ_FRAMEBUFFER);
-  Image image(width_, height_);
+  Image image(width, height);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
+  glReadPixels(x, y, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
   check_error("Canvas::read");
   flip_rows(image);  // GL rows run bottom-up
   bind();

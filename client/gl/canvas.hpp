@@ -21,6 +21,8 @@ class Canvas {
 
   // Resolves multisampling and reads the colour as an upright (top row first) RGBA image.
   Image read() const;
+  // The same for the rectangle whose lower-left pixel is (x, y) in GL window coordinates.
+  Image read(int x, int y, int width, int height) const;
   // Copies the colour into the default framebuffer (a window), scaled to `target` pixels.
   void present_to_default(glm::ivec2 target) const;
 

@@ -75,7 +75,25 @@ Texture Texture::from_image(const Image& image, const TextureOptions& options) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, mag);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, min);
   if (options.mipmaps) glGenerateMipmap(GL_TEXTURE_2D);
+  t.width_ = image.width;
+  t.height_ = image.height;
+  t.mipmaps_ = options.mipmaps;
   return t;
+}
+
+void Texture::update(const Image& image) {
+  if (target_ != GL_TEXTURE_2D) throw Error("Texture::update(): only 2D textures can be updated");
+  if (image.empty()) throw Error("Texture::update(): empty image");
+  glBindTexture(GL_TEXTURE_2D, id());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  if (image.width != width_ || image.height != height_) {
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
+    width_ = image.width;
+    height_ = image.height;
+  } else {
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
+  }
+  if (mipmaps_) glGenerateMipmap(GL_TEXTURE_2D);
 }
 
 Texture Texture::stack_from_images(const std::vector<Image>& layers, GLenum target, const TextureOptions& options) {

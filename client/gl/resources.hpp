@@ -94,6 +94,9 @@ class Texture : public Handle<delete_texture> {
   static Texture stack_from_images(const std::vector<Image>& layers, GLenum target, const TextureOptions& options = {});
   // A 1D lookup (shade maps): RGBA rows of `width` texels.
   static Texture lookup_1d(const std::vector<glm::u8vec4>& texels, bool linear);
+  // Replaces a 2D texture's texels (per-frame images: captures, video frames); reallocates
+  // only when the size changes. Mipmaps, if any, are regenerated.
+  void update(const Image& image);
   void bind(int unit) const;
   GLenum target() const { return target_; }
 
@@ -101,6 +104,8 @@ class Texture : public Handle<delete_texture> {
   using Handle::Handle;
   static Texture create_bound(GLenum target);  // new texture, bound, ready for upload
   GLenum target_ = GL_TEXTURE_2D;
+  int width_ = 0, height_ = 0;
+  bool mipmaps_ = false;
 };
 
 // Shader stage sources by their embedded path under client/shaders/ (e.g. "default/mesh.vert").

@@ -15,6 +15,10 @@ using namespace gl;
 BackdropSpec BackdropSpec::parse(const std::string& text) {
   BackdropSpec s;
   if (text == "paper") return s;
+  if (text == "canvas") {
+    s.canvas = true;
+    return s;
+  }
   if (text.rfind("paper:", 0) == 0) {
     s.paper_file = text.substr(6);
     if (s.paper_file.empty()) throw Error("backdrop 'paper:' needs a file name");
@@ -29,7 +33,7 @@ BackdropSpec BackdropSpec::parse(const std::string& text) {
     s.colour = parse_hex_colour(text);
     return s;
   }
-  throw Error("backdrop '" + text + "' is not paper, paper:FILE, none or #rrggbb");
+  throw Error("backdrop '" + text + "' is not paper, paper:FILE, canvas, none or #rrggbb");
 }
 
 
@@ -55,9 +59,34 @@ Image generate_paper(int size, uint32_t seed) {
   return img;
 }
 
+Image generate_canvas(int size, uint32_t seed) {
+  if (size < 16 || size > 4096) throw Error("canvas size must be 16..4096");
+  constexpr int kThread = 4;  // pixels per thread: a fine linen at screen scale
+  const int threads = size / kThread;
+  const TileableNoise slub_x(threads, seed), slub_y(threads, seed + 1), grain(size / 2, seed + 2), broad(4, seed + 3);
+  const glm::vec3 base(0.90f, 0.87f, 0.80f);  // primed linen
+  Image img(size, size);
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const int tx = x / kThread, ty = y / kThread;
+      const float fx = (float(x % kThread) + 0.5f) / kThread, fy = (float(y % kThread) + 0.5f) / kThread;
+      // Plain weave: the warp thread is on top where (tx + ty) is even, the weft elsewhere.
+      const bool warp_on_top = ((tx + ty) & 1) == 0;
+      const float across = warp_on_top ? fx : fy;  // position across the thread on top
+      const float round = 1.0f - 4.0f * (across - 0.5f) * (across - 0.5f);  // thread's curvature
+      const float slub = warp_on_top ? slub_x.at(float(tx), float(y) / kThread / 8.0f) : slub_y.at(float(x) / kThread / 8.0f, float(ty));
+      float tone = 0.06f * (round - 0.6f) + 0.04f * (slub - 0.5f) + 0.03f * (grain.at(float(x) / 2, float(y) / 2) - 0.5f) +
+                   0.02f * (broad.at(float(x) * 4 / size, float(y) * 4 / size) - 0.5f);
+      uint8_t* p = img.at(x, y);
+      for (int c = 0; c < 3; ++c) p[c] = uint8_t(std::clamp((base[c] + tone) * 255.0f, 0.0f, 255.0f));
+      p[3] = 255;
+    }
+  return img;
+}
+
 Backdrop::Backdrop(const BackdropSpec& spec) : spec_(spec) {
   if (spec_.kind != BackdropSpec::Kind::Paper) return;
-  const Image paper = spec_.paper_file.empty() ? generate_paper(512) : load_image(spec_.paper_file);
+  const Image paper = !spec_.paper_file.empty() ? load_image(spec_.paper_file) : spec_.canvas ? generate_canvas(512) : generate_paper(512);
   paper_size_ = paper.width;
   paper_ = Texture::from_image(paper, {.repeat = true, .mipmaps = false, .linear = true});
   program_ = Program::from_files({"backdrop/fullscreen.vert", "backdrop/paper.frag"});

@@ -1,7 +1,8 @@
 #pragma once
 // Custom clear (SPEC G6): instead of a flat colour, a tileable paper texture drawn full-screen
 // with no depth test and no lighting, then objects over it. Also the flat and transparent
-// clears, so every program chooses its backdrop the same way (--backdrop paper|none|#rrggbb).
+// clears, so every program chooses its backdrop the same way
+// (--backdrop paper|canvas|none|#rrggbb; paintings default to canvas).
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -17,15 +18,18 @@ namespace inkwire {
 struct BackdropSpec {
   enum class Kind { Paper, None, Colour } kind = Kind::Paper;
   glm::vec3 colour{1.0f};
-  std::filesystem::path paper_file;  // empty: generated paper
+  std::filesystem::path paper_file;  // empty: generated paper (or canvas)
+  bool canvas = false;               // generated woven canvas instead of paper
 
-  // "paper", "paper:FILE", "none" or "#rrggbb". Throws inkwire::Error otherwise.
+  // "paper", "paper:FILE", "canvas", "none" or "#rrggbb". Throws inkwire::Error otherwise.
   static BackdropSpec parse(const std::string& text);
 };
 
 // A tileable paper texture: warm off-white with fibres and grain at several scales, wrapping
 // seamlessly at its edges. Deterministic for a given seed.
 Image generate_paper(int size, uint32_t seed = 1);
+// A primed linen canvas: over-and-under threads with slubs, tileable like the paper.
+Image generate_canvas(int size, uint32_t seed = 1);
 
 class Backdrop {
  public:

@@ -4,6 +4,8 @@
 #include "client/render/default_renderer.hpp"
 #include "client/render/hatching/hatching_renderer.hpp"
 #include "client/render/hidden_line_renderer.hpp"
+#include "client/render/painterly/oil_filter_renderer.hpp"
+#include "client/render/painterly/painterly_renderer.hpp"
 #include "client/render/sketch/recursive_sketcher.hpp"
 #include "client/render/sketch/segment_sketcher.hpp"
 #include "client/render/sketch/textured_sketcher.hpp"
@@ -33,6 +35,10 @@ const std::vector<StyleInfo>& styles() {
        [] { return TexturedSketcher::params(Medium::Chalk); }, [] { return std::make_unique<TexturedSketcher>(Medium::Chalk); }},
       {"hatching", "screen-space pencil hatching whose density follows the light; combine with an outline: hatching+sketch-pencil",
        "paper", &HatchingRenderer::params, [] { return std::make_unique<HatchingRenderer>(); }},
+      {"painterly", "textured brushes that drift over the object, seek it and take their paint from a reference rendering; style files",
+       "canvas", &PainterlyRenderer::params, [] { return std::make_unique<PainterlyRenderer>(); }},
+      {"oil-filter", "the classic oil-paint image filter over a reference rendering: the baseline brushes must beat", "canvas",
+       &OilFilterRenderer::params, [] { return std::make_unique<OilFilterRenderer>(); }},
   };
   return all;
 }

@@ -14,29 +14,13 @@
 
 #include <glm/vec3.hpp>
 
+#include "common/random.hpp"
+
 namespace inkwire {
 
-// A small, fast, deterministic generator (SplitMix64): the same seed gives the same stroke.
-class StrokeRandom {
- public:
-  explicit StrokeRandom(uint64_t seed) : state_(seed) {}
-  uint64_t next() {
-    uint64_t z = (state_ += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-  }
-  float uniform(float lo, float hi) { return lo + (hi - lo) * float(next() >> 40) / float(1ull << 24); }
-
- private:
-  uint64_t state_;
-};
-
-// Mixes numbers into one seed (edge id, repetition, boil step, ...).
-inline uint64_t stroke_seed(uint64_t a, uint64_t b, uint64_t c = 0) {
-  StrokeRandom r(a * 0x9e3779b97f4a7c15ull ^ (b + 0x632be59bd9b4e019ull) ^ (c << 17));
-  return r.next();
-}
+// Sketch strokes draw their randomness from the shared deterministic generator.
+using StrokeRandom = Random;
+inline uint64_t stroke_seed(uint64_t a, uint64_t b, uint64_t c = 0) { return mix_seed(a, b, c); }
 
 struct PerturbOptions {
   float max_segment = 0.05f;     // split lines longer than this (mesh units)

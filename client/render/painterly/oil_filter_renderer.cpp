@@ -1,0 +1,57 @@
+#include "client/render/painterly/oil_filter_renderer.hpp"
+
+#include "client/gl/gl.hpp"
+#include "client/render/painterly/oil_filter.hpp"
+#include "client/render/painterly/painterly_renderer.hpp"
+#include "common/error.hpp"
+
+namespace inkwire {
+
+using namespace gl;
+
+OilFilterRenderer::OilFilterRenderer()
+    : filtered_(Texture::from_image(Image(1, 1), {.repeat = false, .mipmaps = false, .linear = false})),
+      matte_(Texture::from_image(Image(1, 1), {.repeat = false, .mipmaps = false, .linear = true})) {}
+
+std::vector<ParamSpec> OilFilterRenderer::params() {
+  return {
+      text_param("reference", "default", "the renderer whose picture is filtered (default, comic-extended, ...)"),
+      int_param("radius", "5", 1, 64, "window radius: (2r+1)^2 pixels; 5 matches the study's 10x10 window"),
+      int_param("levels", "20", 2, 256, "intensity bins"),
+  };
+}
+
+void OilFilterRenderer::configure(const StyleParams& p) {
+  radius_ = p.get_int("radius");
+  levels_ = p.get_int("levels");
+  if (p.get_text("reference") != reference_name_) {
+    reference_ = make_reference_renderer(p.get_text("reference"));
+    reference_name_ = p.get_text("reference");
+    if (object_) reference_->prepare(*object_);
+  }
+}
+
+void OilFilterRenderer::prepare(const SceneObject& object) {
+  object_ = &object;
+  if (reference_) reference_->prepare(object);
+}
+
+void OilFilterRenderer::draw(const FrameState& frame) {
+  if (!object_ || !reference_) throw Error("OilFilterRenderer::draw(): prepare() was not called");
+  const Image& reference = capture_.capture(*reference_, object_->topology.bounds, frame);
+  if (reference.empty()) return;
+  filtered_.update(oil_filter(reference, radius_, levels_));
+  matte_.update(reference);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glEnable(GL_BLEND);
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  rect_image_.draw(filtered_, matte_, capture_.rect(), /*premultiplied=*/false, 1.0f);
+  glDisable(GL_BLEND);
+}
+
+std::map<std::string, double> OilFilterRenderer::counters() const {
+  return {{"capture_pixels", double(capture_.rect().width) * capture_.rect().height}, {"radius", double(radius_)}};
+}
+
+}  // namespace inkwire

@@ -1,0 +1,89 @@
+#include "client/render/painterly/painterly_renderer.hpp"
+
+#include "client/render/styles.hpp"
+#include "common/error.hpp"
+
+namespace inkwire {
+
+std::unique_ptr<Renderer> make_reference_renderer(const std::string& name) {
+  if (name.find("painterly") != std::string::npos || name.find("oil-filter") != std::string::npos)
+    throw Error("reference renderer '" + name + "' is itself a painting: pick default, comic, comic-extended, ...");
+  return make_renderer(name);
+}
+
+PainterlyRenderer::PainterlyRenderer() = default;
+
+std::vector<ParamSpec> PainterlyRenderer::params() {
+  std::vector<std::string> palettes = {"style"};
+  for (const std::string& p : palette_kind_names())
+    if (p != "lookup") palettes.push_back(p);  // a lookup needs its image: style files only
+  return {
+      text_param("style", "impressionist", "a shipped painting style (impressionist, pointillist, watercolour, neon, sepia-study) or a style file (.json)"),
+      text_param("reference", "default", "the renderer whose picture is painted (default, comic-extended, ...)"),
+      int_param("brushes", "0", 0, 100000, "number of brushes; 0 takes the style's"),
+      choice_param("palette", "style", palettes, "paint colours; 'style' takes the style's"),
+      int_param("shades", "0", 0, 64, "shades/posterise levels; 0 takes the style's"),
+      choice_param("orientation", "style", {"style", "random", "constant", "circular", "gradient"}, "stroke directions; 'style' takes the style's"),
+      float_param("angle", "0", -360, 360, "constant orientation: the angle, degrees"),
+      int_param("ttl", "0", 0, 1000, "frames a lost brush searches before respawning; 0 takes the style's"),
+      bool_param("randomise_ttl", "true", "spread respawns over frames (false: every lost brush gets the same time-to-live)"),
+      float_param("underpaint", "-1", -1, 1, "opacity of the blurred base coat; -1 takes the style's"),
+      int_param("settle", "30", 0, 1000, "simulation steps before the first frame, so a still image shows settled brushes"),
+      int_param("seed", "1", 0, 1 << 30, "random seed of the brush field"),
+  };
+}
+
+void PainterlyRenderer::configure(const StyleParams& p) {
+  PaintStyle style = load_paint_style(p.get_text("style"));
+  if (const int n = p.get_int("brushes"); n > 0) style.brushes = n;
+  if (p.get_text("palette") != "style") style.palette.kind = palette_kind(p.get_text("palette"));
+  if (const int n = p.get_int("shades"); n > 0) style.palette.shades = n;
+  if (const std::string& o = p.get_text("orientation"); o != "style") {
+    style.orientation.kind = o == "random" ? OrientationKind::Random : o == "constant" ? OrientationKind::Constant
+                           : o == "circular" ? OrientationKind::Circular : OrientationKind::Gradient;
+    style.orientation.angle_degrees = p.get_float("angle");
+  }
+  if (const int ttl = p.get_int("ttl"); ttl > 0) style.motion.time_to_live = ttl;
+  style.motion.randomise_ttl = p.get_bool("randomise_ttl");
+  if (const float u = p.get_float("underpaint"); u >= 0) style.underpaint = u;
+  settle_ = p.get_int("settle");
+
+  // Rebuild only what changed: a new field scatters the brushes, which a user would see.
+  std::string key;
+  for (const auto& [k, v] : p.values()) key += k + "=" + v + ";";
+  if (key != style_key_) {
+    painter_.set_style(style, uint64_t(p.get_int("seed")));
+    style_key_ = key;
+    fresh_ = true;
+  }
+  if (p.get_text("reference") != reference_name_) {
+    reference_ = make_reference_renderer(p.get_text("reference"));
+    reference_name_ = p.get_text("reference");
+    if (object_) reference_->prepare(*object_);
+  }
+}
+
+void PainterlyRenderer::prepare(const SceneObject& object) {
+  object_ = &object;
+  if (reference_) reference_->prepare(object);
+  fresh_ = true;
+}
+
+void PainterlyRenderer::draw(const FrameState& frame) {
+  if (!object_ || !reference_) throw Error("PainterlyRenderer::draw(): prepare() was not called");
+  const Image& reference = capture_.capture(*reference_, object_->topology.bounds, frame);
+  painter_.paint(reference, capture_.rect(), /*underpaint=*/true, fresh_ ? settle_ : 0);
+  fresh_ = false;
+}
+
+std::map<std::string, double> PainterlyRenderer::counters() const {
+  const BrushField* field = painter_.field();
+  if (!field) return {};
+  return {{"brushes", double(field->brushes().size())},
+          {"visible_fraction", field->visible_fraction()},
+          {"respawn_fraction", field->respawn_fraction()},
+          {"brush_side_px", painter_.brush_side()},
+          {"capture_pixels", double(capture_.rect().width) * capture_.rect().height}};
+}
+
+}  // namespace inkwire

@@ -1,0 +1,40 @@
+#pragma once
+// "painterly" (SPEC P1-P8): the object is drawn off-screen by a reference renderer, limited to
+// its screen rectangle, and painted over the backdrop with textured brushes that drift, seek
+// the object and take their colour from the reference. Look and behaviour come from a style
+// file (shipped: impressionist, pointillist, watercolour, neon, sepia-study); parameters set
+// here override the file's values.
+#include <memory>
+#include <string>
+
+#include "client/render/painterly/brush_painter.hpp"
+#include "client/render/painterly/reference_capture.hpp"
+#include "client/render/renderer.hpp"
+
+namespace inkwire {
+
+class PainterlyRenderer final : public Renderer {
+ public:
+  PainterlyRenderer();
+  static std::vector<ParamSpec> params();
+  void configure(const StyleParams& params) override;
+  void prepare(const SceneObject& object) override;
+  void draw(const FrameState& frame) override;
+  // brushes, visible_fraction, respawn_fraction, brush_side_px, capture_pixels.
+  std::map<std::string, double> counters() const override;
+
+ private:
+  ReferenceCapture capture_;
+  BrushPainter painter_;
+  std::unique_ptr<Renderer> reference_;
+  std::string reference_name_, style_key_;
+  const SceneObject* object_ = nullptr;
+  int settle_ = 30;
+  bool fresh_ = true;  // no frame painted since the field was (re)made
+};
+
+// Makes the reference renderer a painterly style captures, refusing painterly styles
+// themselves (a painting of a painting would recurse).
+std::unique_ptr<Renderer> make_reference_renderer(const std::string& name);
+
+}  // namespace inkwire

@@ -1,0 +1,62 @@
+#include "client/render/painterly/reference_capture.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "client/gl/gl.hpp"
+
+namespace inkwire {
+
+using namespace gl;
+
+PixelRect projected_rect(const Bounds& bounds, const glm::mat4& mvp, glm::ivec2 viewport, int margin) {
+  glm::vec2 lo(1e30f), hi(-1e30f);
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec3 p((corner & 1) ? bounds.max.x : bounds.min.x, (corner & 2) ? bounds.max.y : bounds.min.y,
+                      (corner & 4) ? bounds.max.z : bounds.min.z);
+    const glm::vec4 clip = mvp * glm::vec4(p, 1.0f);
+    if (clip.w <= 1e-6f) return {0, 0, viewport.x, viewport.y};
+    const glm::vec2 pixel = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(viewport);
+    lo = glm::min(lo, pixel);
+    hi = glm::max(hi, pixel);
+  }
+  const int x0 = std::clamp(int(std::floor(lo.x)) - margin, 0, viewport.x), y0 = std::clamp(int(std::floor(lo.y)) - margin, 0, viewport.y);
+  const int x1 = std::clamp(int(std::ceil(hi.x)) + margin, 0, viewport.x), y1 = std::clamp(int(std::ceil(hi.y)) + margin, 0, viewport.y);
+  return {x0, y0, x1 - x0, y1 - y0};
+}
+
+FramebufferBinding::FramebufferBinding() {
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer_);
+  glGetIntegerv(GL_VIEWPORT, &viewport_.x);
+}
+
+FramebufferBinding::~FramebufferBinding() {
+  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer_));
+  glViewport(viewport_.x, viewport_.y, viewport_.z, viewport_.w);
+}
+
+const Image& ReferenceCapture::capture(Renderer& reference, const Bounds& bounds, const FrameState& frame) {
+  const FramebufferBinding restore;
+  if (!canvas_ || canvas_->size() != frame.viewport) canvas_ = std::make_unique<Canvas>(frame.viewport.x, frame.viewport.y, 1);
+  // Outlines and strokes reach a little beyond the bounding box: a few pixels of margin.
+  rect_ = projected_rect(bounds, frame.model_view_projection(), frame.viewport, 6);
+  if (rect_.empty()) {
+    image_ = Image();
+    return image_;
+  }
+  canvas_->bind();
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(rect_.x, rect_.y, rect_.width, rect_.height);
+  glClearColor(0, 0, 0, 0);
+  glClearDepth(1.0);
+  glClearStencil(0);
+  glDepthMask(GL_TRUE);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  reference.draw(frame);
+  glDisable(GL_SCISSOR_TEST);
+  image_ = canvas_->read(rect_.x, rect_.y, rect_.width, rect_.height);
+  return image_;
+}
+
+}  // namespace inkwire

@@ -1,0 +1,54 @@
+#pragma once
+// SPEC P1: the object drawn off-screen by another renderer (default, comic, ...), limited to
+// the screen rectangle of its projected bounding box. The capture is cleared to transparent
+// first, so its alpha is the object's matte.
+#include <memory>
+
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+
+#include "client/gl/canvas.hpp"
+#include "client/render/renderer.hpp"
+
+namespace inkwire {
+
+// A rectangle of window pixels: lower-left corner (x, y) in GL coordinates, width, height.
+struct PixelRect {
+  int x = 0, y = 0, width = 0, height = 0;
+  bool empty() const { return width <= 0 || height <= 0; }
+};
+
+// The screen rectangle of `bounds` under `model_view_projection`, grown by `margin` pixels and
+// clipped to the viewport; the whole viewport when any corner is behind the viewer.
+PixelRect projected_rect(const Bounds& bounds, const glm::mat4& model_view_projection, glm::ivec2 viewport, int margin);
+
+class ReferenceCapture {
+ public:
+  // Draws `reference` for `frame` into an off-screen canvas the size of the frame's viewport,
+  // scissored to the object's rectangle, and reads back that rectangle only. Leaves the
+  // caller's framebuffer and viewport bound again. Returns the image (top row first).
+  const Image& capture(Renderer& reference, const Bounds& bounds, const FrameState& frame);
+  const Image& image() const { return image_; }
+  PixelRect rect() const { return rect_; }
+
+ private:
+  std::unique_ptr<Canvas> canvas_;
+  Image image_;
+  PixelRect rect_;
+};
+
+// Saves the bound draw framebuffer and viewport, and restores them when it goes.
+class FramebufferBinding {
+ public:
+  FramebufferBinding();
+  ~FramebufferBinding();
+  FramebufferBinding(const FramebufferBinding&) = delete;
+  FramebufferBinding& operator=(const FramebufferBinding&) = delete;
+  glm::ivec4 viewport() const { return viewport_; }
+
+ private:
+  int framebuffer_ = 0;
+  glm::ivec4 viewport_{0};
+};
+
+}  // namespace inkwire

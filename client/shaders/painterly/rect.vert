@@ -1,0 +1,11 @@
+#version 450 core
+// A quad over the capture rectangle (no vertex buffer: corners from gl_VertexID).
+uniform vec4 viewport;  // x, y, width, height of the target
+uniform vec4 rect;      // x, y, width, height in window pixels
+out vec2 image_uv;
+void main() {
+  vec2 corner = vec2(gl_VertexID & 1, gl_VertexID >> 1);
+  vec2 pixel = rect.xy + corner * rect.zw;
+  gl_Position = vec4((pixel - viewport.xy) / viewport.zw * 2.0 - 1.0, 0.0, 1.0);
+  image_uv = vec2(corner.x, 1.0 - corner.y);  // images are stored top row first
+}
