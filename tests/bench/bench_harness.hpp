@@ -26,6 +26,7 @@ struct Options {
   int frames = 1000;
   std::string mesh;  // the LOD series' source mesh
   std::string gl = "osmesa";  // off-screen backend
+  std::string output_dir;     // where suites write extra files (CSV, plots): beside the JSON
 };
 
 // One object of the level-of-detail series, placed as in the study: thesis camera, one light,
@@ -72,5 +73,6 @@ std::vector<Result> run_default_suite(Harness& harness);
 std::vector<Result> run_comic_suite(Harness& harness);
 std::vector<Result> run_sketch_suite(Harness& harness);
 std::vector<Result> run_hatching_suite(Harness& harness);
+std::vector<Result> run_painterly_suite(Harness& harness);
 
 }  // namespace inkwire::bench

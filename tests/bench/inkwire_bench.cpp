@@ -5,6 +5,8 @@
 #include <thread>
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
+
 #include <nlohmann/json.hpp>
 
 #include "bench_harness.hpp"
@@ -72,6 +74,7 @@ int main(int argc, char** argv) {
     }
     if (chosen.empty()) throw Error("suite '" + suite + "' is not available in this build (available: " + known + ", all)");
 
+    options.output_dir = std::filesystem::path(json_path).parent_path().string();
     Harness harness(options);
     std::vector<Result> results;
     for (const auto& [name, run] : chosen) {

@@ -38,7 +38,7 @@ void OilFilterRenderer::prepare(const SceneObject& object) {
 
 void OilFilterRenderer::draw(const FrameState& frame) {
   if (!object_ || !reference_) throw Error("OilFilterRenderer::draw(): prepare() was not called");
-  const Image& reference = capture_.capture(*reference_, object_->topology.bounds, frame);
+  const Image& reference = capture_.capture(*reference_, object_->mesh, frame);
   if (reference.empty()) return;
   filtered_.update(oil_filter(reference, radius_, levels_));
   matte_.update(reference);

@@ -1,5 +1,7 @@
 #include "client/render/painterly/painterly_renderer.hpp"
 
+#include <algorithm>
+
 #include "client/render/styles.hpp"
 #include "common/error.hpp"
 
@@ -21,6 +23,7 @@ std::vector<ParamSpec> PainterlyRenderer::params() {
       text_param("style", "impressionist", "a shipped painting style (impressionist, pointillist, watercolour, neon, sepia-study) or a style file (.json)"),
       text_param("reference", "default", "the renderer whose picture is painted (default, comic-extended, ...)"),
       int_param("brushes", "0", 0, 100000, "number of brushes; 0 takes the style's"),
+      float_param("coverage", "0", 0, 0.999, "share of the object the brushes cover between them; 0 takes the style's"),
       choice_param("palette", "style", palettes, "paint colours; 'style' takes the style's"),
       int_param("shades", "0", 0, 64, "shades/posterise levels; 0 takes the style's"),
       choice_param("orientation", "style", {"style", "random", "constant", "circular", "gradient"}, "stroke directions; 'style' takes the style's"),
@@ -36,6 +39,7 @@ std::vector<ParamSpec> PainterlyRenderer::params() {
 void PainterlyRenderer::configure(const StyleParams& p) {
   PaintStyle style = load_paint_style(p.get_text("style"));
   if (const int n = p.get_int("brushes"); n > 0) style.brushes = n;
+  if (const float c = p.get_float("coverage"); c > 0) style.coverage = std::max(c, 0.3f);
   if (p.get_text("palette") != "style") style.palette.kind = palette_kind(p.get_text("palette"));
   if (const int n = p.get_int("shades"); n > 0) style.palette.shades = n;
   if (const std::string& o = p.get_text("orientation"); o != "style") {
@@ -71,7 +75,7 @@ void PainterlyRenderer::prepare(const SceneObject& object) {
 
 void PainterlyRenderer::draw(const FrameState& frame) {
   if (!object_ || !reference_) throw Error("PainterlyRenderer::draw(): prepare() was not called");
-  const Image& reference = capture_.capture(*reference_, object_->topology.bounds, frame);
+  const Image& reference = capture_.capture(*reference_, object_->mesh, frame);
   painter_.paint(reference, capture_.rect(), /*underpaint=*/true, fresh_ ? settle_ : 0);
   fresh_ = false;
 }

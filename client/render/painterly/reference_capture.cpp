@@ -9,11 +9,10 @@ namespace inkwire {
 
 using namespace gl;
 
-PixelRect projected_rect(const Bounds& bounds, const glm::mat4& mvp, glm::ivec2 viewport, int margin) {
+PixelRect projected_rect(const std::vector<glm::vec3>& points, const glm::mat4& mvp, glm::ivec2 viewport, int margin) {
+  if (points.empty()) return {};
   glm::vec2 lo(1e30f), hi(-1e30f);
-  for (int corner = 0; corner < 8; ++corner) {
-    const glm::vec3 p((corner & 1) ? bounds.max.x : bounds.min.x, (corner & 2) ? bounds.max.y : bounds.min.y,
-                      (corner & 4) ? bounds.max.z : bounds.min.z);
+  for (const glm::vec3& p : points) {
     const glm::vec4 clip = mvp * glm::vec4(p, 1.0f);
     if (clip.w <= 1e-6f) return {0, 0, viewport.x, viewport.y};
     const glm::vec2 pixel = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(viewport);
@@ -35,11 +34,11 @@ FramebufferBinding::~FramebufferBinding() {
   glViewport(viewport_.x, viewport_.y, viewport_.z, viewport_.w);
 }
 
-const Image& ReferenceCapture::capture(Renderer& reference, const Bounds& bounds, const FrameState& frame) {
+const Image& ReferenceCapture::capture(Renderer& reference, const Mesh& mesh, const FrameState& frame) {
   const FramebufferBinding restore;
   if (!canvas_ || canvas_->size() != frame.viewport) canvas_ = std::make_unique<Canvas>(frame.viewport.x, frame.viewport.y, 1);
   // Outlines and strokes reach a little beyond the bounding box: a few pixels of margin.
-  rect_ = projected_rect(bounds, frame.model_view_projection(), frame.viewport, 6);
+  rect_ = projected_rect(mesh.positions, frame.model_view_projection(), frame.viewport, 6);
   if (rect_.empty()) {
     image_ = Image();
     return image_;

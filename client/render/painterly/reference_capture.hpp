@@ -3,6 +3,7 @@
 // the screen rectangle of its projected bounding box. The capture is cleared to transparent
 // first, so its alpha is the object's matte.
 #include <memory>
+#include <vector>
 
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
@@ -18,16 +19,18 @@ struct PixelRect {
   bool empty() const { return width <= 0 || height <= 0; }
 };
 
-// The screen rectangle of `bounds` under `model_view_projection`, grown by `margin` pixels and
-// clipped to the viewport; the whole viewport when any corner is behind the viewer.
-PixelRect projected_rect(const Bounds& bounds, const glm::mat4& model_view_projection, glm::ivec2 viewport, int margin);
+// The screen rectangle of `points` under `model_view_projection` (the object's bounding box on
+// screen, as tight as its vertices make it; a 3D box's corners would give a rectangle up to
+// six times the object's area at oblique views), grown by `margin` pixels and clipped to the
+// viewport; the whole viewport when any point is behind the viewer.
+PixelRect projected_rect(const std::vector<glm::vec3>& points, const glm::mat4& model_view_projection, glm::ivec2 viewport, int margin);
 
 class ReferenceCapture {
  public:
   // Draws `reference` for `frame` into an off-screen canvas the size of the frame's viewport,
   // scissored to the object's rectangle, and reads back that rectangle only. Leaves the
   // caller's framebuffer and viewport bound again. Returns the image (top row first).
-  const Image& capture(Renderer& reference, const Bounds& bounds, const FrameState& frame);
+  const Image& capture(Renderer& reference, const Mesh& mesh, const FrameState& frame);
   const Image& image() const { return image_; }
   PixelRect rect() const { return rect_; }
 
