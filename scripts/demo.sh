@@ -3,8 +3,9 @@
 # style into a gallery, plus turntable videos.
 #   scripts/demo.sh [OUT_DIR]      (default: demo-output/)
 # Writes OUT_DIR/contact-sheet.png (models x styles), OUT_DIR/styles/<model>-<style>.png,
-# OUT_DIR/shade-maps.png (the comic shade-map library on one model) and
-# OUT_DIR/turntable-<style>.mp4.
+# OUT_DIR/shade-maps.png (the comic shade-map library on one model), OUT_DIR/paintings.png (every
+# shipped painting style), OUT_DIR/turntable-<style>.mp4 and OUT_DIR/painted-video.mp4 (a
+# recorded video painted frame by frame).
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 out=$(realpath -m "${1:-$here/demo-output}")
@@ -46,9 +47,28 @@ for map in "${shade_maps[@]}"; do
 done
 oiiotool "${maps[@]}" --mosaic:pad=2 "4x$(( (${#shade_maps[@]} + 3) / 4 ))" --ch R,G,B -o "$out/shade-maps.png"
 
+# Every shipped painting style, on the textured duck.
+paintings=()
+for file in "$here"/client/render/painterly/styles/*.json; do
+  name=$(basename "$file" .json)
+  tile="$out/styles/duck-painterly-$name.png"
+  "$bin/inkwire-render" --mesh /usr/share/assimp/models/Collada/duck.dae --style painterly --set "style=$name" \
+    --view 35,15,1.2 --size 400x320 --out "$tile"
+  paintings+=("$tile" --text:x=12:y=26:size=18:color=1,1,1:shadow=2:font=$font "painterly / $name")
+done
+painting_count=$(( ${#paintings[@]} / 3 ))  # tile, caption option, caption
+painting_rows=$(( (painting_count + 2) / 3 ))
+for ((i = painting_count; i < 3 * painting_rows; ++i)); do paintings+=(--pattern constant:color=0.96,0.94,0.9,1 400x320 4); done
+oiiotool "${paintings[@]}" --mosaic:pad=4 "3x$painting_rows" --ch R,G,B -o "$out/paintings.png"
+
 for style in "${styles[@]}"; do
   "$bin/inkwire-render" --mesh "$meshes/cow.off" --style "$style" --view 35,15,1.3 --size 640x480 \
     --frames 96 --out "$out/turntable-$style.mp4"
 done
 
-echo "demo: wrote $out/contact-sheet.png, $out/shade-maps.png, $out/styles/ and $out/turntable-*.mp4"
+# Video painting: the duck's default turntable as a recorded video, painted over itself frame by frame.
+"$bin/inkwire-render" --mesh /usr/share/assimp/models/Collada/duck.dae --style default --view 35,15,1.2 --size 480x360 \
+  --frames 72 --out "$out/duck-turntable.mp4"
+"$bin/inkwire-render" --video "$out/duck-turntable.mp4" --style painterly --out "$out/painted-video.mp4"
+
+echo "demo: wrote $out/contact-sheet.png, $out/shade-maps.png, $out/paintings.png, $out/styles/, $out/turntable-*.mp4 and $out/painted-video.mp4"

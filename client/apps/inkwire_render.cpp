@@ -1,5 +1,7 @@
 // inkwire-render: one mesh, one style, to images or video (CONTRACTS.md).
+#include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <iostream>
 #include <numbers>
 
@@ -11,19 +13,56 @@
 #include "client/output/frame_writer.hpp"
 #include "client/render/backdrop.hpp"
 #include "client/render/coverage.hpp"
+#include "client/render/painterly/painterly_renderer.hpp"
+#include "client/render/painterly/video_painter.hpp"
 #include "client/render/styles.hpp"
 #include "common/error.hpp"
+#include "common/video_source.hpp"
 
 using namespace inkwire;
 
 namespace {
 
 struct Options {
-  std::string gl = "osmesa", mesh, style = "default", pose = "thesis", view, size = "620x500", backdrop, out;
+  std::string gl = "osmesa", mesh, video, style = "default", pose = "thesis", view, size = "620x500", backdrop, out;
   std::vector<std::string> set;
   size_t lod = 0;
-  int frames = 1, fps = 24, msaa = 4;
+  int frames = 0, fps = 0, msaa = 4;  // 0: one frame (mesh) or the whole video; 24 fps or the video's
 };
+
+// --video: paints a camera, video file or image sequence frame by frame, each over the last.
+int paint_video(const Options& o) {
+  if (o.style != "painterly") throw Error("--video paints with --style painterly only");
+  if (o.out.empty()) throw Error("--out is required");
+  VideoSource source(o.video);
+  std::optional<Image> first = source.next();
+  if (!first) throw Error("video '" + o.video + "' has no frames");
+  const int limit = o.frames > 0 ? o.frames : source.live() ? 300 : 100000;
+  StyleParams params(PainterlyRenderer::params());
+  for (const std::string& a : o.set) params.set_assignment(a);
+  auto context = create_offscreen_context(first->width, first->height, o.gl);
+  Canvas canvas(first->width, first->height, 1);
+  // Style settings as for meshes; brush count scales with the frame so strokes keep their size.
+  auto style_renderer = make_renderer("painterly", o.set);  // validates every setting
+  PaintStyle style = load_paint_style(params.get_text("style"));
+  if (params.get_int("brushes") > 0) style.brushes = params.get_int("brushes");
+  else style.brushes = std::clamp(int(double(style.brushes) * first->width * first->height / 60000.0), 500, 30000);
+  if (const float c = params.get_float("coverage"); c > 0) style.coverage = c;
+  if (params.get_text("palette") != "style") style.palette.kind = palette_kind(params.get_text("palette"));
+  VideoPainter painter(style, uint64_t(params.get_int("seed")));
+  canvas.bind();
+  Backdrop(BackdropSpec::parse("canvas")).draw();
+  FrameWriter writer(o.out, o.frames > 0 ? o.frames : 100000, o.fps > 0 ? o.fps : int(source.fps() + 0.5), false);
+  int painted = 0;
+  for (std::optional<Image> frame = std::move(first); frame && painted < limit; frame = source.next(), ++painted) {
+    canvas.bind();
+    painter.paint(*frame);
+    writer.write(canvas.read());
+  }
+  writer.close();
+  std::cerr << "inkwire-render: painted " << painted << " frames of " << o.video << " with " << style.brushes << " brushes\n";
+  return 0;
+}
 
 glm::ivec2 parse_size(const std::string& text) {
   int w = 0, h = 0;
@@ -53,9 +92,11 @@ int run(const Options& o) {
     print_styles();
     return 0;
   }
-  if (o.mesh.empty()) throw Error("--mesh is required");
+  if (!o.video.empty()) return paint_video(o);
+  if (o.mesh.empty()) throw Error("--mesh or --video is required");
   if (o.out.empty()) throw Error("--out is required");
-  if (o.frames < 1 || o.frames > 100000) throw Error("--frames must be 1..100000");
+  const int frames = o.frames > 0 ? o.frames : 1, fps = o.fps > 0 ? o.fps : 24;
+  if (frames > 100000) throw Error("--frames must be 1..100000");
   const glm::ivec2 size = parse_size(o.size);
   const BackdropSpec backdrop_spec = BackdropSpec::parse(o.backdrop.empty() ? default_backdrop(o.style) : o.backdrop);
 
@@ -88,13 +129,13 @@ int run(const Options& o) {
   frame.light_direction = default_light_direction(frame.camera);
   const glm::mat4 pose = frame.model;
 
-  FrameWriter writer(o.out, o.frames, o.fps, backdrop_spec.kind == BackdropSpec::Kind::None);
-  for (int i = 0; i < o.frames; ++i) {
+  FrameWriter writer(o.out, frames, fps, backdrop_spec.kind == BackdropSpec::Kind::None);
+  for (int i = 0; i < frames; ++i) {
     // Animations turn the object once around its vertical axis.
-    const float turn = o.frames > 1 ? float(2.0 * std::numbers::pi * i / o.frames) : 0.0f;
+    const float turn = frames > 1 ? float(2.0 * std::numbers::pi * i / frames) : 0.0f;
     frame.model = glm::rotate(glm::mat4(1.0f), turn, glm::vec3(0, 1, 0)) * pose;
     frame.frame = i;
-    frame.time_seconds = double(i) / o.fps;
+    frame.time_seconds = double(i) / fps;
     canvas.bind();
     backdrop.draw();
     renderer->draw(frame);
@@ -110,13 +151,14 @@ int main(int argc, char** argv) {
   Options o;
   CLI::App app{"inkwire-render: render one mesh in one style to PNG images or an MP4 video"};
   app.add_option("--mesh", o.mesh, "mesh file (OBJ, PLY, OFF, 3DS, ASE, glTF, ...)");
+  app.add_option("--video", o.video, "paint a video instead (style painterly): a file, a folder or %04d pattern of images, camera:N or /dev/videoN");
   app.add_option("--lod", o.lod, "simplify to about this many triangles first");
   app.add_option("--style", o.style, "style name, styles joined by '+' (drawn in turn), or 'list'");
   app.add_option("--set", o.set, "style parameter KEY=VALUE (repeatable)");
   app.add_option("--pose", o.pose, "camera pose: thesis (the study's benchmark viewer)");
   app.add_option("--view", o.view, "orbit camera AZIMUTH_DEG,ELEVATION_DEG[,DISTANCE in bounding-box diagonals]");
-  app.add_option("--frames", o.frames, "frames to render (the object turns once)");
-  app.add_option("--fps", o.fps, "frames per second of animation time and video")->check(CLI::Range(1, 240));
+  app.add_option("--frames", o.frames, "frames to render (the object turns once); with --video, at most this many")->check(CLI::Range(0, 100000));
+  app.add_option("--fps", o.fps, "frames per second of animation time and video (default 24, or the video's)")->check(CLI::Range(0, 240));
   app.add_option("--size", o.size, "image size WxH");
   app.add_option("--msaa", o.msaa, "multisample count (1 = off)")->check(CLI::Range(1, 16));
   app.add_option("--backdrop", o.backdrop, "paper | paper:FILE | none (transparent) | #rrggbb; default: the style's");

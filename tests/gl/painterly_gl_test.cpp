@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "client/gl/canvas.hpp"
+#include "client/render/painterly/video_painter.hpp"
 #include "client/render/styles.hpp"
 #include "common/error.hpp"
 #include "gl_test_support.hpp"
@@ -117,3 +118,37 @@ INSTANTIATE_TEST_SUITE_P(ShippedStyles, PainterlyGoldenGLTest,
                            std::replace(n.begin(), n.end(), '-', '_');
                            return n;
                          });
+
+// Video painting (SPEC P9): each frame painted over the last; a still scene settles instead of
+// flashing, and the painting keeps the frame's colours.
+TEST(VideoPainterGLTest, PaintsOverThePreviousFrameWithoutFlashing) {
+  test::offscreen_context();
+  Canvas canvas(160, 120);
+  Image frame(160, 120);
+  for (int y = 0; y < 120; ++y)
+    for (int x = 0; x < 160; ++x) {
+      uint8_t* p = frame.at(x, y);
+      p[0] = x < 80 ? 220 : 30, p[1] = y < 60 ? 40 : 180, p[2] = 90, p[3] = 255;
+    }
+  VideoPainter painter(load_paint_style("impressionist"), 1);
+  canvas.bind();
+  Image previous;
+  double worst_change = 0, colour_error = 0;
+  for (int f = 0; f < 12; ++f) {
+    canvas.bind();
+    painter.paint(frame);
+    const Image painting = canvas.read();
+    colour_error = 0;
+    for (size_t i = 0; i < painting.pixels.size(); ++i) colour_error += std::abs(int(painting.pixels[i]) - int(frame.pixels[i]));
+    colour_error /= double(painting.pixels.size());
+    if (f > 0) {
+      double change = 0;
+      for (size_t i = 0; i < painting.pixels.size(); ++i) change += std::abs(int(painting.pixels[i]) - int(previous.pixels[i]));
+      worst_change = std::max(worst_change, change / double(painting.pixels.size()));
+    }
+    previous = painting;
+  }
+  std::printf("video: worst mean change %.2f, mean colour error %.2f\n", worst_change, colour_error);
+  EXPECT_LT(worst_change, 6.0) << "strokes drift and recolour; the picture is not redone each frame";
+  EXPECT_LT(colour_error, 25.0) << "the painting keeps the frame's colours (strokes add texture, not new colours)";
+}
