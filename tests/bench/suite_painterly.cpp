@@ -87,7 +87,7 @@ void write_csv(const std::vector<FractionSeries>& all, const std::string& path) 
 
 // Visible fraction (thick) and respawned fraction (thin, scaled x10) per frame, one colour per speed.
 void write_plot(const std::vector<FractionSeries>& all, const std::string& path) {
-  const int w = 900, h = 480, left = 60, right = 20, top = 40, bottom = 50;
+  const int w = 900, h = 500, left = 60, right = 20, top = 64, bottom = 50;
   cv::Mat plot(h, w, CV_8UC3, cv::Scalar(255, 255, 255));
   const cv::Scalar axis(60, 60, 60);
   const cv::Scalar colours[] = {{200, 80, 30}, {40, 160, 40}, {30, 120, 230}, {160, 40, 160}};
@@ -101,6 +101,8 @@ void write_plot(const std::vector<FractionSeries>& all, const std::string& path)
   }
   cv::rectangle(plot, px(0, 1), px(double(all.front().visible.size() - 1), 0), axis, 1);
   cv::putText(plot, "frame", {w / 2 - 20, h - 14}, cv::FONT_HERSHEY_SIMPLEX, 0.5, axis, 1, cv::LINE_AA);
+  for (size_t f = 0; f < all.front().visible.size(); f += 50)
+    cv::putText(plot, std::to_string(f), {px(double(f), 0).x - 8, h - bottom + 18}, cv::FONT_HERSHEY_SIMPLEX, 0.4, axis, 1, cv::LINE_AA);
   cv::putText(plot, "visible brushes (thick) and respawns x10 (thin), 3000 brushes", {left, 24}, cv::FONT_HERSHEY_SIMPLEX, 0.55, axis, 1, cv::LINE_AA);
   for (size_t k = 0; k < all.size(); ++k) {
     const FractionSeries& s = all[k];
@@ -110,7 +112,7 @@ void write_plot(const std::vector<FractionSeries>& all, const std::string& path)
     }
     char label[64];
     std::snprintf(label, sizeof label, "%g deg/frame", s.degrees);
-    cv::putText(plot, label, {w - 170, h - bottom - 20 - int(k) * 20}, cv::FONT_HERSHEY_SIMPLEX, 0.5, colours[k % 4], 1, cv::LINE_AA);
+    cv::putText(plot, label, {left + int(k) * 150, 50}, cv::FONT_HERSHEY_SIMPLEX, 0.5, colours[k % 4], 1, cv::LINE_AA);
   }
   Image image(w, h);
   for (int y = 0; y < h; ++y)
