@@ -42,13 +42,11 @@ int paint_video(const Options& o) {
   for (const std::string& a : o.set) params.set_assignment(a);
   auto context = create_offscreen_context(first->width, first->height, o.gl);
   Canvas canvas(first->width, first->height, 1);
-  // Style settings as for meshes; brush count scales with the frame so strokes keep their size.
-  auto style_renderer = make_renderer("painterly", o.set);  // validates every setting
-  PaintStyle style = load_paint_style(params.get_text("style"));
-  if (params.get_int("brushes") > 0) style.brushes = params.get_int("brushes");
-  else style.brushes = std::clamp(int(double(style.brushes) * first->width * first->height / 60000.0), 500, 30000);
-  if (const float c = params.get_float("coverage"); c > 0) style.coverage = c;
-  if (params.get_text("palette") != "style") style.palette.kind = palette_kind(params.get_text("palette"));
+  // Style settings as for meshes; with no brush count set, it scales with the frame so strokes
+  // keep their size (the styles' counts suit an object of about 60 000 pixels).
+  PaintStyle style = paint_style_from_params(params);
+  if (params.get_int("brushes") == 0)
+    style.brushes = std::clamp(int(double(style.brushes) * first->width * first->height / 60000.0), 500, 30000);
   VideoPainter painter(style, uint64_t(params.get_int("seed")));
   canvas.bind();
   Backdrop(BackdropSpec::parse("canvas")).draw();

@@ -36,7 +36,7 @@ std::vector<ParamSpec> PainterlyRenderer::params() {
   };
 }
 
-void PainterlyRenderer::configure(const StyleParams& p) {
+PaintStyle paint_style_from_params(const StyleParams& p) {
   PaintStyle style = load_paint_style(p.get_text("style"));
   if (const int n = p.get_int("brushes"); n > 0) style.brushes = n;
   if (const float c = p.get_float("coverage"); c > 0) style.coverage = std::max(c, 0.3f);
@@ -50,6 +50,11 @@ void PainterlyRenderer::configure(const StyleParams& p) {
   if (const int ttl = p.get_int("ttl"); ttl > 0) style.motion.time_to_live = ttl;
   style.motion.randomise_ttl = p.get_bool("randomise_ttl");
   if (const float u = p.get_float("underpaint"); u >= 0) style.underpaint = u;
+  return style;
+}
+
+void PainterlyRenderer::configure(const StyleParams& p) {
+  const PaintStyle style = paint_style_from_params(p);
   settle_ = p.get_int("settle");
 
   // Rebuild only what changed: a new field scatters the brushes, which a user would see.

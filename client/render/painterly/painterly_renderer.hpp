@@ -33,6 +33,9 @@ class PainterlyRenderer final : public Renderer {
   bool fresh_ = true;  // no frame painted since the field was (re)made
 };
 
+// The style file named by `params` ("style") with the parameters set there applied over it.
+PaintStyle paint_style_from_params(const StyleParams& params);
+
 // Makes the reference renderer a painterly style captures, refusing painterly styles
 // themselves (a painting of a painting would recurse).
 std::unique_ptr<Renderer> make_reference_renderer(const std::string& name);
