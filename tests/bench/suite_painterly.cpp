@@ -22,17 +22,12 @@ namespace {
 // costs before a brush moves.
 class CaptureOnly final : public Renderer {
  public:
-  CaptureOnly() : reference_(make_renderer("default")) {}
+  CaptureOnly() { capture_.use_renderer("default"); }
   void configure(const StyleParams&) override {}
-  void prepare(const SceneObject& object) override {
-    object_ = &object;
-    reference_->prepare(object);
-  }
-  void draw(const FrameState& frame) override { capture_.capture(*reference_, object_->mesh, frame); }
+  void prepare(const SceneObject& object) override { capture_.prepare(object); }
+  void draw(const FrameState& frame) override { capture_.capture(frame); }
 
  private:
-  std::unique_ptr<Renderer> reference_;
-  const SceneObject* object_ = nullptr;
   ReferenceCapture capture_;
 };
 

@@ -62,7 +62,7 @@ void BrushField::respawn(Brush& b, size_t index, const Matte& matte) {
   b.velocity = {random_.uniform(-1, 1) * motion_.max_speed * 0.5f, random_.uniform(-1, 1) * motion_.max_speed * 0.5f};
   b.acceleration = {0, 0};
   b.ttl = 0;
-  b.has_angle = false;
+  b.styled = false;
   history_count_[index] = 0;  // a new place: forget the old paint
   history_next_[index] = 0;
 }
@@ -92,7 +92,6 @@ StepStats BrushField::step(const Matte& matte) {
       ++stats.visible;
     } else {
       if (b.ttl == 0) b.ttl = draw_ttl();  // respawned off the object: lost from the start
-      ++stats.lost;
     }
   }
   last_ = stats;

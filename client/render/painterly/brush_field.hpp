@@ -54,11 +54,12 @@ struct Brush {
   bool visible = false;    // over an object pixel this frame
   glm::vec3 colour{0};     // paint: the mean of the last few sampled colours
   float angle = 0;         // stroke direction, radians (set by the painter)
-  bool has_angle = false;  // false until the first orientation, and after a respawn
+  bool styled = false;     // false until the painter has given it a look and an angle; a
+                           // respawn clears it (a new place gets a new look)
 };
 
 struct StepStats {
-  size_t visible = 0, respawned = 0, lost = 0;
+  size_t visible = 0, respawned = 0;
 };
 
 class BrushField {

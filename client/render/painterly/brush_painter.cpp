@@ -157,13 +157,13 @@ void BrushPainter::paint(const Image& reference, PixelRect rect, bool underpaint
   for (size_t i = 0; i < brushes.size(); ++i) {
     Brush& b = brushes[i];
     if (!b.visible) continue;
-    if (!b.has_angle) choose_look(i, b);
+    if (!b.styled) choose_look(i, b);
     const Look& look = looks_[i];
     const RegionRule* rule = look.rule >= 0 ? &style_.regions[size_t(look.rule)] : nullptr;
     const StrokeOrientation& orientation = rule && rule->orientation ? *rule->orientation : style_.orientation;
     const float target = target_angle(i, b, reference, orientation);
-    b.angle = b.has_angle ? b.angle + 0.3f * stroke_angle_difference(target, b.angle) : target;  // turn, don't snap
-    b.has_angle = true;
+    b.angle = b.styled ? b.angle + 0.3f * stroke_angle_difference(target, b.angle) : target;  // turn, don't snap
+    b.styled = true;
     const Palette& palette = rule && rule->palette ? *rule->palette : style_.palette;
     const float opacity = rule && rule->opacity ? *rule->opacity : style_.opacity;
     const float aspect = shape_aspect(look.shape, style_.aspect);

@@ -2,8 +2,6 @@
 
 #include "client/gl/gl.hpp"
 #include "client/render/painterly/oil_filter.hpp"
-#include "client/render/painterly/painterly_renderer.hpp"
-#include "common/error.hpp"
 
 namespace inkwire {
 
@@ -24,21 +22,15 @@ std::vector<ParamSpec> OilFilterRenderer::params() {
 void OilFilterRenderer::configure(const StyleParams& p) {
   radius_ = p.get_int("radius");
   levels_ = p.get_int("levels");
-  if (p.get_text("reference") != reference_name_) {
-    reference_ = make_reference_renderer(p.get_text("reference"));
-    reference_name_ = p.get_text("reference");
-    if (object_) reference_->prepare(*object_);
-  }
+  capture_.use_renderer(p.get_text("reference"));
 }
 
 void OilFilterRenderer::prepare(const SceneObject& object) {
-  object_ = &object;
-  if (reference_) reference_->prepare(object);
+  capture_.prepare(object);
 }
 
 void OilFilterRenderer::draw(const FrameState& frame) {
-  if (!object_ || !reference_) throw Error("OilFilterRenderer::draw(): prepare() was not called");
-  const Image& reference = capture_.capture(*reference_, object_->mesh, frame);
+  const Image& reference = capture_.capture(frame);
   if (reference.empty()) return;
   filtered_.update(oil_filter(reference, radius_, levels_));
   matte_.update(reference);
@@ -51,7 +43,7 @@ void OilFilterRenderer::draw(const FrameState& frame) {
 }
 
 std::map<std::string, double> OilFilterRenderer::counters() const {
-  return {{"capture_pixels", double(capture_.rect().width) * capture_.rect().height}, {"radius", double(radius_)}};
+  return {{"capture_pixels", capture_.pixels()}, {"radius", double(radius_)}};
 }
 
 }  // namespace inkwire

@@ -23,9 +23,6 @@ class OilFilterRenderer final : public Renderer {
   ReferenceCapture capture_;
   RectImage rect_image_;
   gl::Texture filtered_, matte_;
-  std::unique_ptr<Renderer> reference_;
-  std::string reference_name_;
-  const SceneObject* object_ = nullptr;
   int radius_ = 5, levels_ = 20;
 };
 

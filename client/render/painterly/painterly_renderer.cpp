@@ -2,16 +2,8 @@
 
 #include <algorithm>
 
-#include "client/render/styles.hpp"
-#include "common/error.hpp"
 
 namespace inkwire {
-
-std::unique_ptr<Renderer> make_reference_renderer(const std::string& name) {
-  if (name.find("painterly") != std::string::npos || name.find("oil-filter") != std::string::npos)
-    throw Error("reference renderer '" + name + "' is itself a painting: pick default, comic, comic-extended, ...");
-  return make_renderer(name);
-}
 
 PainterlyRenderer::PainterlyRenderer() = default;
 
@@ -65,22 +57,16 @@ void PainterlyRenderer::configure(const StyleParams& p) {
     style_key_ = key;
     fresh_ = true;
   }
-  if (p.get_text("reference") != reference_name_) {
-    reference_ = make_reference_renderer(p.get_text("reference"));
-    reference_name_ = p.get_text("reference");
-    if (object_) reference_->prepare(*object_);
-  }
+  capture_.use_renderer(p.get_text("reference"));
 }
 
 void PainterlyRenderer::prepare(const SceneObject& object) {
-  object_ = &object;
-  if (reference_) reference_->prepare(object);
+  capture_.prepare(object);
   fresh_ = true;
 }
 
 void PainterlyRenderer::draw(const FrameState& frame) {
-  if (!object_ || !reference_) throw Error("PainterlyRenderer::draw(): prepare() was not called");
-  const Image& reference = capture_.capture(*reference_, object_->mesh, frame);
+  const Image& reference = capture_.capture(frame);
   painter_.paint(reference, capture_.rect(), /*underpaint=*/true, fresh_ ? settle_ : 0);
   fresh_ = false;
 }
@@ -92,7 +78,7 @@ std::map<std::string, double> PainterlyRenderer::counters() const {
           {"visible_fraction", field->visible_fraction()},
           {"respawn_fraction", field->respawn_fraction()},
           {"brush_side_px", painter_.brush_side()},
-          {"capture_pixels", double(capture_.rect().width) * capture_.rect().height}};
+          {"capture_pixels", capture_.pixels()}};
 }
 
 }  // namespace inkwire

@@ -26,18 +26,12 @@ class PainterlyRenderer final : public Renderer {
  private:
   ReferenceCapture capture_;
   BrushPainter painter_;
-  std::unique_ptr<Renderer> reference_;
-  std::string reference_name_, style_key_;
-  const SceneObject* object_ = nullptr;
+  std::string style_key_;
   int settle_ = 30;
   bool fresh_ = true;  // no frame painted since the field was (re)made
 };
 
 // The style file named by `params` ("style") with the parameters set there applied over it.
 PaintStyle paint_style_from_params(const StyleParams& params);
-
-// Makes the reference renderer a painterly style captures, refusing painterly styles
-// themselves (a painting of a painting would recurse).
-std::unique_ptr<Renderer> make_reference_renderer(const std::string& name);
 
 }  // namespace inkwire

@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "client/gl/gl.hpp"
+#include "client/render/styles.hpp"
+#include "common/error.hpp"
 
 namespace inkwire {
 
@@ -34,11 +36,26 @@ FramebufferBinding::~FramebufferBinding() {
   glViewport(viewport_.x, viewport_.y, viewport_.z, viewport_.w);
 }
 
-const Image& ReferenceCapture::capture(Renderer& reference, const Mesh& mesh, const FrameState& frame) {
+void ReferenceCapture::use_renderer(const std::string& name) {
+  if (name == name_ && reference_) return;
+  if (name.find("painterly") != std::string::npos || name.find("oil-filter") != std::string::npos)
+    throw Error("reference renderer '" + name + "' is itself a painting: pick default, comic, comic-extended, ...");
+  reference_ = make_renderer(name);
+  name_ = name;
+  if (object_) reference_->prepare(*object_);
+}
+
+void ReferenceCapture::prepare(const SceneObject& object) {
+  object_ = &object;
+  if (reference_) reference_->prepare(object);
+}
+
+const Image& ReferenceCapture::capture(const FrameState& frame) {
+  if (!object_ || !reference_) throw Error("ReferenceCapture::capture(): no renderer or object yet");
   const FramebufferBinding restore;
   if (!canvas_ || canvas_->size() != frame.viewport) canvas_ = std::make_unique<Canvas>(frame.viewport.x, frame.viewport.y, 1);
   // Outlines and strokes reach a little beyond the bounding box: a few pixels of margin.
-  rect_ = projected_rect(mesh.positions, frame.model_view_projection(), frame.viewport, 6);
+  rect_ = projected_rect(object_->mesh.positions, frame.model_view_projection(), frame.viewport, 6);
   if (rect_.empty()) {
     image_ = Image();
     return image_;
@@ -52,7 +69,7 @@ const Image& ReferenceCapture::capture(Renderer& reference, const Mesh& mesh, co
   glDepthMask(GL_TRUE);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-  reference.draw(frame);
+  reference_->draw(frame);
   glDisable(GL_SCISSOR_TEST);
   image_ = canvas_->read(rect_.x, rect_.y, rect_.width, rect_.height);
   return image_;

@@ -3,6 +3,7 @@
 // the screen rectangle of its projected bounding box. The capture is cleared to transparent
 // first, so its alpha is the object's matte.
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -27,14 +28,24 @@ PixelRect projected_rect(const std::vector<glm::vec3>& points, const glm::mat4& 
 
 class ReferenceCapture {
  public:
-  // Draws `reference` for `frame` into an off-screen canvas the size of the frame's viewport,
+  // Picks the renderer whose picture is captured (nothing happens when the name is unchanged).
+  // Throws inkwire::Error for unknown styles and for painterly ones: a painting of a painting
+  // would recurse.
+  void use_renderer(const std::string& name);
+  const std::string& renderer_name() const { return name_; }
+  void prepare(const SceneObject& object);
+
+  // Draws the object for `frame` into an off-screen canvas the size of the frame's viewport,
   // scissored to the object's rectangle, and reads back that rectangle only. Leaves the
   // caller's framebuffer and viewport bound again. Returns the image (top row first).
-  const Image& capture(Renderer& reference, const Mesh& mesh, const FrameState& frame);
-  const Image& image() const { return image_; }
+  const Image& capture(const FrameState& frame);
   PixelRect rect() const { return rect_; }
+  double pixels() const { return double(rect_.width) * rect_.height; }
 
  private:
+  std::string name_;
+  std::unique_ptr<Renderer> reference_;
+  const SceneObject* object_ = nullptr;
   std::unique_ptr<Canvas> canvas_;
   Image image_;
   PixelRect rect_;
