@@ -1,0 +1,259 @@
+// One serialise function per message: reads (with validation), writes and measures.
+#include "protocol/messages.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <utility>
+
+#include <glm/geometric.hpp>
+
+#include "protocol/framing.hpp"
+
+namespace inkwire::protocol {
+namespace {
+
+void check(bool ok, const char* reason) {
+  if (!ok) throw ProtocolError(reason);
+}
+
+template <class Stream, class Enum>
+void enumeration(Stream& s, Enum& v, unsigned first, unsigned last, const char* what) {
+  if constexpr (sizeof(Enum) == 1) {
+    uint8_t raw = uint8_t(v);
+    s.u8(raw);
+    v = Enum(raw);
+  } else {
+    uint16_t raw = uint16_t(v);
+    s.u16(raw);
+    v = Enum(raw);
+  }
+  if constexpr (Stream::reading)
+    if (unsigned(v) < first || unsigned(v) > last) throw ProtocolError(std::string("unknown ") + what + " " + std::to_string(unsigned(v)));
+}
+
+// Names (sessions, renderers, setting keys) are plain: letters, digits and - _ . + =, so they
+// can be logged, used as keys and passed to the style registry without quoting.
+bool plain(const std::string& text, const char* extra) {
+  for (char c : text)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && !std::strchr(extra, c)) return false;
+  return true;
+}
+
+template <class Stream>
+void serialise(Stream& s, Hello& m) {
+  s.u32(m.magic);
+  s.u16(m.version);
+  s.text(m.client_name, kMaxName);
+}
+
+template <class Stream>
+void serialise(Stream& s, Welcome& m) {
+  s.u16(m.version);
+  s.text(m.server_name, kMaxName);
+}
+
+template <class Stream>
+void serialise(Stream& s, ErrorMessage& m) {
+  enumeration(s, m.code, 1, 9, "error code");
+  s.text(m.reason, kMaxReason);
+}
+
+template <class Stream>
+void serialise(Stream& s, Ping& m) {
+  s.u64(m.nonce);
+}
+
+template <class Stream>
+void serialise(Stream& s, Pong& m) {
+  s.u64(m.nonce);
+}
+
+template <class Stream>
+void serialise(Stream& s, Join& m) {
+  s.text(m.session, kMaxName);
+  s.text(m.token, kMaxToken);
+  if constexpr (Stream::reading) check(!m.session.empty() && plain(m.session, "-_."), "session name must be letters, digits, - _ .");
+}
+
+template <class Stream>
+void serialise(Stream&, Leave&) {}
+
+template <class Stream>
+void serialise(Stream& s, StyleChange& m) {
+  s.text(m.renderer, kMaxRenderer);
+  const size_t n = s.count(m.settings.size(), kMaxSettings, "style settings");
+  if constexpr (Stream::reading) m.settings.resize(n);
+  for (std::string& setting : m.settings) {
+    s.text(setting, kMaxSetting);
+    if constexpr (Stream::reading) {
+      const size_t eq = setting.find('=');
+      check(eq != std::string::npos && eq > 0 && plain(setting.substr(0, eq), "_-"), "style setting is not KEY=VALUE");
+    }
+  }
+  if constexpr (Stream::reading) check(!m.renderer.empty() && plain(m.renderer, "-_+"), "renderer name must be letters, digits, - _ +");
+}
+
+template <class Stream>
+void serialise(Stream& s, CameraPose& m) {
+  s.u32(m.sequence);
+  s.vec3(m.position);
+  s.vec3(m.target);
+  s.vec3(m.up);
+  s.f32(m.fov_y_degrees);
+  if constexpr (Stream::reading) {
+    check(m.fov_y_degrees >= 1.0f && m.fov_y_degrees <= 170.0f, "camera field of view outside 1..170 degrees");
+    check(glm::length(m.up) > 1e-6f, "camera up vector is zero");
+    check(glm::length(m.position - m.target) > 1e-6f, "camera position equals its target");
+    check(glm::length(m.position) < 1e6f && glm::length(m.target) < 1e6f, "camera outside the +-1e6 world");
+  }
+}
+
+template <class Stream>
+void serialise(Stream& s, ObjectPose& m) {
+  s.u32(m.sequence);
+  s.f32(m.rotation.x), s.f32(m.rotation.y), s.f32(m.rotation.z), s.f32(m.rotation.w);
+  s.vec3(m.translation);
+  s.f32(m.scale);
+  if constexpr (Stream::reading) {
+    check(std::abs(glm::length(m.rotation) - 1.0f) < 1e-3f, "object rotation is not a unit quaternion");
+    check(m.scale > 1e-6f && m.scale < 1e6f, "object scale outside 1e-6..1e6");
+    check(glm::length(m.translation) < 1e6f, "object outside the +-1e6 world");
+  }
+}
+
+template <class Stream>
+void serialise(Stream& s, ExpressionCode& m) {
+  s.u8(m.code);
+  s.u8(m.intensity);
+  s.u16(m.sequence);
+  for (int8_t& p : m.params) {
+    auto raw = uint8_t(p);
+    s.u8(raw);
+    p = int8_t(raw);
+  }
+}
+
+template <class Stream>
+void serialise(Stream& s, TweenData& m) {
+  s.u16(m.pair);
+  s.blob(m.data, kMaxTween);
+}
+
+template <class Stream>
+void serialise(Stream& s, AssetAnnounce& m) {
+  s.hash(m.hash);
+  s.u64(m.size);
+  enumeration(s, m.kind, 1, 5, "asset kind");
+  s.text(m.name, kMaxName);
+  if constexpr (Stream::reading) {
+    check(m.size <= kMaxAssetBytes, "asset larger than 1 GiB");
+    check(!m.name.empty() && m.name[0] != '.' && plain(m.name, "-_."), "asset name must be a plain file name");
+  }
+}
+
+template <class Stream>
+void serialise(Stream& s, AssetRequest& m) {
+  s.hash(m.hash);
+  s.u64(m.offset);
+  s.u32(m.length);
+  if constexpr (Stream::reading) check(m.length > 0 && m.length <= kMaxChunk && m.offset <= kMaxAssetBytes, "asset request outside 1..65536 bytes");
+}
+
+template <class Stream>
+void serialise(Stream& s, AssetChunk& m) {
+  s.hash(m.hash);
+  s.u64(m.offset);
+  s.blob(m.data, kMaxChunk);
+  if constexpr (Stream::reading) check(m.offset + m.data.size() <= kMaxAssetBytes, "asset chunk beyond 1 GiB");
+}
+
+template <class Stream>
+void serialise(Stream& s, Snapshot& m) {
+  s.text(m.session, kMaxName);
+  enumeration(s, m.kind, 1, 3, "session kind");
+  s.u32(m.revision);
+  const size_t n = s.count(m.assets.size(), kMaxAssets, "assets");
+  if constexpr (Stream::reading) m.assets.resize(n);
+  for (AssetAnnounce& a : m.assets) serialise(s, a);
+  serialise(s, m.style);
+  serialise(s, m.camera);
+  serialise(s, m.object);
+  serialise(s, m.expression);
+}
+
+template <size_t... I>
+Message decode_alternative(size_t index, ReadStream& s, std::index_sequence<I...>) {
+  Message m;
+  // Picks the alternative whose index matches and reads it in place.
+  ((I == index ? (m.emplace<I>(), serialise(s, std::get<I>(m)), true) : false) || ...);
+  return m;
+}
+
+}  // namespace
+
+std::string to_string(SessionKind kind) {
+  switch (kind) {
+    case SessionKind::Scene: return "scene";
+    case SessionKind::Turntable: return "turntable";
+    case SessionKind::Conference: return "conference";
+  }
+  return "unknown";
+}
+
+SessionKind session_kind_from_string(const std::string& name) {
+  for (SessionKind k : {SessionKind::Scene, SessionKind::Turntable, SessionKind::Conference})
+    if (to_string(k) == name) return k;
+  throw Error("session kind '" + name + "' is not scene, turntable or conference");
+}
+
+std::string to_string(AssetKind kind) {
+  static const char* names[] = {"mesh", "image", "samples", "tween", "landmarks"};
+  return unsigned(kind) >= 1 && unsigned(kind) <= 5 ? names[unsigned(kind) - 1] : "unknown";
+}
+
+MessageType type_of(const Message& m) { return MessageType(m.index() + 1); }
+
+const char* name_of(MessageType type) {
+  static const char* names[] = {"hello", "welcome", "error", "ping", "pong", "join", "leave", "snapshot",
+                                "style-change", "camera-pose", "object-pose", "expression-code", "tween-data",
+                                "asset-announce", "asset-request", "asset-chunk"};
+  const auto i = unsigned(type);
+  return i >= 1 && i <= kMessageTypes ? names[i - 1] : "unknown";
+}
+
+bool is_state(MessageType type) {
+  return type == MessageType::StyleChange || type == MessageType::CameraPose || type == MessageType::ObjectPose ||
+         type == MessageType::ExpressionCode || type == MessageType::Snapshot;
+}
+
+Bytes encode(const Message& message) {
+  Bytes out(kHeaderBytes);
+  WriteStream s(out);
+  // The streams take fields by reference so one function serves reading too; writing never
+  // changes them.
+  std::visit([&](const auto& m) { serialise(s, const_cast<std::remove_const_t<std::remove_reference_t<decltype(m)>>&>(m)); }, message);
+  const size_t payload = out.size() - kHeaderBytes;
+  if (payload > kMaxPayload) throw ProtocolError(std::string(name_of(type_of(message))) + " message exceeds the frame limit");
+  const auto type = uint16_t(type_of(message));
+  for (int i = 0; i < 4; ++i) out[size_t(i)] = uint8_t(payload >> (8 * i));
+  out[4] = uint8_t(type), out[5] = uint8_t(type >> 8);
+  return out;
+}
+
+size_t encoded_size(const Message& message) {
+  MeasureStream s;
+  std::visit([&](const auto& m) { serialise(s, const_cast<std::remove_const_t<std::remove_reference_t<decltype(m)>>&>(m)); }, message);
+  return kHeaderBytes + s.bytes;
+}
+
+Message decode(MessageType type, const uint8_t* payload, size_t size) {
+  if (unsigned(type) < 1 || unsigned(type) > kMessageTypes) throw ProtocolError("unknown message type " + std::to_string(unsigned(type)));
+  if (size > kMaxPayload) throw ProtocolError("payload exceeds the frame limit");
+  ReadStream s(payload, size);
+  Message m = decode_alternative(size_t(type) - 1, s, std::make_index_sequence<std::variant_size_v<Message>>{});
+  s.finish();
+  return m;
+}
+
+}  // namespace inkwire::protocol

@@ -1,0 +1,188 @@
+#pragma once
+// Every message of the Inkwire wire protocol (protocol/SPEC.md), each with one serialise
+// function that reads, writes and measures it. Limits are part of the protocol: a peer sending
+// more is malformed and is disconnected with an Error message.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "protocol/streams.hpp"
+
+namespace inkwire::protocol {
+
+inline constexpr uint32_t kMagic = 0x574B4E49;  // the bytes "INKW" read as a little-endian u32
+inline constexpr uint16_t kVersion = 1;
+
+inline constexpr size_t kMaxName = 64;           // session, client and server names
+inline constexpr size_t kMaxToken = 128;
+inline constexpr size_t kMaxReason = 512;
+inline constexpr size_t kMaxRenderer = 128;      // "hatching+sketch-charcoal"
+inline constexpr size_t kMaxSetting = 300;       // one KEY=VALUE
+inline constexpr size_t kMaxSettings = 64;
+inline constexpr size_t kMaxAssets = 32;         // per session
+inline constexpr size_t kMaxChunk = 64 * 1024;   // asset bytes per chunk
+inline constexpr size_t kMaxTween = 16 * 1024;   // one pair's tween data
+inline constexpr uint64_t kMaxAssetBytes = uint64_t(1) << 30;
+
+enum class MessageType : uint16_t {
+  Hello = 1, Welcome, Error, Ping, Pong, Join, Leave, Snapshot, StyleChange, CameraPose,
+  ObjectPose, ExpressionCode, TweenData, AssetAnnounce, AssetRequest, AssetChunk
+};
+inline constexpr uint16_t kMessageTypes = 16;
+
+enum class SessionKind : uint8_t { Scene = 1, Turntable = 2, Conference = 3 };
+enum class AssetKind : uint8_t { Mesh = 1, Image = 2, Samples = 3, Tween = 4, Landmarks = 5 };
+enum class ErrorCode : uint16_t {
+  BadVersion = 1, Malformed = 2, NoSession = 3, BadToken = 4, NotJoined = 5, NoAsset = 6,
+  TooSlow = 7, ShuttingDown = 8, Refused = 9
+};
+
+std::string to_string(SessionKind kind);
+SessionKind session_kind_from_string(const std::string& name);  // throws Error
+std::string to_string(AssetKind kind);
+
+struct Hello {
+  static constexpr MessageType type = MessageType::Hello;
+  bool operator==(const Hello&) const = default;
+  uint32_t magic = kMagic;
+  uint16_t version = kVersion;
+  std::string client_name;
+};
+
+struct Welcome {
+  static constexpr MessageType type = MessageType::Welcome;
+  bool operator==(const Welcome&) const = default;
+  uint16_t version = kVersion;
+  std::string server_name;
+};
+
+struct ErrorMessage {
+  static constexpr MessageType type = MessageType::Error;
+  bool operator==(const ErrorMessage&) const = default;
+  ErrorCode code = ErrorCode::Refused;
+  std::string reason;
+};
+
+struct Ping {
+  static constexpr MessageType type = MessageType::Ping;
+  bool operator==(const Ping&) const = default;
+  uint64_t nonce = 0;
+};
+
+struct Pong {
+  static constexpr MessageType type = MessageType::Pong;
+  bool operator==(const Pong&) const = default;
+  uint64_t nonce = 0;
+};
+
+struct Join {
+  static constexpr MessageType type = MessageType::Join;
+  bool operator==(const Join&) const = default;
+  std::string session, token;
+};
+
+struct Leave {
+  static constexpr MessageType type = MessageType::Leave;
+  bool operator==(const Leave&) const = default;
+};
+
+// A renderer (a registered style, or styles joined by '+') and its KEY=VALUE settings, exactly
+// what `inkwire-render --style NAME --set KEY=VALUE` takes.
+struct StyleChange {
+  static constexpr MessageType type = MessageType::StyleChange;
+  bool operator==(const StyleChange&) const = default;
+  std::string renderer = "default";
+  std::vector<std::string> settings;
+};
+
+struct CameraPose {
+  static constexpr MessageType type = MessageType::CameraPose;
+  bool operator==(const CameraPose&) const = default;
+  uint32_t sequence = 0;  // per sender, increasing: receivers may drop older ones
+  glm::vec3 position{0, 0, 5}, target{0}, up{0, 1, 0};
+  float fov_y_degrees = 45.0f;
+};
+
+struct ObjectPose {
+  static constexpr MessageType type = MessageType::ObjectPose;
+  bool operator==(const ObjectPose&) const = default;
+  uint32_t sequence = 0;
+  glm::vec4 rotation{1, 0, 0, 0};  // unit quaternion (w, x, y, z)
+  glm::vec3 translation{0};
+  float scale = 1.0f;
+};
+
+// Eight bytes of payload (SPEC F4): what the face shows and how strongly, plus a few continuous
+// parameters (e.g. mouth open, brow raise) in -127..127.
+struct ExpressionCode {
+  static constexpr MessageType type = MessageType::ExpressionCode;
+  bool operator==(const ExpressionCode&) const = default;
+  uint8_t code = 0, intensity = 0;
+  uint16_t sequence = 0;
+  std::array<int8_t, 4> params{};
+};
+
+// Encoded tween data (control-point paths) for one pair of sample views.
+struct TweenData {
+  static constexpr MessageType type = MessageType::TweenData;
+  bool operator==(const TweenData&) const = default;
+  uint16_t pair = 0;
+  Bytes data;
+};
+
+struct AssetAnnounce {
+  static constexpr MessageType type = MessageType::AssetAnnounce;
+  bool operator==(const AssetAnnounce&) const = default;
+  Hash hash{};
+  uint64_t size = 0;
+  AssetKind kind = AssetKind::Mesh;
+  std::string name;  // file name with extension, e.g. "cow.off": tells loaders the format
+};
+
+struct AssetRequest {
+  static constexpr MessageType type = MessageType::AssetRequest;
+  bool operator==(const AssetRequest&) const = default;
+  Hash hash{};
+  uint64_t offset = 0;
+  uint32_t length = 0;
+};
+
+struct AssetChunk {
+  static constexpr MessageType type = MessageType::AssetChunk;
+  bool operator==(const AssetChunk&) const = default;
+  Hash hash{};
+  uint64_t offset = 0;
+  Bytes data;
+};
+
+// Everything a client needs to draw a session: sent on join and whenever a client asks again.
+struct Snapshot {
+  static constexpr MessageType type = MessageType::Snapshot;
+  bool operator==(const Snapshot&) const = default;
+  std::string session;
+  SessionKind kind = SessionKind::Scene;
+  uint32_t revision = 0;  // counts changes since the session was created
+  std::vector<AssetAnnounce> assets;
+  StyleChange style;
+  CameraPose camera;
+  ObjectPose object;
+  ExpressionCode expression;
+};
+
+// Alternatives in MessageType order: index + 1 == type code.
+using Message = std::variant<Hello, Welcome, ErrorMessage, Ping, Pong, Join, Leave, Snapshot, StyleChange, CameraPose,
+                             ObjectPose, ExpressionCode, TweenData, AssetAnnounce, AssetRequest, AssetChunk>;
+
+MessageType type_of(const Message& m);
+const char* name_of(MessageType type);
+
+// State messages: only the latest of each matters, so queues may replace a pending one.
+bool is_state(MessageType type);
+
+}  // namespace inkwire::protocol
