@@ -38,6 +38,11 @@ Camera orbit_camera(const Bounds& bounds, float azimuth_degrees, float elevation
   return c;
 }
 
+Camera scene_orbit_camera(float azimuth_degrees, float elevation_degrees, float distance_diagonals) {
+  const float h = kSceneDiagonal / (2.0f * std::sqrt(3.0f));
+  return orbit_camera(Bounds{glm::vec3(-h), glm::vec3(h)}, azimuth_degrees, elevation_degrees, distance_diagonals);
+}
+
 glm::vec3 default_light_direction(const Camera& camera) {
   const glm::mat4 view_to_world = glm::inverse(camera.view());
   return glm::normalize(glm::vec3(view_to_world * glm::vec4(-0.4f, 0.6f, 0.7f, 0.0f)));

@@ -30,6 +30,12 @@ Camera thesis_camera();
 // distance in bounding-box diagonals from the centre.
 Camera orbit_camera(const Bounds& bounds, float azimuth_degrees, float elevation_degrees, float distance_diagonals);
 
+// Sessions share one scene space: every object centred and scaled to this bounding-box diagonal,
+// so camera poses mean the same on every client whatever the mesh's own units.
+inline constexpr float kSceneDiagonal = 10.0f;
+// orbit_camera() around the centre of the scene space.
+Camera scene_orbit_camera(float azimuth_degrees, float elevation_degrees, float distance_diagonals);
+
 // A directional light for a camera: from above-left of the viewer, as a unit vector pointing
 // from the surface toward the light, in world space.
 glm::vec3 default_light_direction(const Camera& camera);

@@ -113,7 +113,7 @@ struct ObjectPose {
   static constexpr MessageType type = MessageType::ObjectPose;
   bool operator==(const ObjectPose&) const = default;
   uint32_t sequence = 0;
-  glm::vec4 rotation{1, 0, 0, 0};  // unit quaternion (w, x, y, z)
+  glm::vec4 rotation{0, 0, 0, 1};  // unit quaternion (x, y, z, w): identity
   glm::vec3 translation{0};
   float scale = 1.0f;
 };

@@ -19,6 +19,8 @@ class Context {
   // Window backends present the default framebuffer and report the user closing them.
   virtual void present() {}
   virtual bool should_close() const { return false; }
+  // The GLFWwindow of a window backend (for input callbacks and UI), null off-screen.
+  virtual void* native_window() const { return nullptr; }
 
   std::string gl_renderer() const;  // GL_RENDERER of the current context
   std::string gl_version() const;   // GL_VERSION of the current context

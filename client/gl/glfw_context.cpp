@@ -58,6 +58,7 @@ class GlfwContext final : public Context {
     glfwPollEvents();
   }
   bool should_close() const override { return glfwWindowShouldClose(window_); }
+  void* native_window() const override { return window_; }
 
  private:
   GLFWwindow* window_ = nullptr;

@@ -1,0 +1,65 @@
+// inkwire-client: joins a session and draws it locally, in a window or headless (CONTRACTS.md).
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "client/gl/context.hpp"
+#include "client/viewer/session_view.hpp"
+#include "client/viewer/viewer.hpp"
+#include "common/error.hpp"
+
+using namespace inkwire;
+
+int main(int argc, char** argv) {
+  std::string connect = "127.0.0.1:7878", session, token, size = "640x480", cache_dir, style, view, name = "inkwire-client";
+  std::vector<std::string> settings;
+  bool headless = false;
+  ViewerOptions o;
+  CLI::App app{"inkwire-client: joins an Inkwire session and draws it locally (window, or headless to PNG/MP4)"};
+  app.add_option("--connect", connect, "server HOST:PORT");
+  app.add_option("--session", session, "session name")->required();
+  app.add_option("--token", token, "the session's token, if it has one");
+  app.add_flag("--headless", headless, "render to files instead of a window (the default without a display)");
+  app.add_option("--frames", o.frames, "headless: frames to render")->check(CLI::Range(1, 100000));
+  app.add_option("--fps", o.fps, "frames per second (paced in real time)")->check(CLI::Range(1, 240));
+  app.add_option("--out", o.out, "headless: output PNG, %04d pattern or .mp4");
+  app.add_option("--size", size, "window or image size WxH");
+  app.add_option("--cache", cache_dir, "asset cache folder (default ~/.cache/inkwire)");
+  app.add_option("--name", name, "this client's name in the server's logs");
+  app.add_option("--style", style, "after joining, change the session's style to this (every client follows)");
+  app.add_option("--set", settings, "KEY=VALUE setting for --style (repeatable)");
+  app.add_option("--view", view, "after joining, move the session's camera: AZIMUTH,ELEVATION[,DISTANCE in diagonals]");
+  app.add_option("--frame-log", o.frame_log, "headless: write one JSON line per frame (frame, revision, style, time)");
+  app.add_option("--gl", o.gl, "headless GL backend: osmesa, egl or auto");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    if (std::sscanf(size.c_str(), "%dx%d", &o.size.x, &o.size.y) != 2 || o.size.x < 16 || o.size.y < 16 || o.size.x > 8192 || o.size.y > 8192)
+      throw Error("--size '" + size + "' is not WxH with sides 16..8192");
+    if (!settings.empty() && style.empty()) throw Error("--set needs --style");
+    std::signal(SIGPIPE, SIG_IGN);
+    AssetCache cache(cache_dir.empty() ? AssetCache::default_dir() : std::filesystem::path(cache_dir));
+    SessionClient client(connect, name);
+    client.join(session, token);
+    if (!style.empty()) client.send(protocol::StyleChange{.renderer = style, .settings = settings});
+    if (!view.empty()) {
+      float az = 0, el = 0, dist = 1.4f;
+      if (std::sscanf(view.c_str(), "%f,%f,%f", &az, &el, &dist) < 2 || dist <= 0.05f || dist > 1000.0f)
+        throw Error("--view '" + view + "' is not AZIMUTH,ELEVATION[,DISTANCE]");
+      client.send(orbit_pose(az, el, dist, 1));
+    }
+    if (!headless && !window_system_available()) {
+      if (o.frames == 0 || o.out.empty()) throw Error("no display: run with --headless --frames N --out PATH");
+      headless = true;
+    }
+    return headless ? run_headless(client, cache, o) : run_window(client, cache, o);
+  } catch (const std::exception& e) {
+    std::cerr << "inkwire-client: " << e.what() << "\n";
+    return 1;
+  }
+}

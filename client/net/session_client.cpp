@@ -1,0 +1,207 @@
+#include "client/net/session_client.hpp"
+
+#include <cstdio>
+
+#include "common/error.hpp"
+
+namespace inkwire {
+namespace {
+
+using namespace protocol;
+constexpr auto kReplyTimeout = std::chrono::seconds(10);
+constexpr int kRequestsAhead = 4;  // protocol/SPEC.md: at most 4 asset requests outstanding
+
+// Applies a state message to a snapshot; false if it is not one.
+bool apply_change(Snapshot& s, const Message& m) {
+  if (const auto* style = std::get_if<StyleChange>(&m)) s.style = *style;
+  else if (const auto* camera = std::get_if<CameraPose>(&m)) s.camera = *camera;
+  else if (const auto* object = std::get_if<ObjectPose>(&m)) s.object = *object;
+  else if (const auto* expression = std::get_if<ExpressionCode>(&m)) s.expression = *expression;
+  else return false;
+  ++s.revision;
+  return true;
+}
+
+}  // namespace
+
+SessionClient::SessionClient(const std::string& host_port, const std::string& client_name) {
+  const size_t colon = host_port.rfind(':');
+  if (colon == std::string::npos || colon == 0) throw Error("--connect '" + host_port + "' is not HOST:PORT");
+  std::error_code ec;
+  asio::ip::tcp::resolver resolver(io_);
+  const auto endpoints = resolver.resolve(host_port.substr(0, colon), host_port.substr(colon + 1), ec);
+  if (!ec) asio::connect(socket_, endpoints, ec);
+  if (ec) throw Error("cannot connect to " + host_port + ": " + ec.message());
+  socket_.set_option(asio::ip::tcp::no_delay(true), ec);
+  start_reading();
+  thread_ = std::thread([this] { io_.run(); });
+  send(Hello{.client_name = client_name.substr(0, kMaxName)});
+  const Message reply = wait_for([](const Message& m) { return std::holds_alternative<Welcome>(m); }, kReplyTimeout);
+  if (const auto* error = std::get_if<ErrorMessage>(&reply)) throw Error("server refused the connection: " + error->reason);
+}
+
+SessionClient::~SessionClient() {
+  asio::post(io_, [this] {
+    std::error_code ec;
+    socket_.shutdown(asio::ip::tcp::socket::shutdown_both, ec);
+    socket_.close(ec);
+  });
+  if (thread_.joinable()) thread_.join();
+}
+
+void SessionClient::start_reading() {
+  socket_.async_read_some(asio::buffer(read_buffer_), [this](std::error_code ec, size_t n) {
+    if (ec) {
+      std::lock_guard lock(mutex_);
+      connected_ = false;
+      if (ec != asio::error::eof && ec != asio::error::operation_aborted) last_error_ = ec.message();
+      changed_.notify_all();
+      return;
+    }
+    bytes_received_ += n;
+    try {
+      decoder_.feed(read_buffer_.data(), n);
+      while (auto m = decoder_.next()) on_message(std::move(*m));
+    } catch (const ProtocolError& e) {
+      std::lock_guard lock(mutex_);
+      last_error_ = std::string("malformed data from the server: ") + e.what();
+      connected_ = false;
+      changed_.notify_all();
+      socket_.close(ec);
+      return;
+    }
+    start_reading();
+  });
+}
+
+void SessionClient::on_message(Message message) {
+  if (const auto* ping = std::get_if<Ping>(&message)) {
+    send(Pong{.nonce = ping->nonce});
+    return;
+  }
+  std::lock_guard lock(mutex_);
+  if (const auto* snapshot = std::get_if<Snapshot>(&message)) {
+    state_ = *snapshot;
+    ++updates_;
+    replies_.push_back(std::move(message));
+  } else if (apply_change(state_, message)) {
+    ++updates_;
+  } else if (const auto* error = std::get_if<ErrorMessage>(&message)) {
+    last_error_ = error->reason;
+    std::fprintf(stderr, "inkwire-client: server says: %s\n", error->reason.c_str());
+    replies_.push_back(std::move(message));
+  } else if (std::holds_alternative<Welcome>(message) || std::holds_alternative<AssetChunk>(message)) {
+    replies_.push_back(std::move(message));
+  }
+  changed_.notify_all();
+}
+
+void SessionClient::send(const Message& message) {
+  {
+    std::lock_guard lock(mutex_);
+    if (apply_change(state_, message)) ++updates_, changed_.notify_all();
+  }
+  auto frame = std::make_shared<Bytes>(encode(message));
+  bytes_sent_ += frame->size();
+  asio::post(io_, [this, frame] {
+    outbox_.push_back(std::move(*frame));
+    if (!writing_) write_next();
+  });
+}
+
+void SessionClient::write_next() {
+  if (outbox_.empty()) {
+    writing_ = false;
+    return;
+  }
+  writing_ = true;
+  asio::async_write(socket_, asio::buffer(outbox_.front()), [this](std::error_code ec, size_t) {
+    outbox_.pop_front();
+    if (ec) {
+      outbox_.clear();
+      writing_ = false;
+      return;
+    }
+    write_next();
+  });
+}
+
+Message SessionClient::wait_for(std::function<bool(const Message&)> wanted, std::chrono::milliseconds timeout) {
+  std::unique_lock lock(mutex_);
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  for (;;) {
+    for (auto it = replies_.begin(); it != replies_.end(); ++it) {
+      if (wanted(*it) || std::holds_alternative<ErrorMessage>(*it)) {
+        Message m = std::move(*it);
+        replies_.erase(it);
+        return m;
+      }
+    }
+    if (!connected_) throw Error("connection closed" + (last_error_.empty() ? std::string() : ": " + last_error_));
+    if (changed_.wait_until(lock, deadline) == std::cv_status::timeout) throw Error("no answer from the server in time");
+  }
+}
+
+Snapshot SessionClient::join(const std::string& session, const std::string& token) {
+  send(Join{.session = session, .token = token});
+  const Message reply = wait_for([](const Message& m) { return std::holds_alternative<Snapshot>(m); }, kReplyTimeout);
+  if (const auto* error = std::get_if<ErrorMessage>(&reply)) throw Error("cannot join '" + session + "': " + error->reason);
+  return std::get<Snapshot>(reply);
+}
+
+Snapshot SessionClient::state() const {
+  std::lock_guard lock(mutex_);
+  return state_;
+}
+
+uint64_t SessionClient::updates() const {
+  std::lock_guard lock(mutex_);
+  return updates_;
+}
+
+uint64_t SessionClient::wait_for_update(uint64_t seen, std::chrono::milliseconds timeout) const {
+  std::unique_lock lock(mutex_);
+  changed_.wait_for(lock, timeout, [&] { return updates_ > seen || !connected_; });
+  return updates_;
+}
+
+bool SessionClient::connected() const {
+  std::lock_guard lock(mutex_);
+  return connected_;
+}
+
+std::string SessionClient::last_error() const {
+  std::lock_guard lock(mutex_);
+  return last_error_;
+}
+
+std::vector<std::filesystem::path> SessionClient::fetch_assets(const Snapshot& snapshot, AssetCache& cache) {
+  std::vector<std::filesystem::path> paths;
+  for (const AssetAnnounce& asset : snapshot.assets) {
+    if (!cache.has(asset)) {
+      uint64_t received = cache.partial_size(asset), requested = received;
+      while (received < asset.size) {
+        // Keep a few requests in flight so a download is not one round trip per chunk.
+        while (requested < asset.size && requested - received < kRequestsAhead * kMaxChunk) {
+          const auto length = uint32_t(std::min<uint64_t>(kMaxChunk, asset.size - requested));
+          send(AssetRequest{.hash = asset.hash, .offset = requested, .length = length});
+          requested += length;
+        }
+        const Message reply = wait_for([&](const Message& m) {
+          const auto* chunk = std::get_if<AssetChunk>(&m);
+          return chunk && chunk->hash == asset.hash;
+        }, kReplyTimeout);
+        if (const auto* error = std::get_if<ErrorMessage>(&reply)) throw Error("cannot fetch " + asset.name + ": " + error->reason);
+        const auto& chunk = std::get<AssetChunk>(reply);
+        if (chunk.data.empty()) throw Error("server sent an empty chunk of " + asset.name);
+        cache.append(asset, chunk.offset, chunk.data);
+        received += chunk.data.size();
+      }
+      cache.finish(asset);
+    }
+    paths.push_back(cache.path_of(asset));
+  }
+  return paths;
+}
+
+}  // namespace inkwire

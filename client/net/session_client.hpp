@@ -1,0 +1,76 @@
+#pragma once
+// A thin client's connection to a server (SPEC N3-N5): handshake, join, the session's state as
+// it changes, changes sent by this client, and assets fetched into the cache. Network I/O runs
+// on its own thread; the methods here are thread-safe and meant for the render thread.
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+
+#include <asio.hpp>
+
+#include "client/net/asset_cache.hpp"
+#include "protocol/framing.hpp"
+
+namespace inkwire {
+
+class SessionClient {
+ public:
+  // Connects to HOST:PORT and completes the handshake; throws inkwire::Error with the server's
+  // reason (e.g. a version mismatch) or the socket's.
+  SessionClient(const std::string& host_port, const std::string& client_name);
+  ~SessionClient();
+  SessionClient(const SessionClient&) = delete;
+  SessionClient& operator=(const SessionClient&) = delete;
+
+  // Joins a session and waits for its snapshot; throws inkwire::Error (wrong token, no such
+  // session, timeout).
+  protocol::Snapshot join(const std::string& session, const std::string& token);
+  // Sends a message; state messages are also applied to this client's own copy of the state.
+  void send(const protocol::Message& message);
+
+  // The session's current state and how many changes have arrived so far.
+  protocol::Snapshot state() const;
+  uint64_t updates() const;
+  // Waits until more than `seen` updates have arrived or the timeout passes; returns updates().
+  uint64_t wait_for_update(uint64_t seen, std::chrono::milliseconds timeout) const;
+  bool connected() const;
+  std::string last_error() const;
+
+  // Downloads every asset of the snapshot that the cache lacks (resuming partial files) and
+  // returns the cached paths in the snapshot's order. Throws inkwire::Error.
+  std::vector<std::filesystem::path> fetch_assets(const protocol::Snapshot& snapshot, AssetCache& cache);
+
+  uint64_t bytes_sent() const { return bytes_sent_; }
+  uint64_t bytes_received() const { return bytes_received_; }
+
+ private:
+  void start_reading();
+  void on_message(protocol::Message message);
+  void write_next();
+  protocol::Message wait_for(std::function<bool(const protocol::Message&)> wanted, std::chrono::milliseconds timeout);
+
+  asio::io_context io_;
+  asio::ip::tcp::socket socket_{io_};
+  std::thread thread_;
+  std::array<uint8_t, 16384> read_buffer_{};
+  protocol::FrameDecoder decoder_;
+  std::deque<protocol::Bytes> outbox_;  // touched on the I/O thread only
+  bool writing_ = false;
+
+  mutable std::mutex mutex_;
+  mutable std::condition_variable changed_;
+  protocol::Snapshot state_;
+  uint64_t updates_ = 0;
+  bool connected_ = true;
+  std::string last_error_;
+  std::deque<protocol::Message> replies_;  // welcome, snapshot, errors, asset chunks, awaited by callers
+  std::atomic<uint64_t> bytes_sent_{0}, bytes_received_{0};
+};
+
+}  // namespace inkwire

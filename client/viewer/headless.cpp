@@ -1,0 +1,50 @@
+// Headless recording: one frame per tick of the clock, each drawn from the newest state.
+#include <chrono>
+#include <fstream>
+#include <iostream>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "client/gl/canvas.hpp"
+#include "client/gl/context.hpp"
+#include "client/output/frame_writer.hpp"
+#include "client/viewer/session_sync.hpp"
+#include "client/viewer/viewer.hpp"
+#include "common/error.hpp"
+
+namespace inkwire {
+
+int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& o) {
+  if (o.frames <= 0) throw Error("--headless needs --frames N (1..100000)");
+  if (o.out.empty()) throw Error("--headless needs --out PATH");
+  auto context = create_offscreen_context(o.size.x, o.size.y, o.gl);
+  Canvas canvas(o.size.x, o.size.y, 4);
+  SessionSync sync(client, cache);
+  FrameWriter writer(o.out, o.frames, o.fps, false);
+  std::ofstream log;
+  if (!o.frame_log.empty()) log.open(o.frame_log);
+  const auto period = std::chrono::microseconds(1000000 / std::max(o.fps, 1));
+  auto tick = std::chrono::steady_clock::now();
+  for (int i = 0; i < o.frames; ++i) {
+    sync.poll();
+    canvas.bind();
+    sync.view().draw(o.size, double(i) / o.fps, i);
+    writer.write(canvas.read());
+    if (log) {
+      // steady_clock is CLOCK_MONOTONIC: comparable across processes on this machine.
+      const auto now_us = std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
+      log << nlohmann::json{{"frame", i}, {"revision", sync.view().revision()}, {"style", sync.view().style()},
+                            {"monotonic_us", now_us}}.dump() << "\n" << std::flush;
+    }
+    tick += period;
+    std::this_thread::sleep_until(tick);
+  }
+  writer.close();
+  if (!sync.view().error().empty()) std::cerr << "inkwire-client: " << sync.view().error() << "\n";
+  std::cerr << "inkwire-client: rendered " << o.frames << " frames to " << o.out << "; sent " << client.bytes_sent()
+            << " bytes, received " << client.bytes_received() << "\n";
+  return 0;
+}
+
+}  // namespace inkwire

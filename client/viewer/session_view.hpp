@@ -1,0 +1,50 @@
+#pragma once
+// Draws a session's state locally (SPEC N5): the object from the cached mesh asset, in the
+// session's style, from the session's camera and object pose. Objects are centred and scaled to
+// kSceneDiagonal, the scene space in which camera and object poses travel. Needs a current GL
+// context; draws into whatever framebuffer is bound.
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "client/render/backdrop.hpp"
+#include "client/render/renderer.hpp"
+#include "client/render/scene_object.hpp"
+#include "protocol/messages.hpp"
+
+namespace inkwire {
+
+// Camera poses on the wire and cameras for renderers. Near and far planes follow from the
+// distance to the target in a scene of kSceneDiagonal.
+protocol::CameraPose camera_pose(const Camera& camera, uint32_t sequence = 0);
+Camera camera_from(const protocol::CameraPose& pose);
+// A camera orbiting the scene's centre (azimuth about +Y from +Z, distance in scene diagonals).
+protocol::CameraPose orbit_pose(float azimuth_degrees, float elevation_degrees, float distance_diagonals, uint32_t sequence = 0);
+glm::mat4 model_matrix(const protocol::ObjectPose& pose);
+
+class SessionView {
+ public:
+  // Takes the latest state and the cached files of its assets (same order). Loads a new mesh
+  // when the mesh asset changes and remakes the renderer when the style changes. A style this
+  // client cannot make (unknown name, bad setting) is reported by error() and the previous one
+  // is kept, so one bad change never blanks the picture.
+  void update(const protocol::Snapshot& state, const std::vector<std::filesystem::path>& asset_files);
+  void draw(glm::ivec2 viewport, double time_seconds, long frame);
+
+  const std::string& error() const { return error_; }
+  uint32_t revision() const { return revision_; }
+  const std::string& style() const { return style_key_; }
+
+ private:
+  std::optional<SceneObject> object_;
+  std::filesystem::path mesh_file_;
+  std::unique_ptr<Renderer> renderer_;
+  std::optional<Backdrop> backdrop_;
+  std::string style_key_, error_;
+  protocol::Snapshot state_;
+  uint32_t revision_ = 0;
+};
+
+}  // namespace inkwire

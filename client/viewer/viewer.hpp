@@ -1,0 +1,26 @@
+#pragma once
+// The two faces of inkwire-client (SPEC N5): a headless recorder that renders N frames of a
+// session to PNG or MP4, and an interactive window (mouse orbit, keys to switch styles, a live
+// parameter panel) whose changes go to the whole session.
+#include <string>
+
+#include <glm/vec2.hpp>
+
+#include "client/net/asset_cache.hpp"
+#include "client/net/session_client.hpp"
+
+namespace inkwire {
+
+struct ViewerOptions {
+  glm::ivec2 size{640, 480};
+  int frames = 0;            // headless: frames to render
+  int fps = 24;              // frames per second, paced in real time so changes show as they come
+  std::string out;           // headless: PNG, %04d pattern or .mp4
+  std::string frame_log;     // optional JSON lines: one per frame with the revision it shows
+  std::string gl = "osmesa"; // headless GL backend
+};
+
+int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& options);
+int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& options);
+
+}  // namespace inkwire

@@ -1,0 +1,192 @@
+// The interactive client: drag to orbit, wheel to zoom, Tab / arrows to switch styles, and a
+// parameter panel (Dear ImGui). Every change is sent to the session, so all its clients follow.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+#include "client/gl/gl.hpp"  // before GLFW, which must not pull in the system GL header
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <glm/trigonometric.hpp>
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include "client/gl/context.hpp"
+#include "client/render/styles.hpp"
+#include "client/viewer/session_sync.hpp"
+#include "client/viewer/viewer.hpp"
+
+namespace inkwire {
+namespace {
+
+// The user's orbit, kept as angles so dragging never rolls the camera.
+struct Orbit {
+  float azimuth = 30, elevation = 20, distance = 1.4f;
+  bool dragging = false;
+  double last_x = 0, last_y = 0;
+  bool changed = false;
+
+  void from(const protocol::CameraPose& pose) {
+    const glm::vec3 d = pose.position - pose.target;
+    distance = glm::length(d) / kSceneDiagonal;
+    elevation = glm::degrees(std::asin(std::clamp(d.y / std::max(glm::length(d), 1e-6f), -1.0f, 1.0f)));
+    azimuth = glm::degrees(std::atan2(d.x, d.z));
+  }
+};
+
+Orbit* orbit_of(GLFWwindow* w) { return static_cast<Orbit*>(glfwGetWindowUserPointer(w)); }
+
+void install_orbit_callbacks(GLFWwindow* window) {
+  glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int button, int action, int) {
+    if (button != GLFW_MOUSE_BUTTON_LEFT || ImGui::GetIO().WantCaptureMouse) return;
+    Orbit* o = orbit_of(w);
+    o->dragging = action == GLFW_PRESS;
+    glfwGetCursorPos(w, &o->last_x, &o->last_y);
+  });
+  glfwSetCursorPosCallback(window, [](GLFWwindow* w, double x, double y) {
+    Orbit* o = orbit_of(w);
+    if (!o->dragging) return;
+    o->azimuth -= float(x - o->last_x) * 0.4f;
+    o->elevation = std::clamp(o->elevation + float(y - o->last_y) * 0.4f, -85.0f, 85.0f);
+    o->last_x = x, o->last_y = y;
+    o->changed = true;
+  });
+  glfwSetScrollCallback(window, [](GLFWwindow* w, double, double dy) {
+    if (ImGui::GetIO().WantCaptureMouse) return;
+    Orbit* o = orbit_of(w);
+    o->distance = std::clamp(o->distance * float(std::pow(0.9, dy)), 0.3f, 20.0f);
+    o->changed = true;
+  });
+}
+
+// Settings as a map over the style's defaults, so the panel shows every parameter's value.
+std::map<std::string, std::string> settings_of(const protocol::StyleChange& style, const StyleInfo& info) {
+  std::map<std::string, std::string> values;
+  for (const ParamSpec& p : info.params()) values[p.name] = p.default_value;
+  for (const std::string& s : style.settings) {
+    const size_t eq = s.find('=');
+    values[s.substr(0, eq)] = s.substr(eq + 1);
+  }
+  return values;
+}
+
+// One widget per parameter; true when the user changed one.
+bool parameter_panel(const StyleInfo& info, std::map<std::string, std::string>& values) {
+  bool changed = false;
+  for (const ParamSpec& p : info.params()) {
+    std::string& v = values[p.name];
+    ImGui::PushID(p.name.c_str());
+    switch (p.type) {
+      case ParamType::Float: {
+        float f = std::strtof(v.c_str(), nullptr);
+        if (ImGui::SliderFloat(p.name.c_str(), &f, float(p.min), float(p.max))) v = std::to_string(f), changed = true;
+        break;
+      }
+      case ParamType::Int: {
+        int i = std::atoi(v.c_str());
+        if (ImGui::SliderInt(p.name.c_str(), &i, int(p.min), int(std::min(p.max, 1e6)))) v = std::to_string(i), changed = true;
+        break;
+      }
+      case ParamType::Bool: {
+        bool b = v == "true" || v == "1" || v == "on";
+        if (ImGui::Checkbox(p.name.c_str(), &b)) v = b ? "true" : "false", changed = true;
+        break;
+      }
+      case ParamType::Choice:
+        if (ImGui::BeginCombo(p.name.c_str(), v.c_str())) {
+          for (const std::string& c : p.choices)
+            if (ImGui::Selectable(c.c_str(), c == v)) v = c, changed = true;
+          ImGui::EndCombo();
+        }
+        break;
+      default:
+        ImGui::Text("%s = %s", p.name.c_str(), v.c_str());
+    }
+    if (ImGui::IsItemHovered() && !p.help.empty()) ImGui::SetTooltip("%s", p.help.c_str());
+    ImGui::PopID();
+  }
+  return changed;
+}
+
+protocol::StyleChange style_change(const std::string& renderer, const std::map<std::string, std::string>& values) {
+  protocol::StyleChange change{.renderer = renderer, .settings = {}};
+  for (const auto& [key, value] : values) change.settings.push_back(key + "=" + value);
+  return change;
+}
+
+}  // namespace
+
+int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o) {
+  auto context = create_window_context(o.size.x, o.size.y, "Inkwire - " + client.state().session, true);
+  auto* window = static_cast<GLFWwindow*>(context->native_window());
+  Orbit orbit;
+  orbit.from(client.state().camera);
+  glfwSetWindowUserPointer(window, &orbit);
+  install_orbit_callbacks(window);
+  glfwSetKeyCallback(window, nullptr);
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;
+  ImGui_ImplGlfw_InitForOpenGL(window, true);  // chains to the callbacks above
+  ImGui_ImplOpenGL3_Init("#version 450 core");
+
+  SessionSync sync(client, cache);
+  const auto& all = styles();
+  uint32_t sequence = 1;
+  long frame = 0;
+  const double start = glfwGetTime();
+  while (!context->should_close() && client.connected()) {
+    if (sync.poll() && !orbit.dragging) orbit.from(sync.state().camera);
+    if (orbit.changed) {
+      client.send(orbit_pose(orbit.azimuth, orbit.elevation, orbit.distance, sequence++));
+      orbit.changed = false;
+    }
+    // Tab / Right: next style, Left: previous.
+    const std::string current = sync.state().style.renderer;
+    auto it = std::find_if(all.begin(), all.end(), [&](const StyleInfo& s) { return s.name == current; });
+    const int index = it == all.end() ? 0 : int(it - all.begin()), n = int(all.size());
+    int step = 0;
+    if (!ImGui::GetIO().WantCaptureKeyboard) {
+      if (ImGui::IsKeyPressed(ImGuiKey_Tab) || ImGui::IsKeyPressed(ImGuiKey_RightArrow)) step = 1;
+      if (ImGui::IsKeyPressed(ImGuiKey_LeftArrow)) step = -1;
+    }
+    if (step) client.send(protocol::StyleChange{.renderer = all[size_t((index + step + n) % n)].name, .settings = {}});
+
+    const glm::ivec2 size = context->framebuffer_size();
+    gl::glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    gl::glViewport(0, 0, size.x, size.y);
+    sync.view().draw(size, glfwGetTime() - start, frame++);
+
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowBgAlpha(0.8f);
+    ImGui::Begin("Session");
+    ImGui::Text("%s  revision %u  sent %llu B  received %llu B", sync.state().session.c_str(), sync.view().revision(),
+                (unsigned long long)client.bytes_sent(), (unsigned long long)client.bytes_received());
+    if (ImGui::BeginCombo("style", current.c_str())) {
+      for (const StyleInfo& s : all)
+        if (ImGui::Selectable(s.name.c_str(), s.name == current)) client.send(protocol::StyleChange{.renderer = s.name, .settings = {}});
+      ImGui::EndCombo();
+    }
+    if (it != all.end()) {
+      auto values = settings_of(sync.state().style, *it);
+      if (parameter_panel(*it, values)) client.send(style_change(current, values));
+    }
+    if (!sync.view().error().empty()) ImGui::TextColored(ImVec4(0.8f, 0.1f, 0.1f, 1), "%s", sync.view().error().c_str());
+    ImGui::End();
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    context->present();
+  }
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  return 0;
+}
+
+}  // namespace inkwire

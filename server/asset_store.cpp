@@ -1,0 +1,157 @@
+#include "server/asset_store.hpp"
+
+#include <fstream>
+
+#include <sqlite3.h>
+
+#include "common/content_hash.hpp"
+#include "common/error.hpp"
+#include "protocol/framing.hpp"
+
+namespace inkwire::server {
+namespace fs = std::filesystem;
+using protocol::AssetAnnounce;
+
+namespace {
+
+// A prepared statement that finalises itself.
+class Statement {
+ public:
+  Statement(sqlite3* db, const char* sql) : db_(db) {
+    if (sqlite3_prepare_v2(db, sql, -1, &stmt_, nullptr) != SQLITE_OK) throw Error(std::string("catalogue: ") + sqlite3_errmsg(db));
+  }
+  ~Statement() { sqlite3_finalize(stmt_); }
+  Statement(const Statement&) = delete;
+  Statement& operator=(const Statement&) = delete;
+
+  Statement& bind(int i, const std::string& text) {
+    sqlite3_bind_text(stmt_, i, text.data(), int(text.size()), SQLITE_TRANSIENT);
+    return *this;
+  }
+  Statement& bind(int i, int64_t value) {
+    sqlite3_bind_int64(stmt_, i, value);
+    return *this;
+  }
+  Statement& bind_blob(int i, const protocol::Bytes& bytes) {
+    sqlite3_bind_blob(stmt_, i, bytes.data(), int(bytes.size()), SQLITE_TRANSIENT);
+    return *this;
+  }
+  // True while there is a row to read.
+  bool step() {
+    const int rc = sqlite3_step(stmt_);
+    if (rc == SQLITE_ROW) return true;
+    if (rc != SQLITE_DONE) throw Error(std::string("catalogue: ") + sqlite3_errmsg(db_));
+    return false;
+  }
+  std::string text(int column) const {
+    const auto* p = sqlite3_column_text(stmt_, column);
+    return p ? std::string(reinterpret_cast<const char*>(p), size_t(sqlite3_column_bytes(stmt_, column))) : std::string();
+  }
+  int64_t integer(int column) const { return sqlite3_column_int64(stmt_, column); }
+  protocol::Bytes blob(int column) const {
+    const auto* p = static_cast<const uint8_t*>(sqlite3_column_blob(stmt_, column));
+    return p ? protocol::Bytes(p, p + sqlite3_column_bytes(stmt_, column)) : protocol::Bytes();
+  }
+
+ private:
+  sqlite3* db_;
+  sqlite3_stmt* stmt_ = nullptr;
+};
+
+}  // namespace
+
+AssetStore::AssetStore(const fs::path& dir) : dir_(dir) {
+  std::error_code ec;
+  fs::create_directories(dir_ / "assets", ec);
+  if (ec) throw Error("cannot create data folder '" + dir_.string() + "': " + ec.message());
+  const fs::path catalogue = dir_ / "catalogue.sqlite";
+  if (sqlite3_open_v2(catalogue.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) != SQLITE_OK) {
+    const std::string reason = db_ ? sqlite3_errmsg(db_) : "out of memory";
+    sqlite3_close(db_);
+    throw Error("cannot open catalogue '" + catalogue.string() + "': " + reason);
+  }
+  sqlite3_busy_timeout(db_, 2000);
+  exec("PRAGMA journal_mode=WAL");
+  exec("PRAGMA synchronous=NORMAL");
+  exec("CREATE TABLE IF NOT EXISTS assets (hash TEXT PRIMARY KEY, size INTEGER NOT NULL, kind INTEGER NOT NULL, "
+       "name TEXT NOT NULL, added TEXT NOT NULL DEFAULT CURRENT_TIMESTAMP)");
+  exec("CREATE TABLE IF NOT EXISTS sessions (name TEXT PRIMARY KEY, kind TEXT NOT NULL, token TEXT NOT NULL, "
+       "state BLOB NOT NULL, updated TEXT NOT NULL DEFAULT CURRENT_TIMESTAMP)");
+}
+
+AssetStore::~AssetStore() { sqlite3_close(db_); }
+
+void AssetStore::exec(const char* sql) const {
+  char* message = nullptr;
+  if (sqlite3_exec(db_, sql, nullptr, nullptr, &message) != SQLITE_OK) {
+    const std::string reason = message ? message : "unknown error";
+    sqlite3_free(message);
+    throw Error("catalogue: " + reason);
+  }
+}
+
+fs::path AssetStore::asset_path(const protocol::Hash& hash) const { return dir_ / "assets" / to_hex(hash); }
+
+AssetAnnounce AssetStore::add_file(const fs::path& source, protocol::AssetKind kind, std::string name) {
+  std::error_code ec;
+  const auto size = fs::file_size(source, ec);
+  if (ec) throw Error("cannot read asset '" + source.string() + "': " + ec.message());
+  if (size > protocol::kMaxAssetBytes) throw Error("asset '" + source.string() + "' is larger than 1 GiB");
+  AssetAnnounce announce{.hash = content_hash_of_file(source), .size = size, .kind = kind,
+                         .name = name.empty() ? source.filename().string() : name};
+  const fs::path target = asset_path(announce.hash);
+  if (!fs::exists(target)) {
+    // Copy under a temporary name and rename, so a crash never leaves a half file under a hash.
+    const fs::path partial = target.string() + ".partial";
+    fs::copy_file(source, partial, fs::copy_options::overwrite_existing, ec);
+    if (!ec) fs::rename(partial, target, ec);
+    if (ec) throw Error("cannot store asset '" + source.string() + "': " + ec.message());
+  }
+  Statement(db_, "INSERT OR REPLACE INTO assets (hash, size, kind, name) VALUES (?, ?, ?, ?)")
+      .bind(1, to_hex(announce.hash)).bind(2, int64_t(size)).bind(3, int64_t(kind)).bind(4, announce.name).step();
+  return announce;
+}
+
+std::optional<AssetAnnounce> AssetStore::find(const protocol::Hash& hash) const {
+  Statement q(db_, "SELECT size, kind, name FROM assets WHERE hash = ?");
+  q.bind(1, to_hex(hash));
+  if (!q.step()) return std::nullopt;
+  return AssetAnnounce{.hash = hash, .size = uint64_t(q.integer(0)), .kind = protocol::AssetKind(q.integer(1)), .name = q.text(2)};
+}
+
+protocol::Bytes AssetStore::read(const protocol::Hash& hash, uint64_t offset, uint32_t length) const {
+  const auto announce = find(hash);
+  if (!announce) throw Error("no asset " + to_hex(hash));
+  if (offset > announce->size) throw Error("offset " + std::to_string(offset) + " is past the end of asset " + announce->name);
+  std::ifstream in(asset_path(hash), std::ios::binary);
+  if (!in) throw Error("asset file of " + announce->name + " is missing from the store");
+  protocol::Bytes bytes(size_t(std::min<uint64_t>(length, announce->size - offset)));
+  in.seekg(std::streamoff(offset));
+  in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(bytes.size()));
+  if (size_t(in.gcount()) != bytes.size()) throw Error("asset file of " + announce->name + " is shorter than catalogued");
+  return bytes;
+}
+
+std::vector<StoredSession> AssetStore::sessions() const {
+  std::vector<StoredSession> out;
+  Statement q(db_, "SELECT name, token, state FROM sessions ORDER BY name");
+  while (q.step()) {
+    const protocol::Bytes frame = q.blob(2);
+    // The state is a snapshot frame: read back through the same validating decoder as the wire.
+    if (frame.size() < protocol::kHeaderBytes) throw Error("catalogue: session " + q.text(0) + " has no state");
+    const auto header = protocol::parse_header(frame.data());
+    auto message = protocol::decode(header.type, frame.data() + protocol::kHeaderBytes, frame.size() - protocol::kHeaderBytes);
+    auto* snapshot = std::get_if<protocol::Snapshot>(&message);
+    if (!snapshot) throw Error("catalogue: session " + q.text(0) + " state is not a snapshot");
+    out.push_back({q.text(1), std::move(*snapshot)});
+  }
+  return out;
+}
+
+void AssetStore::save_session(const StoredSession& session) {
+  Statement(db_, "INSERT OR REPLACE INTO sessions (name, kind, token, state, updated) VALUES (?, ?, ?, ?, CURRENT_TIMESTAMP)")
+      .bind(1, session.state.session).bind(2, protocol::to_string(session.state.kind)).bind(3, session.token)
+      .bind_blob(4, protocol::encode(session.state)).step();
+}
+
+}  // namespace inkwire::server

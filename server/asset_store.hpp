@@ -1,0 +1,51 @@
+#pragma once
+// The server's embedded store (SPEC N2): asset files named by content hash under DIR/assets,
+// and a SQLite catalogue DIR/catalogue.sqlite of assets and sessions (kind, token, last state).
+// Created on first use; survives a killed server (files are renamed into place before the
+// catalogue names them; SQLite runs in WAL mode). Not thread-safe: the server uses it from its
+// one I/O thread.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "protocol/messages.hpp"
+
+struct sqlite3;
+
+namespace inkwire::server {
+
+struct StoredSession {
+  std::string token;  // empty: anyone may join
+  protocol::Snapshot state;
+};
+
+class AssetStore {
+ public:
+  // Throws inkwire::Error if the folder or catalogue cannot be created or opened.
+  explicit AssetStore(const std::filesystem::path& dir);
+  ~AssetStore();
+  AssetStore(const AssetStore&) = delete;
+  AssetStore& operator=(const AssetStore&) = delete;
+
+  // Copies a file into the store (once per content) and catalogues it under `name` (default:
+  // the file's name). Throws inkwire::Error if it cannot be read or is over the size limit.
+  protocol::AssetAnnounce add_file(const std::filesystem::path& source, protocol::AssetKind kind, std::string name = "");
+  std::optional<protocol::AssetAnnounce> find(const protocol::Hash& hash) const;
+  // Up to `length` bytes at `offset` (fewer at the end). Throws inkwire::Error if the asset is
+  // unknown, its file is missing, or the offset is past its end.
+  protocol::Bytes read(const protocol::Hash& hash, uint64_t offset, uint32_t length) const;
+
+  std::vector<StoredSession> sessions() const;
+  void save_session(const StoredSession& session);
+
+  const std::filesystem::path& dir() const { return dir_; }
+
+ private:
+  std::filesystem::path asset_path(const protocol::Hash& hash) const;
+  void exec(const char* sql) const;
+  std::filesystem::path dir_;
+  sqlite3* db_ = nullptr;
+};
+
+}  // namespace inkwire::server

@@ -1,0 +1,84 @@
+#include "server/config.hpp"
+
+#include <cstdio>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "common/error.hpp"
+#include "protocol/framing.hpp"
+
+namespace inkwire::server {
+namespace fs = std::filesystem;
+using protocol::AssetKind;
+using protocol::SessionKind;
+
+namespace {
+
+AssetKind asset_kind_from_string(const std::string& name) {
+  for (auto k : {AssetKind::Mesh, AssetKind::Image, AssetKind::Samples, AssetKind::Tween, AssetKind::Landmarks})
+    if (protocol::to_string(k) == name) return k;
+  throw Error("asset kind '" + name + "' is not mesh, image, samples, tween or landmarks");
+}
+
+}  // namespace
+
+void parse_listen(const std::string& text, ServerConfig& config) {
+  const size_t colon = text.rfind(':');
+  unsigned port = 0;
+  char extra = 0;
+  if (colon == std::string::npos || colon == 0 || std::sscanf(text.c_str() + colon + 1, "%u%c", &port, &extra) != 1 || port > 65535)
+    throw Error("listen address '" + text + "' is not HOST:PORT");
+  config.host = text.substr(0, colon);
+  config.port = uint16_t(port);
+}
+
+ServerConfig ServerConfig::embedded_default() {
+  ServerConfig c;
+  // Debian-packaged models: libcgal-demo's meshes (extracted at build time) and assimp-testmodels.
+  const fs::path cgal = INKWIRE_MESH_DIR;
+  const fs::path engine = "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
+  auto session = [&](std::string name, SessionKind kind, const fs::path& model, std::string style) {
+    SessionConfig s{.name = std::move(name), .kind = kind, .token = "", .assets = {}, .style = std::move(style), .settings = {}};
+    if (!model.empty() && fs::exists(model)) s.assets.push_back({model, AssetKind::Mesh});
+    if (model.empty() || !s.assets.empty()) c.sessions.push_back(std::move(s));
+  };
+  session("demo", SessionKind::Scene, cgal / "cow.off", "comic-extended");
+  session("sketchbook", SessionKind::Scene, cgal / "bull.off", "sketch-pencil");
+  session("turntable", SessionKind::Turntable, engine, "default");
+  session("conference", SessionKind::Conference, {}, "default");
+  return c;
+}
+
+ServerConfig ServerConfig::load(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw Error("cannot read config '" + file.string() + "'");
+  ServerConfig c = embedded_default();
+  try {
+    const nlohmann::json j = nlohmann::json::parse(in);
+    if (j.contains("listen")) parse_listen(j.at("listen").get<std::string>(), c);
+    if (j.contains("data")) c.data_dir = j.at("data").get<std::string>();
+    if (j.contains("name")) c.name = j.at("name").get<std::string>();
+    if (j.contains("queue_bytes")) c.queue_bytes = j.at("queue_bytes").get<size_t>();
+    if (j.contains("sessions")) {
+      c.sessions.clear();
+      for (const auto& s : j.at("sessions")) {
+        SessionConfig session;
+        session.name = s.at("name").get<std::string>();
+        session.kind = protocol::session_kind_from_string(s.value("kind", "scene"));
+        session.token = s.value("token", "");
+        session.style = s.value("style", "default");
+        session.settings = s.value("settings", std::vector<std::string>{});
+        for (const auto& a : s.value("assets", nlohmann::json::array()))
+          session.assets.push_back({a.at("path").get<std::string>(), asset_kind_from_string(a.value("kind", "mesh"))});
+        c.sessions.push_back(std::move(session));
+      }
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw Error("config '" + file.string() + "': " + e.what());
+  }
+  if (c.queue_bytes < 2 * protocol::kMaxPayload) throw Error("config: queue_bytes must be at least two frames (262144)");
+  return c;
+}
+
+}  // namespace inkwire::server

@@ -1,0 +1,48 @@
+#pragma once
+// What a server serves: where it listens, where its data lives, and the sessions it creates on
+// first start. `inkwire-server --config FILE` reads JSON (README "Running a server"); with no
+// file it serves the embedded default: 127.0.0.1, ./inkwire-data, demo sessions built from
+// Debian-packaged models.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "protocol/messages.hpp"
+
+namespace inkwire::server {
+
+struct SessionAsset {
+  std::filesystem::path path;
+  protocol::AssetKind kind = protocol::AssetKind::Mesh;
+};
+
+struct SessionConfig {
+  std::string name;
+  protocol::SessionKind kind = protocol::SessionKind::Scene;
+  std::string token;  // empty: anyone may join
+  std::vector<SessionAsset> assets;
+  std::string style = "default";
+  std::vector<std::string> settings;  // KEY=VALUE
+};
+
+struct ServerConfig {
+  std::string host = "127.0.0.1";
+  uint16_t port = 7878;  // 0: any free port (logged at start)
+  std::filesystem::path data_dir = "inkwire-data";
+  std::string name = "inkwire-server";
+  size_t queue_bytes = 4 << 20;      // per client, beyond which a client is too slow
+  double hello_timeout_seconds = 5;  // for a new connection to say hello
+  double persist_seconds = 1;        // how often changed session state is written to the catalogue
+  std::vector<SessionConfig> sessions;
+
+  // The embedded default's demo sessions; models that are not installed are left out.
+  static ServerConfig embedded_default();
+  // Reads a JSON config over the embedded default. Throws inkwire::Error with the reason.
+  static ServerConfig load(const std::filesystem::path& file);
+};
+
+// Parses "HOST:PORT"; throws inkwire::Error.
+void parse_listen(const std::string& text, ServerConfig& config);
+
+}  // namespace inkwire::server

@@ -1,0 +1,216 @@
+#include "server/connection.hpp"
+
+#include <asio/experimental/as_tuple.hpp>
+
+#include "common/content_hash.hpp"
+#include "common/error.hpp"
+#include "common/log.hpp"
+#include "protocol/framing.hpp"
+#include "server/server.hpp"
+#include "server/session.hpp"
+
+namespace inkwire::server {
+namespace {
+
+using namespace protocol;
+constexpr auto no_throw = asio::experimental::as_tuple(asio::use_awaitable);
+
+}  // namespace
+
+Connection::Connection(asio::ip::tcp::socket socket, Server& server, uint64_t id)
+    : socket_(std::move(socket)),
+      wake_(socket_.get_executor(), asio::steady_timer::time_point::max()),
+      server_(server),
+      id_(id),
+      queue_(server.config().queue_bytes) {
+  std::error_code ec;
+  const auto endpoint = socket_.remote_endpoint(ec);
+  peer_ = ec ? "unknown" : endpoint.address().to_string() + ":" + std::to_string(endpoint.port());
+  socket_.set_option(asio::ip::tcp::no_delay(true), ec);  // control messages are tiny: no Nagle delay
+}
+
+void Connection::start() {
+  auto self = shared_from_this();
+  asio::co_spawn(socket_.get_executor(), [self] { return self->read_loop(); }, asio::detached);
+  asio::co_spawn(socket_.get_executor(), [self] { return self->write_loop(); }, asio::detached);
+  asio::co_spawn(socket_.get_executor(), [self] { return self->hello_watchdog(); }, asio::detached);
+}
+
+void Connection::send(const Message& message) {
+  send_frame(std::make_shared<const Bytes>(encode(message)), type_of(message));
+}
+
+void Connection::send_frame(std::shared_ptr<const Bytes> frame, MessageType type) {
+  if (closing_) return;
+  if (!queue_.push(std::move(frame), type)) {
+    log_warn("too-slow", {{"client", id_}, {"queued_bytes", queue_.bytes()}});
+    close_with(ErrorCode::TooSlow, "send queue overflowed: the client is not reading");
+    return;
+  }
+  wake_.cancel();
+}
+
+void Connection::close_with(ErrorCode code, const std::string& reason) {
+  if (closing_) return;
+  // The error goes out even past the byte limit: it is the last thing this peer gets.
+  queue_.take_all();
+  queue_.push(std::make_shared<const Bytes>(encode(ErrorMessage{.code = code, .reason = reason.substr(0, kMaxReason)})), MessageType::Error);
+  closing_ = true;
+  wake_.cancel();
+  // A peer that does not read would keep the error unsent forever: cut it off after a second.
+  auto self = shared_from_this();
+  auto timer = std::make_shared<asio::steady_timer>(socket_.get_executor(), std::chrono::seconds(1));
+  timer->async_wait([self, timer](std::error_code) { self->shut(); });
+}
+
+void Connection::shut() {
+  if (shut_) return;
+  shut_ = true;
+  closing_ = true;
+  leave_session();
+  std::error_code ec;
+  socket_.shutdown(asio::ip::tcp::socket::shutdown_both, ec);
+  socket_.close(ec);
+  wake_.cancel();
+  server_.forget(this);
+}
+
+asio::awaitable<void> Connection::hello_watchdog() {
+  asio::steady_timer timer(socket_.get_executor(),
+                           std::chrono::milliseconds(int64_t(server_.config().hello_timeout_seconds * 1000)));
+  co_await timer.async_wait(no_throw);
+  if (!greeted_ && !shut_) close_with(ErrorCode::Malformed, "no hello within " + std::to_string(int(server_.config().hello_timeout_seconds)) + " seconds");
+}
+
+asio::awaitable<void> Connection::read_loop() {
+  auto self = shared_from_this();  // keeps the connection alive while reading
+  std::array<uint8_t, kHeaderBytes> header{};
+  Bytes payload;
+  while (!closing_) {
+    auto [ec, n] = co_await asio::async_read(socket_, asio::buffer(header), no_throw);
+    if (ec) break;
+    try {
+      // The length is checked here, before the payload buffer is sized.
+      const FrameHeader h = parse_header(header.data());
+      payload.resize(h.length);
+      auto [ec2, n2] = co_await asio::async_read(socket_, asio::buffer(payload), no_throw);
+      if (ec2) break;
+      Message message = decode(h.type, payload.data(), payload.size());
+      handle(message);
+    } catch (const ProtocolError& e) {
+      log_warn("malformed", {{"client", id_}, {"peer", peer_}, {"reason", e.what()}});
+      close_with(ErrorCode::Malformed, e.what());
+    } catch (const std::exception& e) {
+      log(LogLevel::Error, "internal", {{"client", id_}, {"reason", e.what()}});
+      close_with(ErrorCode::Refused, e.what());
+    }
+  }
+  if (!closing_) {
+    log_info("disconnect", {{"client", id_}, {"name", client_name_}});
+    shut();
+  }
+}
+
+asio::awaitable<void> Connection::write_loop() {
+  auto self = shared_from_this();
+  std::vector<asio::const_buffer> buffers;
+  while (!shut_) {
+    if (queue_.empty()) {
+      if (closing_) break;
+      wake_.expires_at(asio::steady_timer::time_point::max());
+      co_await wake_.async_wait(no_throw);
+      continue;
+    }
+    // Everything queued goes out in one gathered write.
+    std::deque<Outgoing> batch = queue_.take_all();
+    buffers.clear();
+    for (const Outgoing& o : batch) buffers.push_back(asio::buffer(*o.frame));
+    auto [ec, n] = co_await asio::async_write(socket_, buffers, no_throw);
+    if (ec) break;
+  }
+  shut();
+}
+
+void Connection::handle(Message& message) {
+  if (!greeted_) {
+    const auto* hello = std::get_if<Hello>(&message);
+    if (!hello) throw ProtocolError(std::string("expected hello, got ") + name_of(type_of(message)));
+    if (hello->magic != kMagic || hello->version != kVersion) {
+      log_warn("bad-version", {{"client", id_}, {"peer", peer_}, {"version", hello->version}});
+      close_with(ErrorCode::BadVersion, "protocol mismatch: server speaks Inkwire version " + std::to_string(kVersion) +
+                                            ", client sent magic " + std::to_string(hello->magic) + " version " + std::to_string(hello->version));
+      return;
+    }
+    greeted_ = true;
+    client_name_ = hello->client_name;
+    log_info("hello", {{"client", id_}, {"peer", peer_}, {"name", client_name_}});
+    send(Welcome{.version = kVersion, .server_name = server_.config().name});
+    return;
+  }
+  switch (type_of(message)) {
+    case MessageType::Ping: send(Pong{.nonce = std::get<Ping>(message).nonce}); break;
+    case MessageType::Pong: break;
+    case MessageType::Join: join(std::get<Join>(message)); break;
+    case MessageType::Leave: leave_session(); break;
+    case MessageType::AssetRequest: serve_asset(std::get<AssetRequest>(message)); break;
+    case MessageType::Error:
+      log_info("client-error", {{"client", id_}, {"reason", std::get<ErrorMessage>(message).reason}});
+      break;
+    case MessageType::StyleChange:
+    case MessageType::CameraPose:
+    case MessageType::ObjectPose:
+    case MessageType::ExpressionCode:
+      if (!session_) {
+        send(ErrorMessage{.code = ErrorCode::NotJoined, .reason = std::string(name_of(type_of(message))) + " before joining a session"});
+        break;
+      }
+      session_->apply(message, this);
+      if (session_->style_changed) {
+        log_info("style", {{"session", session_->name()}, {"client", id_}, {"renderer", session_->state().style.renderer}});
+        server_.persist(*session_);
+      }
+      break;
+    default:
+      throw ProtocolError(std::string("a client may not send ") + name_of(type_of(message)));
+  }
+}
+
+void Connection::join(const Join& join) {
+  const auto session = server_.find_session(join.session);
+  if (!session) {
+    send(ErrorMessage{.code = ErrorCode::NoSession, .reason = "no session named '" + join.session + "'"});
+    return;
+  }
+  if (!session->token_matches(join.token)) {
+    log_warn("bad-token", {{"client", id_}, {"peer", peer_}, {"session", join.session}});
+    send(ErrorMessage{.code = ErrorCode::BadToken, .reason = "wrong token for session '" + join.session + "'"});
+    return;
+  }
+  leave_session();
+  session_ = session;
+  session_->join(shared_from_this());
+  log_info("join", {{"client", id_}, {"name", client_name_}, {"session", join.session}, {"members", session_->members()}});
+  send(session_->state());
+}
+
+void Connection::leave_session() {
+  if (!session_) return;
+  session_->leave(this);
+  log_info("leave", {{"client", id_}, {"session", session_->name()}, {"members", session_->members()}});
+  session_.reset();
+}
+
+void Connection::serve_asset(const AssetRequest& request) {
+  // Assets are served to members of a session that lists them: the token guards them too.
+  if (!session_ || !session_->lists_asset(request.hash)) {
+    send(ErrorMessage{.code = ErrorCode::NoAsset, .reason = "asset " + to_hex(request.hash) + " is not in this client's session"});
+    return;
+  }
+  try {
+    send(AssetChunk{.hash = request.hash, .offset = request.offset, .data = server_.store().read(request.hash, request.offset, request.length)});
+  } catch (const Error& e) {
+    send(ErrorMessage{.code = ErrorCode::NoAsset, .reason = e.what()});
+  }
+}
+
+}  // namespace inkwire::server

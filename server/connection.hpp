@@ -1,0 +1,51 @@
+#pragma once
+// One client connection (STYLE 4): a reader coroutine that decodes and handles messages, a writer
+// coroutine that drains the bounded send queue, and a watchdog that closes connections that
+// never say hello. Any error ends only this connection, after telling the peer why.
+#include <memory>
+#include <string>
+
+#include <asio.hpp>
+
+#include "protocol/messages.hpp"
+#include "server/send_queue.hpp"
+
+namespace inkwire::server {
+
+class Server;
+class Session;
+
+class Connection : public std::enable_shared_from_this<Connection> {
+ public:
+  Connection(asio::ip::tcp::socket socket, Server& server, uint64_t id);
+
+  void start();
+  // Queues a message or a frame encoded once for many. A full queue closes the connection with
+  // "too slow"; state messages never fill it (latest wins).
+  void send(const protocol::Message& message);
+  void send_frame(std::shared_ptr<const protocol::Bytes> frame, protocol::MessageType type);
+  // Sends an error, then closes once it is written (or after a second if the peer is not reading).
+  void close_with(protocol::ErrorCode code, const std::string& reason);
+  uint64_t id() const { return id_; }
+
+ private:
+  asio::awaitable<void> read_loop();
+  asio::awaitable<void> write_loop();
+  asio::awaitable<void> hello_watchdog();
+  void handle(protocol::Message& message);
+  void join(const protocol::Join& join);
+  void leave_session();
+  void serve_asset(const protocol::AssetRequest& request);
+  void shut();
+
+  asio::ip::tcp::socket socket_;
+  asio::steady_timer wake_;  // the writer sleeps on it; send() cancels it
+  Server& server_;
+  uint64_t id_;
+  std::string peer_, client_name_;
+  SendQueue queue_;
+  std::shared_ptr<Session> session_;
+  bool greeted_ = false, closing_ = false, shut_ = false;
+};
+
+}  // namespace inkwire::server

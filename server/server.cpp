@@ -1,0 +1,120 @@
+#include "server/server.hpp"
+
+#include <asio/experimental/as_tuple.hpp>
+
+#include "common/camera.hpp"
+#include "common/error.hpp"
+#include "common/log.hpp"
+#include "server/connection.hpp"
+
+namespace inkwire::server {
+namespace {
+
+constexpr auto no_throw = asio::experimental::as_tuple(asio::use_awaitable);
+
+asio::ip::tcp::endpoint endpoint_of(const ServerConfig& config) {
+  std::error_code ec;
+  auto address = asio::ip::make_address(config.host == "localhost" ? "127.0.0.1" : config.host, ec);
+  if (ec) throw Error("listen host '" + config.host + "' is not an IP address");
+  return {address, config.port};
+}
+
+}  // namespace
+
+Server::Server(asio::io_context& io, ServerConfig config)
+    : io_(io), config_(std::move(config)), store_(config_.data_dir), acceptor_(io), persist_timer_(io) {
+  create_sessions();
+  const auto endpoint = endpoint_of(config_);
+  std::error_code ec;
+  acceptor_.open(endpoint.protocol(), ec);
+  if (!ec) acceptor_.set_option(asio::ip::tcp::acceptor::reuse_address(true), ec);
+  if (!ec) acceptor_.bind(endpoint, ec);
+  if (!ec) acceptor_.listen(asio::socket_base::max_listen_connections, ec);
+  if (ec) throw Error("cannot listen on " + config_.host + ":" + std::to_string(config_.port) + ": " + ec.message());
+}
+
+Server::~Server() = default;
+
+void Server::create_sessions() {
+  // Sessions in the catalogue come back as they were; configured ones it lacks are created.
+  for (StoredSession& stored : store_.sessions()) {
+    const std::string name = stored.state.session;
+    sessions_[name] = std::make_shared<Session>(std::move(stored));
+  }
+  for (const SessionConfig& c : config_.sessions) {
+    if (sessions_.count(c.name)) continue;
+    StoredSession stored{.token = c.token, .state = {}};
+    stored.state.session = c.name;
+    stored.state.kind = c.kind;
+    stored.state.style = {.renderer = c.style, .settings = c.settings};
+    const Camera camera = scene_orbit_camera(30, 20, 1.4f);
+    stored.state.camera = {.sequence = 0, .position = camera.position, .target = camera.target, .up = camera.up, .fov_y_degrees = camera.fov_y_degrees};
+    for (const SessionAsset& a : c.assets) stored.state.assets.push_back(store_.add_file(a.path, a.kind));
+    store_.save_session(stored);
+    log_info("session-created", {{"session", c.name}, {"kind", protocol::to_string(c.kind)}, {"assets", stored.state.assets.size()}});
+    sessions_[c.name] = std::make_shared<Session>(std::move(stored));
+  }
+}
+
+void Server::start() {
+  log_info("listening", {{"host", config_.host}, {"port", port()}, {"data", config_.data_dir.string()}, {"sessions", sessions_.size()}});
+  asio::co_spawn(io_, accept_loop(), asio::detached);
+  asio::co_spawn(io_, persist_loop(), asio::detached);
+}
+
+asio::awaitable<void> Server::accept_loop() {
+  while (!stopping_) {
+    auto [ec, socket] = co_await acceptor_.async_accept(no_throw);
+    if (ec) {
+      if (stopping_) break;
+      // Out of descriptors and the like: log, breathe, keep serving the clients we have.
+      log_warn("accept-failed", {{"reason", ec.message()}});
+      asio::steady_timer pause(io_, std::chrono::milliseconds(100));
+      co_await pause.async_wait(no_throw);
+      continue;
+    }
+    auto connection = std::make_shared<Connection>(std::move(socket), *this, next_id_++);
+    connections_[connection.get()] = connection;
+    connection->start();
+  }
+}
+
+asio::awaitable<void> Server::persist_loop() {
+  while (!stopping_) {
+    persist_timer_.expires_after(std::chrono::milliseconds(int64_t(config_.persist_seconds * 1000)));
+    co_await persist_timer_.async_wait(no_throw);
+    for (auto& [name, session] : sessions_)
+      if (session->dirty) persist(*session);
+  }
+}
+
+void Server::persist(Session& session) {
+  try {
+    store_.save_session(session.stored());
+    session.dirty = session.style_changed = false;
+  } catch (const Error& e) {
+    log(LogLevel::Error, "persist-failed", {{"session", session.name()}, {"reason", e.what()}});
+  }
+}
+
+std::shared_ptr<Session> Server::find_session(const std::string& name) const {
+  const auto it = sessions_.find(name);
+  return it == sessions_.end() ? nullptr : it->second;
+}
+
+void Server::forget(const Connection* connection) { connections_.erase(connection); }
+
+void Server::stop() {
+  if (stopping_) return;
+  stopping_ = true;
+  log_info("stopping", {{"clients", connections_.size()}});
+  std::error_code ec;
+  acceptor_.close(ec);
+  persist_timer_.cancel();
+  for (auto& [name, session] : sessions_) persist(*session);
+  // Copy: closing connections forget themselves.
+  auto open = connections_;
+  for (auto& [raw, connection] : open) connection->close_with(protocol::ErrorCode::ShuttingDown, "server shutting down");
+}
+
+}  // namespace inkwire::server

@@ -1,0 +1,55 @@
+#pragma once
+// The Inkwire server (SPEC N1-N4): accepts clients on one Asio I/O thread, keeps sessions and
+// their state, serves assets from the store, persists session state, shuts down gracefully.
+#include <map>
+#include <memory>
+#include <set>
+
+#include <asio.hpp>
+
+#include "server/asset_store.hpp"
+#include "server/config.hpp"
+#include "server/session.hpp"
+
+namespace inkwire::server {
+
+class Connection;
+
+class Server {
+ public:
+  // Opens the store (creating the demo sessions on first start) and binds the listening socket.
+  // Throws inkwire::Error if either fails.
+  Server(asio::io_context& io, ServerConfig config);
+  ~Server();
+
+  uint16_t port() const { return acceptor_.local_endpoint().port(); }
+  void start();
+  // Graceful shutdown: stop accepting, tell every client, persist every session, let the
+  // I/O context run dry.
+  void stop();
+
+  // For connections.
+  std::shared_ptr<Session> find_session(const std::string& name) const;
+  AssetStore& store() { return store_; }
+  const ServerConfig& config() const { return config_; }
+  void forget(const Connection* connection);
+  void persist(Session& session);
+  bool stopping() const { return stopping_; }
+
+ private:
+  void create_sessions();
+  asio::awaitable<void> accept_loop();
+  asio::awaitable<void> persist_loop();
+
+  asio::io_context& io_;
+  ServerConfig config_;
+  AssetStore store_;
+  asio::ip::tcp::acceptor acceptor_;
+  asio::steady_timer persist_timer_;
+  std::map<std::string, std::shared_ptr<Session>> sessions_;
+  std::map<const Connection*, std::shared_ptr<Connection>> connections_;
+  uint64_t next_id_ = 1;
+  bool stopping_ = false;
+};
+
+}  // namespace inkwire::server

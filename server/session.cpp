@@ -1,0 +1,37 @@
+#include "server/session.hpp"
+
+#include <algorithm>
+
+#include "protocol/framing.hpp"
+#include "server/connection.hpp"
+
+namespace inkwire::server {
+
+bool Session::lists_asset(const protocol::Hash& hash) const {
+  return std::any_of(stored_.state.assets.begin(), stored_.state.assets.end(), [&](const auto& a) { return a.hash == hash; });
+}
+
+void Session::join(const std::shared_ptr<Connection>& member) { members_.push_back(member); }
+
+void Session::leave(const Connection* member) {
+  std::erase_if(members_, [&](const std::weak_ptr<Connection>& m) {
+    const auto locked = m.lock();
+    return !locked || locked.get() == member;
+  });
+}
+
+void Session::apply(const protocol::Message& change, const Connection* sender) {
+  protocol::Snapshot& s = stored_.state;
+  if (const auto* style = std::get_if<protocol::StyleChange>(&change)) s.style = *style, style_changed = true;
+  else if (const auto* camera = std::get_if<protocol::CameraPose>(&change)) s.camera = *camera;
+  else if (const auto* object = std::get_if<protocol::ObjectPose>(&change)) s.object = *object;
+  else if (const auto* expression = std::get_if<protocol::ExpressionCode>(&change)) s.expression = *expression;
+  else return;
+  ++s.revision;
+  dirty = true;
+  const auto frame = std::make_shared<const protocol::Bytes>(protocol::encode(change));
+  for (const auto& weak : members_)
+    if (const auto member = weak.lock(); member && member.get() != sender) member->send_frame(frame, protocol::type_of(change));
+}
+
+}  // namespace inkwire::server

@@ -1,0 +1,42 @@
+#pragma once
+// One session ("room", SPEC N1/N4): its current state as a snapshot, its members, and the rule
+// that a change by one member is applied, counted and forwarded to all the others.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "protocol/messages.hpp"
+#include "server/asset_store.hpp"
+
+namespace inkwire::server {
+
+class Connection;
+
+class Session {
+ public:
+  explicit Session(StoredSession stored) : stored_(std::move(stored)) {}
+
+  const std::string& name() const { return stored_.state.session; }
+  bool token_matches(const std::string& token) const { return stored_.token.empty() || token == stored_.token; }
+  const protocol::Snapshot& state() const { return stored_.state; }
+  const StoredSession& stored() const { return stored_; }
+  bool lists_asset(const protocol::Hash& hash) const;
+
+  void join(const std::shared_ptr<Connection>& member);
+  void leave(const Connection* member);
+  size_t members() const { return members_.size(); }
+
+  // Applies a state message (style, camera, object, expression) from `sender`, bumps the
+  // revision and forwards it, encoded once, to every other member.
+  void apply(const protocol::Message& change, const Connection* sender);
+
+  // Set by apply(); cleared by whoever persists the state.
+  bool dirty = false;
+  bool style_changed = false;  // style changes are persisted at once, poses on a timer
+
+ private:
+  StoredSession stored_;
+  std::vector<std::weak_ptr<Connection>> members_;
+};
+
+}  // namespace inkwire::server
