@@ -1,0 +1,262 @@
+// End to end on 127.0.0.1 (SPEC N1-N5): a real inkwire-server, real headless inkwire-client
+// processes, and an in-process SessionClient acting as the user who changes things.
+#include <asio.hpp>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "client/gl/canvas.hpp"
+#include "client/gl/context.hpp"
+#include "client/net/session_client.hpp"
+#include "client/viewer/session_view.hpp"
+#include "common/image.hpp"
+#include "process.hpp"
+
+using namespace inkwire;
+using namespace inkwire::e2e;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kMesh = fs::path(INKWIRE_MESH_DIR) / "cow.off";
+
+fs::path output_dir(const std::string& test) {
+  const fs::path dir = fs::path(INKWIRE_TEST_OUTPUT_DIR) / "e2e" / test;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// A server on a free port with a scene session "cows" and a session "locked" with a token.
+class ServerUnderTest {
+ public:
+  explicit ServerUnderTest(const fs::path& dir, bool fresh = true) : dir_(dir) {
+    if (fresh) {
+      nlohmann::json config = {
+          {"sessions", {{{"name", "cows"}, {"kind", "scene"}, {"style", "default"}, {"assets", {{{"path", kMesh.string()}}}}},
+                        {{"name", "locked"}, {"kind", "scene"}, {"token", "s3cret"}, {"assets", nlohmann::json::array()}}}}};
+      std::ofstream(dir / "server.json") << config.dump(2);
+    }
+    start();
+  }
+  void start() {
+    process_ = std::make_unique<Process>("inkwire-server", std::vector<std::string>{"--listen", "127.0.0.1:0", "--data", (dir_ / "data").string(), "--config", (dir_ / "server.json").string()},
+                                         dir_ / ("server-" + std::to_string(starts_++) + ".log"));
+    port_ = 0;
+    eventually([&] {
+      std::istringstream lines(process_->output());
+      for (std::string line; std::getline(lines, line);) {
+        const auto j = nlohmann::json::parse(line, nullptr, false);
+        if (j.is_object() && j.value("event", "") == "listening") port_ = j.value("port", 0);
+      }
+      return port_ != 0 || !process_->running();
+    });
+    ASSERT_NE(port_, 0) << process_->output();
+  }
+  void kill() {
+    process_->kill(SIGKILL);
+    process_->wait();
+  }
+  std::string address() const { return "127.0.0.1:" + std::to_string(port_); }
+  Process& process() { return *process_; }
+
+ private:
+  fs::path dir_;
+  std::unique_ptr<Process> process_;
+  int port_ = 0, starts_ = 0;
+};
+
+std::unique_ptr<Process> headless_client(const ServerUnderTest& server, const fs::path& dir, const std::string& name, int frames, int fps) {
+  return std::make_unique<Process>(
+      "inkwire-client",
+      std::vector<std::string>{"--connect", server.address(), "--session", "cows", "--headless", "--frames", std::to_string(frames),
+                               "--fps", std::to_string(fps), "--size", "240x180", "--cache", (dir / ("cache-" + name)).string(),
+                               "--out", (dir / (name + "-%04d.png")).string(), "--frame-log", (dir / (name + ".jsonl")).string(),
+                               "--name", name},
+      dir / (name + ".log"));
+}
+
+std::vector<nlohmann::json> frame_log(const fs::path& file) {
+  std::vector<nlohmann::json> lines;
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line);)
+    if (auto j = nlohmann::json::parse(line, nullptr, false); j.is_object()) lines.push_back(j);
+  return lines;
+}
+
+int64_t monotonic_us() {
+  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// The same state drawn by this process, for comparison with what a client wrote.
+Image render_locally(const protocol::Snapshot& state, const std::vector<fs::path>& files, glm::ivec2 size) {
+  auto context = create_offscreen_context(size.x, size.y);
+  Canvas canvas(size.x, size.y, 4);
+  SessionView view;
+  view.update(state, files);
+  canvas.bind();
+  view.draw(size, 0.0, 0);
+  return canvas.read();
+}
+
+double mean_difference(const Image& a, const Image& b) {
+  if (a.width != b.width || a.height != b.height) return 255.0;
+  double sum = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) sum += std::abs(int(a.pixels[i]) - int(b.pixels[i]));
+  return sum / double(a.pixels.size());
+}
+
+}  // namespace
+
+class SessionE2ETest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!fs::exists(kMesh)) GTEST_SKIP() << "libcgal-demo's cow.off is not extracted (run scripts/setup.sh)";
+  }
+};
+
+TEST_F(SessionE2ETest, ThreeClientsFollowOneChangeWithinTwoFramesAndALateJoinerGetsTheSnapshot) {
+  const fs::path dir = output_dir("three-clients");
+  ServerUnderTest server(dir);
+  const int frames = 30, fps = 10;
+  auto b = headless_client(server, dir, "b", frames, fps);
+  auto c = headless_client(server, dir, "c", frames, fps);
+  // Change once both are drawing.
+  ASSERT_TRUE(eventually([&] { return frame_log(dir / "b.jsonl").size() >= 3 && frame_log(dir / "c.jsonl").size() >= 3; }))
+      << b->output() << c->output();
+
+  SessionClient a(server.address(), "a");
+  a.join("cows", "");
+  AssetCache cache(dir / "cache-a");
+  const int64_t sent_us = monotonic_us();
+  a.send(protocol::StyleChange{.renderer = "comic", .settings = {"shade_map=two-tone"}});
+  a.send(orbit_pose(120, 30, 1.3f, 1));
+  const protocol::Snapshot changed = a.state();
+  ASSERT_EQ(b->wait(), 0) << b->output();
+  ASSERT_EQ(c->wait(), 0) << c->output();
+
+  const Image expected = render_locally(changed, a.fetch_assets(changed, cache), {240, 180});
+  for (const std::string name : {"b", "c"}) {
+    SCOPED_TRACE(name);
+    const auto log = frame_log(dir / (name + ".jsonl"));
+    ASSERT_EQ(log.size(), size_t(frames));
+    // Frames drawn after the change was sent that still show the old state: at most the one in
+    // progress and the next.
+    int stale = 0;
+    for (const auto& f : log)
+      if (f["monotonic_us"].get<int64_t>() > sent_us && f["revision"].get<uint32_t>() < changed.revision) ++stale;
+    EXPECT_LE(stale, 2);
+    EXPECT_EQ(log.back()["revision"].get<uint32_t>(), changed.revision);
+    EXPECT_EQ(log.back()["style"].get<std::string>(), "comic shade_map=two-tone");
+    const Image last = load_image(dir / (name + "-" + std::to_string(10000 + frames - 1).substr(1) + ".png"));
+    EXPECT_LT(mean_difference(last, expected), 0.5) << "the client's last frame differs from the same state drawn here";
+  }
+
+  // A late joiner draws the changed state from its very first frame.
+  auto d = headless_client(server, dir, "d", 1, 10);
+  ASSERT_EQ(d->wait(), 0) << d->output();
+  EXPECT_EQ(frame_log(dir / "d.jsonl").at(0)["revision"].get<uint32_t>(), changed.revision);
+  EXPECT_LT(mean_difference(load_image(dir / "d-0000.png"), expected), 0.5);
+}
+
+TEST_F(SessionE2ETest, AClientThatStopsReadingDoesNotDelayTheOthers) {
+  const fs::path dir = output_dir("slow-reader");
+  ServerUnderTest server(dir);
+  // The slow client: says hello, joins, then never reads a byte.
+  asio::io_context io;
+  asio::ip::tcp::socket slow(io);
+  const auto colon = server.address().rfind(':');
+  slow.connect({asio::ip::make_address("127.0.0.1"), uint16_t(std::stoi(server.address().substr(colon + 1)))});
+  for (const protocol::Message& m : {protocol::Message(protocol::Hello{.client_name = "slow"}), protocol::Message(protocol::Join{.session = "cows", .token = ""})}) {
+    const auto frame = protocol::encode(m);
+    asio::write(slow, asio::buffer(frame));
+  }
+  SessionClient a(server.address(), "a"), b(server.address(), "b");
+  a.join("cows", "");
+  b.join("cows", "");
+  ASSERT_TRUE(eventually([&] { return server.process().output().find("\"name\":\"slow\",\"session\":\"cows\"") != std::string::npos; }));
+  // About 12 MB of style changes (far more than the socket buffers hold) and a pose after each.
+  protocol::StyleChange big{.renderer = "comic", .settings = {}};
+  for (int i = 0; i < 60; ++i) big.settings.push_back("k" + std::to_string(i) + "=" + std::string(200, 'x'));
+  const int changes = 1000;
+  for (int i = 1; i <= changes; ++i) {
+    a.send(big);
+    a.send(orbit_pose(float(i % 360), 10, 1.4f, uint32_t(i)));
+  }
+  // The reading client sees the very last pose; the server is still answering newcomers.
+  EXPECT_TRUE(eventually([&] { return b.state().camera.sequence == uint32_t(changes); }, std::chrono::seconds(30)))
+      << "b is at pose " << b.state().camera.sequence;
+  SessionClient late(server.address(), "late");
+  EXPECT_EQ(late.join("cows", "").camera.sequence, uint32_t(changes));
+  EXPECT_TRUE(server.process().running());
+}
+
+TEST_F(SessionE2ETest, WrongTokenBadVersionAndGarbageAreRefusedWithReasonsWhileOthersAreServed) {
+  const fs::path dir = output_dir("refusals");
+  ServerUnderTest server(dir);
+  SessionClient good(server.address(), "good");
+  good.join("cows", "");
+
+  SessionClient wrong(server.address(), "wrong");
+  try {
+    wrong.join("locked", "guess");
+    ADD_FAILURE() << "a wrong token was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("wrong token"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(wrong.join("locked", "s3cret"));
+
+  // Raw peers: a future version, then bytes that are no protocol at all.
+  const auto colon = server.address().rfind(':');
+  const asio::ip::tcp::endpoint endpoint{asio::ip::make_address("127.0.0.1"), uint16_t(std::stoi(server.address().substr(colon + 1)))};
+  auto answer_to = [&](const protocol::Bytes& bytes) {
+    asio::io_context io;
+    asio::ip::tcp::socket s(io);
+    s.connect(endpoint);
+    asio::write(s, asio::buffer(bytes));
+    protocol::FrameDecoder decoder;
+    std::array<uint8_t, 4096> buffer{};
+    std::error_code ec;
+    for (;;) {
+      const size_t n = s.read_some(asio::buffer(buffer), ec);
+      if (ec) return protocol::Message(protocol::Leave{});  // closed without an answer
+      decoder.feed(buffer.data(), n);
+      if (auto m = decoder.next()) return *m;
+    }
+  };
+  const auto version_reply = answer_to(protocol::encode(protocol::Hello{.magic = protocol::kMagic, .version = 99, .client_name = "future"}));
+  ASSERT_TRUE(std::holds_alternative<protocol::ErrorMessage>(version_reply));
+  EXPECT_EQ(std::get<protocol::ErrorMessage>(version_reply).code, protocol::ErrorCode::BadVersion);
+  EXPECT_NE(std::get<protocol::ErrorMessage>(version_reply).reason.find("version 1"), std::string::npos);
+  const auto garbage_reply = answer_to(protocol::Bytes{'G', 'E', 'T', ' ', '/', ' ', 'H', 'T', 'T', 'P', '/', '1', '.', '1', '\r', '\n'});
+  ASSERT_TRUE(std::holds_alternative<protocol::ErrorMessage>(garbage_reply));
+  EXPECT_EQ(std::get<protocol::ErrorMessage>(garbage_reply).code, protocol::ErrorCode::Malformed);
+
+  // The well-behaved client was never disturbed.
+  good.send(protocol::StyleChange{.renderer = "hatching", .settings = {}});
+  SessionClient observer(server.address(), "observer");
+  EXPECT_EQ(observer.join("cows", "").style.renderer, "hatching");
+  EXPECT_TRUE(good.connected());
+}
+
+TEST_F(SessionE2ETest, AKilledServerRestartsWithItsCatalogueAndAssetsIntact) {
+  const fs::path dir = output_dir("restart");
+  ServerUnderTest server(dir);
+  {
+    SessionClient a(server.address(), "a");
+    a.join("cows", "");
+    a.send(protocol::StyleChange{.renderer = "sketch-pencil", .settings = {"seed=7"}});
+    // The server persists style changes at once; wait for it to have seen this one.
+    SessionClient check(server.address(), "check");
+    ASSERT_TRUE(eventually([&] { return check.join("cows", "").style.renderer == "sketch-pencil"; }));
+  }
+  server.kill();
+  server.start();
+  SessionClient after(server.address(), "after");
+  const protocol::Snapshot state = after.join("cows", "");
+  EXPECT_EQ(state.style.renderer, "sketch-pencil");
+  EXPECT_EQ(state.style.settings, std::vector<std::string>{"seed=7"});
+  ASSERT_EQ(state.assets.size(), 1u);
+  AssetCache fresh(dir / "cache-after");
+  const auto files = after.fetch_assets(state, fresh);  // verifies the SHA-256 of what arrives
+  EXPECT_EQ(fs::file_size(files.at(0)), fs::file_size(kMesh));
+}
