@@ -80,7 +80,7 @@ Result Harness::time_frames(Renderer& renderer, const BenchObject& object, int f
 }
 
 const std::vector<std::pair<std::string, Suite>>& suites() {
-  static const std::vector<std::pair<std::string, Suite>> all = {{"default", run_default_suite}, {"comic", run_comic_suite}, {"sketch", run_sketch_suite}, {"hatching", run_hatching_suite}, {"painterly", run_painterly_suite}};
+  static const std::vector<std::pair<std::string, Suite>> all = {{"default", run_default_suite}, {"comic", run_comic_suite}, {"sketch", run_sketch_suite}, {"hatching", run_hatching_suite}, {"painterly", run_painterly_suite}, {"net", run_net_suite}};
   return all;
 }
 

@@ -74,5 +74,6 @@ std::vector<Result> run_comic_suite(Harness& harness);
 std::vector<Result> run_sketch_suite(Harness& harness);
 std::vector<Result> run_hatching_suite(Harness& harness);
 std::vector<Result> run_painterly_suite(Harness& harness);
+std::vector<Result> run_net_suite(Harness& harness);
 
 }  // namespace inkwire::bench
