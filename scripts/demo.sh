@@ -5,7 +5,8 @@
 # Writes OUT_DIR/contact-sheet.png (models x styles), OUT_DIR/styles/<model>-<style>.png,
 # OUT_DIR/shade-maps.png (the comic shade-map library on one model), OUT_DIR/paintings.png (every
 # shipped painting style), OUT_DIR/turntable-<style>.mp4 and OUT_DIR/painted-video.mp4 (a
-# recorded video painted frame by frame).
+# recorded video painted frame by frame), OUT_DIR/network/ (a server, a viewer recording a shared
+# session while a director client changes its style and camera, and a turntable session).
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 out=$(realpath -m "${1:-$here/demo-output}")
@@ -71,4 +72,36 @@ done
   --frames 72 --out "$out/duck-turntable.mp4"
 "$bin/inkwire-render" --video "$out/duck-turntable.mp4" --style painterly --out "$out/painted-video.mp4"
 
-echo "demo: wrote $out/contact-sheet.png, $out/shade-maps.png, $out/paintings.png, $out/styles/, $out/turntable-*.mp4 and $out/painted-video.mp4"
+# Over the network: a real server with its embedded default sessions, a viewer recording the
+# shared "demo" session, and a director client that changes the session's style and camera
+# once a second. The viewer draws every change locally from control messages of a few bytes.
+mkdir -p "$out/network"
+rm -rf "$out/network/server-data"
+"$bin/inkwire-server" --listen 127.0.0.1:0 --data "$out/network/server-data" 2> "$out/network/server.log" &
+server_pid=$!
+trap 'kill $server_pid 2>/dev/null || true' EXIT
+port=""
+for _ in $(seq 100); do
+  port=$(sed -n 's/.*"event":"listening".*"port":\([0-9]*\).*/\1/p' "$out/network/server.log")
+  [ -n "$port" ] && break
+  sleep 0.1
+done
+[ -n "$port" ] || { echo "demo: the server did not start" >&2; cat "$out/network/server.log" >&2; exit 1; }
+client=("$bin/inkwire-client" --connect "127.0.0.1:$port" --headless --cache "$out/network/cache")
+"${client[@]}" --session demo --name viewer --frames 96 --fps 12 --size 480x360 --out "$out/network/viewer.mp4" \
+  2> "$out/network/viewer.log" &
+viewer_pid=$!
+azimuth=30
+for style in comic-extended sketch-pencil hatching painterly hatching+sketch-charcoal comic; do
+  sleep 1
+  azimuth=$(( azimuth + 50 ))
+  "${client[@]}" --session demo --name director --style "$style" --view "$azimuth,20,1.3" --frames 1 --size 320x240 \
+    --out "$out/network/director-$style.png" 2>> "$out/network/director.log"
+done
+wait $viewer_pid
+"${client[@]}" --session turntable --name turntable --view 60,25,1.2 --frames 48 --fps 24 --size 480x360 \
+  --out "$out/network/turntable.mp4" 2>> "$out/network/viewer.log"
+kill -TERM $server_pid && wait $server_pid || true
+trap - EXIT
+
+echo "demo: wrote $out/contact-sheet.png, $out/shade-maps.png, $out/paintings.png, $out/styles/, $out/turntable-*.mp4, $out/painted-video.mp4 and $out/network/ (viewer.mp4: a shared session followed over the network)"
