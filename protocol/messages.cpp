@@ -182,6 +182,13 @@ void serialise(Stream& s, Snapshot& m) {
   serialise(s, m.expression);
 }
 
+// Runs a message's serialise function over a writing or measuring stream. The streams take
+// fields by reference so one function serves reading too; writing and measuring never change them.
+template <class Stream>
+void serialise_message(Stream& s, const Message& message) {
+  std::visit([&](const auto& m) { serialise(s, const_cast<std::remove_const_t<std::remove_reference_t<decltype(m)>>&>(m)); }, message);
+}
+
 template <size_t... I>
 Message decode_alternative(size_t index, ReadStream& s, std::index_sequence<I...>) {
   Message m;
@@ -227,12 +234,20 @@ bool is_state(MessageType type) {
          type == MessageType::ExpressionCode || type == MessageType::Snapshot;
 }
 
+bool apply_state_change(Snapshot& s, const Message& m) {
+  if (const auto* style = std::get_if<StyleChange>(&m)) s.style = *style;
+  else if (const auto* camera = std::get_if<CameraPose>(&m)) s.camera = *camera;
+  else if (const auto* object = std::get_if<ObjectPose>(&m)) s.object = *object;
+  else if (const auto* expression = std::get_if<ExpressionCode>(&m)) s.expression = *expression;
+  else return false;
+  ++s.revision;
+  return true;
+}
+
 Bytes encode(const Message& message) {
   Bytes out(kHeaderBytes);
   WriteStream s(out);
-  // The streams take fields by reference so one function serves reading too; writing never
-  // changes them.
-  std::visit([&](const auto& m) { serialise(s, const_cast<std::remove_const_t<std::remove_reference_t<decltype(m)>>&>(m)); }, message);
+  serialise_message(s, message);
   const size_t payload = out.size() - kHeaderBytes;
   if (payload > kMaxPayload) throw ProtocolError(std::string(name_of(type_of(message))) + " message exceeds the frame limit");
   const auto type = uint16_t(type_of(message));
@@ -243,7 +258,7 @@ Bytes encode(const Message& message) {
 
 size_t encoded_size(const Message& message) {
   MeasureStream s;
-  std::visit([&](const auto& m) { serialise(s, const_cast<std::remove_const_t<std::remove_reference_t<decltype(m)>>&>(m)); }, message);
+  serialise_message(s, message);
   return kHeaderBytes + s.bytes;
 }
 

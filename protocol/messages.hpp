@@ -184,5 +184,9 @@ const char* name_of(MessageType type);
 
 // State messages: only the latest of each matters, so queues may replace a pending one.
 bool is_state(MessageType type);
+// Applies a style, camera, object or expression change to a session's snapshot and counts it
+// in the revision; false (and nothing changed) for any other message. Server and clients both
+// keep their copy of a session's state with it.
+bool apply_state_change(Snapshot& snapshot, const Message& change);
 
 }  // namespace inkwire::protocol

@@ -164,8 +164,8 @@ void Connection::handle(Message& message) {
         send(ErrorMessage{.code = ErrorCode::NotJoined, .reason = std::string(name_of(type_of(message))) + " before joining a session"});
         break;
       }
-      session_->apply(message, this);
-      if (session_->style_changed) {
+      // Style changes are rare and matter after a restart: persisted at once; poses on a timer.
+      if (session_->apply(message, this) && type_of(message) == MessageType::StyleChange) {
         log_info("style", {{"session", session_->name()}, {"client", id_}, {"renderer", session_->state().style.renderer}});
         server_.persist(*session_);
       }

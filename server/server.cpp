@@ -91,7 +91,7 @@ asio::awaitable<void> Server::persist_loop() {
 void Server::persist(Session& session) {
   try {
     store_.save_session(session.stored());
-    session.dirty = session.style_changed = false;
+    session.dirty = false;
   } catch (const Error& e) {
     log(LogLevel::Error, "persist-failed", {{"session", session.name()}, {"reason", e.what()}});
   }

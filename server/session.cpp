@@ -20,18 +20,13 @@ void Session::leave(const Connection* member) {
   });
 }
 
-void Session::apply(const protocol::Message& change, const Connection* sender) {
-  protocol::Snapshot& s = stored_.state;
-  if (const auto* style = std::get_if<protocol::StyleChange>(&change)) s.style = *style, style_changed = true;
-  else if (const auto* camera = std::get_if<protocol::CameraPose>(&change)) s.camera = *camera;
-  else if (const auto* object = std::get_if<protocol::ObjectPose>(&change)) s.object = *object;
-  else if (const auto* expression = std::get_if<protocol::ExpressionCode>(&change)) s.expression = *expression;
-  else return;
-  ++s.revision;
+bool Session::apply(const protocol::Message& change, const Connection* sender) {
+  if (!protocol::apply_state_change(stored_.state, change)) return false;
   dirty = true;
   const auto frame = std::make_shared<const protocol::Bytes>(protocol::encode(change));
   for (const auto& weak : members_)
     if (const auto member = weak.lock(); member && member.get() != sender) member->send_frame(frame, protocol::type_of(change));
+  return true;
 }
 
 }  // namespace inkwire::server

@@ -27,12 +27,11 @@ class Session {
   size_t members() const { return members_.size(); }
 
   // Applies a state message (style, camera, object, expression) from `sender`, bumps the
-  // revision and forwards it, encoded once, to every other member.
-  void apply(const protocol::Message& change, const Connection* sender);
+  // revision and forwards it, encoded once, to every other member. False if it is no change.
+  bool apply(const protocol::Message& change, const Connection* sender);
 
   // Set by apply(); cleared by whoever persists the state.
   bool dirty = false;
-  bool style_changed = false;  // style changes are persisted at once, poses on a timer
 
  private:
   StoredSession stored_;

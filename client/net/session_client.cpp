@@ -11,17 +11,6 @@ using namespace protocol;
 constexpr auto kReplyTimeout = std::chrono::seconds(10);
 constexpr int kRequestsAhead = 4;  // protocol/SPEC.md: at most 4 asset requests outstanding
 
-// Applies a state message to a snapshot; false if it is not one.
-bool apply_change(Snapshot& s, const Message& m) {
-  if (const auto* style = std::get_if<StyleChange>(&m)) s.style = *style;
-  else if (const auto* camera = std::get_if<CameraPose>(&m)) s.camera = *camera;
-  else if (const auto* object = std::get_if<ObjectPose>(&m)) s.object = *object;
-  else if (const auto* expression = std::get_if<ExpressionCode>(&m)) s.expression = *expression;
-  else return false;
-  ++s.revision;
-  return true;
-}
-
 }  // namespace
 
 SessionClient::SessionClient(const std::string& host_port, const std::string& client_name) {
@@ -84,7 +73,7 @@ void SessionClient::on_message(Message message) {
     state_ = *snapshot;
     ++updates_;
     replies_.push_back(std::move(message));
-  } else if (apply_change(state_, message)) {
+  } else if (apply_state_change(state_, message)) {
     ++updates_;
   } else if (const auto* error = std::get_if<ErrorMessage>(&message)) {
     last_error_ = error->reason;
@@ -99,7 +88,7 @@ void SessionClient::on_message(Message message) {
 void SessionClient::send(const Message& message) {
   {
     std::lock_guard lock(mutex_);
-    if (apply_change(state_, message)) ++updates_, changed_.notify_all();
+    if (apply_state_change(state_, message)) ++updates_, changed_.notify_all();
   }
   auto frame = std::make_shared<Bytes>(encode(message));
   bytes_sent_ += frame->size();

@@ -57,6 +57,7 @@ class ServerUnderTest {
     process_->wait();
   }
   std::string address() const { return "127.0.0.1:" + std::to_string(port_); }
+  asio::ip::tcp::endpoint endpoint() const { return {asio::ip::make_address("127.0.0.1"), uint16_t(port_)}; }
   Process& process() { return *process_; }
 
  private:
@@ -164,8 +165,7 @@ TEST_F(SessionE2ETest, AClientThatStopsReadingDoesNotDelayTheOthers) {
   // The slow client: says hello, joins, then never reads a byte.
   asio::io_context io;
   asio::ip::tcp::socket slow(io);
-  const auto colon = server.address().rfind(':');
-  slow.connect({asio::ip::make_address("127.0.0.1"), uint16_t(std::stoi(server.address().substr(colon + 1)))});
+  slow.connect(server.endpoint());
   for (const protocol::Message& m : {protocol::Message(protocol::Hello{.client_name = "slow"}), protocol::Message(protocol::Join{.session = "cows", .token = ""})}) {
     const auto frame = protocol::encode(m);
     asio::write(slow, asio::buffer(frame));
@@ -206,12 +206,10 @@ TEST_F(SessionE2ETest, WrongTokenBadVersionAndGarbageAreRefusedWithReasonsWhileO
   EXPECT_NO_THROW(wrong.join("locked", "s3cret"));
 
   // Raw peers: a future version, then bytes that are no protocol at all.
-  const auto colon = server.address().rfind(':');
-  const asio::ip::tcp::endpoint endpoint{asio::ip::make_address("127.0.0.1"), uint16_t(std::stoi(server.address().substr(colon + 1)))};
   auto answer_to = [&](const protocol::Bytes& bytes) {
     asio::io_context io;
     asio::ip::tcp::socket s(io);
-    s.connect(endpoint);
+    s.connect(server.endpoint());
     asio::write(s, asio::buffer(bytes));
     protocol::FrameDecoder decoder;
     std::array<uint8_t, 4096> buffer{};
