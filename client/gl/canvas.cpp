@@ -1,5 +1,7 @@
 #include "client/gl/canvas.hpp"
 
+#include <algorithm>
+
 #include "common/error.hpp"
 
 namespace inkwire {
@@ -56,11 +58,35 @@ Image Canvas::read(int x, int y, int width, int height) const {
   return image;
 }
 
+std::vector<float> Canvas::read_depth() const {
+  if (samples_ > 1) throw Error("Canvas::read_depth(): multisampled depth cannot be read back");
+  draw_fbo_.bind(GL_READ_FRAMEBUFFER);
+  std::vector<float> depth(size_t(width_) * height_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  check_error("Canvas::read_depth");
+  std::vector<float> upright(depth.size());
+  for (int y = 0; y < height_; ++y)
+    std::copy_n(&depth[size_t(height_ - 1 - y) * width_], width_, &upright[size_t(y) * width_]);
+  bind();
+  return upright;
+}
+
 void Canvas::present_to_default(glm::ivec2 target) const {
   resolved().bind(GL_READ_FRAMEBUFFER);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
   glBlitFramebuffer(0, 0, width_, height_, 0, 0, target.x, target.y, GL_COLOR_BUFFER_BIT, GL_LINEAR);
   bind();
+}
+
+FramebufferBinding::FramebufferBinding() {
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer_);
+  glGetIntegerv(GL_VIEWPORT, &viewport_.x);
+}
+
+FramebufferBinding::~FramebufferBinding() {
+  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer_));
+  glViewport(viewport_.x, viewport_.y, viewport_.z, viewport_.w);
 }
 
 }  // namespace inkwire

@@ -1,7 +1,10 @@
 #pragma once
 // The render target every renderer draws into: an off-screen framebuffer with colour, depth and
 // stencil, optionally multisampled. Read back as an upright RGBA image, or shown in a window.
+#include <vector>
+
 #include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
 
 #include "client/gl/resources.hpp"
 #include "common/image.hpp"
@@ -23,6 +26,8 @@ class Canvas {
   Image read() const;
   // The same for the rectangle whose lower-left pixel is (x, y) in GL window coordinates.
   Image read(int x, int y, int width, int height) const;
+  // Window depth (0 near .. 1 far) of every pixel, top row first. Single-sampled canvases only.
+  std::vector<float> read_depth() const;
   // Copies the colour into the default framebuffer (a window), scaled to `target` pixels.
   void present_to_default(glm::ivec2 target) const;
 
@@ -31,6 +36,20 @@ class Canvas {
   int width_, height_, samples_;
   gl::Framebuffer draw_fbo_, resolve_fbo_;
   gl::Renderbuffer colour_, depth_stencil_, resolve_colour_;
+};
+
+// Saves the bound draw framebuffer and viewport, and restores them when it goes.
+class FramebufferBinding {
+ public:
+  FramebufferBinding();
+  ~FramebufferBinding();
+  FramebufferBinding(const FramebufferBinding&) = delete;
+  FramebufferBinding& operator=(const FramebufferBinding&) = delete;
+  glm::ivec4 viewport() const { return viewport_; }
+
+ private:
+  int framebuffer_ = 0;
+  glm::ivec4 viewport_{0};
 };
 
 }  // namespace inkwire

@@ -9,6 +9,7 @@
 #include "client/render/sketch/recursive_sketcher.hpp"
 #include "client/render/sketch/segment_sketcher.hpp"
 #include "client/render/sketch/textured_sketcher.hpp"
+#include "client/render/tween/tween_renderer.hpp"
 #include "common/error.hpp"
 
 namespace inkwire {
@@ -39,6 +40,8 @@ const std::vector<StyleInfo>& styles() {
        "canvas", &PainterlyRenderer::params, [] { return std::make_unique<PainterlyRenderer>(); }},
       {"oil-filter", "the classic oil-paint image filter over a reference rendering: the baseline brushes must beat", "canvas",
        &OilFilterRenderer::params, [] { return std::make_unique<OilFilterRenderer>(); }},
+      {"tween", "super-realistic: views synthesised by warping sample images (rendered from the mesh, or photos) along control points",
+       "#d9dde3", &TweenRenderer::params, [] { return std::make_unique<TweenRenderer>(); }},
   };
   return all;
 }

@@ -26,16 +26,6 @@ PixelRect projected_rect(const std::vector<glm::vec3>& points, const glm::mat4& 
   return {x0, y0, x1 - x0, y1 - y0};
 }
 
-FramebufferBinding::FramebufferBinding() {
-  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer_);
-  glGetIntegerv(GL_VIEWPORT, &viewport_.x);
-}
-
-FramebufferBinding::~FramebufferBinding() {
-  glBindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer_));
-  glViewport(viewport_.x, viewport_.y, viewport_.z, viewport_.w);
-}
-
 void ReferenceCapture::use_renderer(const std::string& name) {
   if (name == name_ && reference_) return;
   if (name.find("painterly") != std::string::npos || name.find("oil-filter") != std::string::npos)

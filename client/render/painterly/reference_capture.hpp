@@ -51,18 +51,4 @@ class ReferenceCapture {
   PixelRect rect_;
 };
 
-// Saves the bound draw framebuffer and viewport, and restores them when it goes.
-class FramebufferBinding {
- public:
-  FramebufferBinding();
-  ~FramebufferBinding();
-  FramebufferBinding(const FramebufferBinding&) = delete;
-  FramebufferBinding& operator=(const FramebufferBinding&) = delete;
-  glm::ivec4 viewport() const { return viewport_; }
-
- private:
-  int framebuffer_ = 0;
-  glm::ivec4 viewport_{0};
-};
-
 }  // namespace inkwire

@@ -1,0 +1,135 @@
+#include "client/render/tween/image_warper.hpp"
+
+#include <algorithm>
+#include <memory>
+
+#include "common/error.hpp"
+
+namespace inkwire {
+
+using namespace gl;
+namespace {
+
+constexpr float kFirstLayerDepth = 0.5f;
+constexpr float kLayerStep = 0.05f;  // 3 passes fit easily between the cleared depth (1) and 0
+
+}  // namespace
+
+gl::Texture make_sample_texture(const Image& image) {
+  Image premultiplied = image;
+  for (size_t i = 0; i < premultiplied.pixels.size(); i += 4) {
+    const unsigned a = premultiplied.pixels[i + 3];
+    for (int c = 0; c < 3; ++c) premultiplied.pixels[i + c] = uint8_t((premultiplied.pixels[i + c] * a + 127) / 255);
+  }
+  return gl::Texture::from_image(premultiplied, {.repeat = false, .mipmaps = false, .linear = true});
+}
+
+ImageWarper::ImageWarper(int width, int height)
+    : width_(width),
+      height_(height),
+      warp_(gl::Program::from_files({"tween/warp.vert", "tween/warp.frag"})),
+      composite_(gl::Program::from_files({"tween/composite.vert", "tween/composite.frag"})),
+      target_(gl::Texture::from_image(Image(width, height), {.repeat = false, .mipmaps = false, .linear = true})),
+      depth_(gl::Renderbuffer::create(GL_DEPTH_COMPONENT24, width, height, 0)),
+      fbo_(gl::Framebuffer::create()),
+      empty_vao_(gl::VertexArray::create()) {
+  const FramebufferBinding restore;
+  fbo_.bind();
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target_.id(), 0);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
+  fbo_.check_complete("ImageWarper target");
+}
+
+int ImageWarper::add_mesh(const WarpMesh& mesh) {
+  std::vector<float> vertices;
+  vertices.reserve(mesh.points.size() * 6);
+  for (const ControlPoint& p : mesh.points)
+    for (const glm::vec2& v : p) vertices.insert(vertices.end(), {v.x, v.y});
+  std::vector<uint32_t> indices;
+  for (const auto& t : mesh.triangles) indices.insert(indices.end(), t.begin(), t.end());
+  Mesh m{gl::Buffer::create(vertices), gl::Buffer::create(indices), gl::VertexArray::create(), GLsizei(indices.size())};
+  for (GLuint k = 0; k < 3; ++k) m.vao.attribute(k, m.vertices, 2, 6 * sizeof(float), k * 2 * sizeof(float));
+  m.vao.bind();
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m.indices.id());  // recorded in the bound vertex array
+  glBindVertexArray(0);
+  meshes_.push_back(std::move(m));
+  return int(meshes_.size()) - 1;
+}
+
+void ImageWarper::begin(OverlapMode overlap) {
+  caller_ = std::make_unique<FramebufferBinding>();
+  overlap_ = overlap;
+  passes_ = 0;
+  fbo_.bind();
+  glViewport(0, 0, width_, height_);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_CULL_FACE);  // folded triangles face away and still carry colour
+  glDepthMask(GL_TRUE);
+  glClearColor(0, 0, 0, 0);
+  glClearDepth(1.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  warp_.use();
+  warp_.set("image_size", glm::vec2(width_, height_));
+  warp_.set("sample_image", 0);
+}
+
+void ImageWarper::pass(int mesh, const gl::Texture& sample, const glm::vec3& position_weights, int source, float weight) {
+  if (!caller_) throw Error("ImageWarper::pass(): called outside begin()/end()");
+  const Mesh& m = meshes_.at(size_t(mesh));
+  float depth = 0.0f;
+  if (overlap_ == OverlapMode::DepthClear) {
+    glClear(GL_DEPTH_BUFFER_BIT);
+  } else {
+    depth = kFirstLayerDepth - kLayerStep * float(passes_);
+  }
+  warp_.set("position_weights", position_weights);
+  warp_.set("source", std::clamp(source, 0, 2));
+  warp_.set("weight", weight);
+  warp_.set("depth", depth);
+  sample.bind(0);
+  m.vao.bind();
+  glDrawElements(GL_TRIANGLES, m.index_count, GL_UNSIGNED_INT, nullptr);
+  glBindVertexArray(0);
+  ++passes_;
+}
+
+void ImageWarper::end() {
+  glDisable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ZERO);
+  caller_.reset();
+}
+
+Image ImageWarper::read() const {
+  const FramebufferBinding restore;
+  fbo_.bind(GL_READ_FRAMEBUFFER);
+  Image image(width_, height_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
+  flip_rows(image);
+  return image;
+}
+
+void ImageWarper::composite(const glm::vec4& rect) const {
+  glm::ivec4 viewport;
+  glGetIntegerv(GL_VIEWPORT, &viewport.x);
+  glDisable(GL_DEPTH_TEST);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  composite_.use();
+  composite_.set("viewport", glm::vec4(viewport));
+  composite_.set("rect", rect);
+  composite_.set("view_image", 0);
+  target_.bind(0);
+  empty_vao_.bind();
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  glBindVertexArray(0);
+  glDisable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ZERO);
+  glEnable(GL_DEPTH_TEST);
+}
+
+}  // namespace inkwire

@@ -1,0 +1,203 @@
+#include "client/render/tween/mesh_samples.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
+
+#include "client/gl/canvas.hpp"
+#include "client/render/styles.hpp"
+#include "common/tween/view_sphere.hpp"
+
+namespace inkwire {
+
+using namespace gl;
+namespace {
+
+// A vertex counts as visible when it is no deeper than the nearest surface around its pixel
+// plus this fraction of the bounding-box diagonal (vertices on the silhouette see background).
+constexpr float kVisibilitySlack = 0.01f;
+
+float eye_depth(const Camera& c, float window_depth) {
+  const float z = 2.0f * window_depth - 1.0f;
+  return 2.0f * c.near_plane * c.far_plane / (c.far_plane + c.near_plane - z * (c.far_plane - c.near_plane));
+}
+
+glm::mat4 view_projection(const Camera& c) { return c.projection(1.0f) * c.view(); }
+
+Image draw_into(Renderer& renderer, Canvas& canvas, const Camera& camera) {
+  canvas.bind();
+  glClearColor(0, 0, 0, 0);
+  glClearDepth(1.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  FrameState frame;
+  frame.camera = camera;
+  frame.viewport = canvas.size();
+  frame.light_direction = default_light_direction(camera);
+  renderer.draw(frame);
+  return canvas.read();
+}
+
+// Colour from a multisampled canvas (smooth edges, like a photo); depth, when wanted, from a
+// second single-sampled drawing (multisampled depth cannot be read back).
+Image draw_view(Renderer& renderer, int size, const Camera& camera, std::vector<float>* depth) {
+  static constexpr int kSamples = 4;
+  Canvas colour(size, size, kSamples);
+  Image image = draw_into(renderer, colour, camera);
+  if (depth) {
+    Canvas single(size, size, 1);
+    draw_into(renderer, single, camera);
+    *depth = single.read_depth();
+  }
+  return image;
+}
+
+}  // namespace
+
+glm::vec3 MeshSamples::project(int index, const glm::vec3& point) const {
+  const glm::vec4 clip = view_projection(cameras[size_t(index)]) * glm::vec4(point, 1.0f);
+  const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+  return {(ndc.x * 0.5f + 0.5f) * float(size), (0.5f - ndc.y * 0.5f) * float(size), ndc.z * 0.5f + 0.5f};
+}
+
+std::optional<glm::vec2> MeshSamples::visible_position(int index, const glm::vec3& point) const {
+  const glm::vec3 p = project(index, point);
+  if (!(p.x >= 0.0f && p.y >= 0.0f && p.x < float(size) && p.y < float(size) && p.z > 0.0f && p.z < 1.0f)) return std::nullopt;
+  const Camera& c = cameras[size_t(index)];
+  const std::vector<float>& depth = depths[size_t(index)];
+  const int px = int(p.x), py = int(p.y);
+  float nearest = std::numeric_limits<float>::max();
+  for (int y = std::max(0, py - 1); y <= std::min(size - 1, py + 1); ++y)
+    for (int x = std::max(0, px - 1); x <= std::min(size - 1, px + 1); ++x)
+      nearest = std::min(nearest, eye_depth(c, depth[size_t(y) * size + x]));
+  if (eye_depth(c, p.z) > nearest + kVisibilitySlack * bounds.diagonal()) return std::nullopt;
+  return glm::vec2(p);
+}
+
+bool MeshSamples::near_background(int index, const glm::vec2& pixel) const {
+  const std::vector<float>& depth = depths[size_t(index)];
+  const int px = int(pixel.x), py = int(pixel.y);
+  for (int y = py - 2; y <= py + 2; ++y)
+    for (int x = px - 2; x <= px + 2; ++x)
+      if (x < 0 || y < 0 || x >= size || y >= size || depth[size_t(y) * size + x] >= 1.0f) return true;
+  return false;
+}
+
+std::optional<glm::vec3> MeshSamples::surface_point(int from, const glm::vec2& pixel) const {
+  const int x = int(pixel.x), y = int(pixel.y);
+  if (x < 0 || y < 0 || x >= size || y >= size) return std::nullopt;
+  const float d = depths[size_t(from)][size_t(y) * size + x];
+  if (d >= 1.0f) return std::nullopt;
+  const glm::vec4 ndc((pixel.x / float(size)) * 2.0f - 1.0f, 1.0f - (pixel.y / float(size)) * 2.0f, d * 2.0f - 1.0f, 1.0f);
+  const glm::vec4 world = glm::inverse(view_projection(cameras[size_t(from)])) * ndc;
+  return glm::vec3(world) / world.w;
+}
+
+std::optional<glm::vec2> MeshSamples::true_position(int from, const glm::vec2& pixel, int to) const {
+  const auto p = surface_point(from, pixel);
+  if (!p) return std::nullopt;
+  return visible_position(to, *p);
+}
+
+MeshSamples render_mesh_samples(const SceneObject& object, const std::vector<glm::vec3>& directions, int size,
+                                float distance_diagonals, const std::string& style) {
+  MeshSamples s;
+  s.size = size;
+  s.distance_diagonals = distance_diagonals;
+  s.bounds = object.topology.bounds;
+  s.directions = directions;
+  const FramebufferBinding restore;
+  auto renderer = make_renderer(style);
+  renderer->prepare(object);
+  for (const glm::vec3& d : directions) {
+    s.cameras.push_back(sample_camera(s.bounds, d, distance_diagonals));
+    std::vector<float> depth;
+    s.images.push_back(draw_view(*renderer, size, s.cameras.back(), &depth));
+    s.depths.push_back(std::move(depth));
+  }
+  return s;
+}
+
+Image render_mesh_view(const SceneObject& object, const glm::vec3& direction, int size, float distance_diagonals,
+                       const std::string& style) {
+  const FramebufferBinding restore;
+  auto renderer = make_renderer(style);
+  renderer->prepare(object);
+  return draw_view(*renderer, size, sample_camera(object.topology.bounds, direction, distance_diagonals), nullptr);
+}
+
+TweenCell exact_cell(const MeshSamples& samples, const SceneObject& object, const std::vector<uint16_t>& cell, int count) {
+  TweenCell out;
+  out.samples = cell;
+  const bool pair = cell.size() == 2;
+  Camera halfway;
+  if (pair)
+    halfway = sample_camera(samples.bounds, halfway_direction(samples.directions[cell[0]], samples.directions[cell[1]]),
+                            samples.distance_diagonals);
+  const glm::mat4 halfway_vp = view_projection(halfway);
+  std::vector<ControlPoint> candidates;
+  std::vector<glm::vec2> layout;  // where each candidate sits in the warp's triangulation
+  std::vector<bool> on_outline;
+  for (const glm::vec3& v : object.mesh.positions) {
+    ControlPoint p;
+    bool visible = true;
+    for (size_t k = 0; k < cell.size() && visible; ++k) {
+      const auto at = samples.visible_position(cell[k], v);
+      visible = at.has_value();
+      if (visible) p[pair ? 2 * k : k] = *at;
+    }
+    if (!visible) continue;
+    if (pair) {
+      const glm::vec4 clip = halfway_vp * glm::vec4(v, 1.0f);
+      p[1] = {(clip.x / clip.w * 0.5f + 0.5f) * float(samples.size), (0.5f - clip.y / clip.w * 0.5f) * float(samples.size)};
+    }
+    bool outline = false;
+    for (size_t k = 0; k < cell.size() && !outline; ++k) outline = samples.near_background(cell[k], p[pair ? 2 * k : k]);
+    candidates.push_back(p);
+    layout.push_back(pair ? p[1] : (p[0] + p[1] + p[2]) / 3.0f);
+    on_outline.push_back(outline);
+  }
+  if (candidates.empty()) return out;
+  // Outline points first (the silhouette is where a warp shows its errors: a ghost of the edge
+  // wherever the samples disagree), then the rest, each group spread by farthest-point sampling
+  // from what is already chosen; the first pick is the candidate farthest from the centroid.
+  glm::vec2 centroid(0.0f);
+  for (const glm::vec2& l : layout) centroid += l;
+  centroid /= float(layout.size());
+  std::vector<float> distance(layout.size(), std::numeric_limits<float>::max());
+  auto choose = [&](size_t i) {
+    out.points.push_back(candidates[i]);
+    for (size_t j = 0; j < layout.size(); ++j) distance[j] = std::min(distance[j], glm::length(layout[j] - layout[i]));
+  };
+  auto spread = [&](size_t until, const std::vector<bool>& eligible) {
+    while (out.points.size() < until) {
+      size_t next = layout.size();
+      for (size_t i = 0; i < layout.size(); ++i) {
+        if (!eligible[i]) continue;
+        const float d = out.points.empty() ? glm::length(layout[i] - centroid) : distance[i];
+        const float best = next == layout.size() ? -1.0f
+                           : (out.points.empty() ? glm::length(layout[next] - centroid) : distance[next]);
+        if (d > best) next = i;
+      }
+      // Stop when nothing is left that is not on top of a chosen point.
+      if (next == layout.size() || (!out.points.empty() && distance[next] < 0.5f)) return;
+      choose(next);
+    }
+  };
+  spread(size_t(count) * 3 / 5, on_outline);
+  spread(size_t(count), std::vector<bool>(layout.size(), true));
+  return out;
+}
+
+TweenData exact_tween_data(const MeshSamples& samples, const SceneObject& object,
+                           const std::vector<std::vector<uint16_t>>& cells, int count) {
+  TweenData data;
+  data.width = data.height = samples.size;
+  data.directions = samples.directions;
+  for (const auto& cell : cells) data.cells.push_back(exact_cell(samples, object, cell, count));
+  return data;
+}
+
+}  // namespace inkwire

@@ -1,0 +1,164 @@
+#include "client/render/tween/tween_renderer.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/trigonometric.hpp>
+
+#include "client/render/tween/mesh_samples.hpp"
+#include "common/error.hpp"
+#include "common/tween/view_sphere.hpp"
+
+namespace inkwire {
+
+void validate(const TweenModel& m) {
+  if (m.images.size() != size_t(m.data.sample_count()))
+    throw Error("tween model: " + std::to_string(m.images.size()) + " images for " + std::to_string(m.data.sample_count()) + " samples");
+  for (size_t i = 0; i < m.images.size(); ++i)
+    if (m.images[i].width != m.data.width || m.images[i].height != m.data.height)
+      throw Error("tween model: sample " + std::to_string(i) + " is " + std::to_string(m.images[i].width) + "x" +
+                  std::to_string(m.images[i].height) + ", the tween data says " + std::to_string(m.data.width) + "x" +
+                  std::to_string(m.data.height));
+  if (m.data.cells.empty()) throw Error("tween model: no cells");
+}
+
+std::vector<ParamSpec> TweenRenderer::params() {
+  return {
+      choice_param("method", "bilinear", {"nearest", "crossfade", "linear", "bilinear", "trilinear"},
+                   "how a view is made from the samples around it (trilinear samples a geodesic sphere, the others a ring)"),
+      choice_param("overlap", "layered", {"layered", "depth-clear"},
+                   "how folded triangles are kept from adding up: passes laid nearer and nearer, or depth cleared per pass"),
+      int_param("samples", "24", 3, 360, "samples on the ring (24 = every 15 degrees)"),
+      int_param("sphere_level", "1", 0, 3, "geodesic sphere subdivisions for trilinear (0: 12 samples, 1: 42, 2: 162)"),
+      int_param("points", "65", 3, 2000, "control points per sample pair or triangle"),
+      int_param("sample_size", "256", 32, 2048, "sample images are this many pixels square"),
+      text_param("sample_style", "default", "the style the samples are rendered in"),
+  };
+}
+
+void TweenRenderer::configure(const StyleParams& p) {
+  method_ = p.get_text("method");
+  overlap_ = p.get_text("overlap") == "depth-clear" ? OverlapMode::DepthClear : OverlapMode::Layered;
+  ring_samples_ = p.get_int("samples");
+  sphere_level_ = p.get_int("sphere_level");
+  points_ = p.get_int("points");
+  sample_size_ = p.get_int("sample_size");
+  sample_style_ = p.get_text("sample_style");
+  if (sample_style_ == "tween") throw Error("sample_style cannot be tween itself");
+}
+
+void TweenRenderer::prepare(const SceneObject& object) {
+  object_ = &object;
+  built_for_.clear();
+  build_from_mesh();
+}
+
+void TweenRenderer::build_from_mesh() {
+  const bool sphere = method_ == "trilinear";
+  const std::string sampling = (sphere ? "sphere" + std::to_string(sphere_level_) : "ring" + std::to_string(ring_samples_)) +
+                               "/" + std::to_string(points_) + "/" + std::to_string(sample_size_) + "/" + sample_style_;
+  if (sampling == built_for_) return;
+  std::vector<glm::vec3> directions;
+  std::vector<std::vector<uint16_t>> cells;
+  if (sphere) {
+    ViewSphere s = geodesic_sphere(sphere_level_);
+    directions = std::move(s.directions);
+    cells = std::move(s.triangles);
+  } else {
+    directions = ring_directions(ring_samples_);
+    cells = ring_cells(ring_samples_);
+  }
+  TweenModel m;
+  m.distance_diagonals = 1.4f;
+  const MeshSamples samples = render_mesh_samples(*object_, directions, sample_size_, m.distance_diagonals, sample_style_);
+  m.data = exact_tween_data(samples, *object_, cells, points_);
+  m.images = samples.images;
+  m.bounds = object_->topology.bounds;
+  model_ = std::move(m);
+  built_for_ = sampling;
+  upload();
+}
+
+void TweenRenderer::use_model(TweenModel model) {
+  validate(model);
+  model_ = std::move(model);
+  object_ = nullptr;
+  built_for_.clear();
+  upload();
+}
+
+void TweenRenderer::upload() {
+  warper_ = std::make_unique<ImageWarper>(model_.data.width, model_.data.height);
+  textures_.clear();
+  for (const Image& image : model_.images) textures_.push_back(make_sample_texture(image));
+  meshes_.clear();
+  for (const TweenCell& cell : model_.data.cells)
+    meshes_.push_back(warper_->add_mesh(build_warp_mesh(cell, model_.data.width, model_.data.height)));
+}
+
+void TweenRenderer::draw(const FrameState& frame) {
+  if (object_) build_from_mesh();  // the method may have moved between ring and sphere
+  if (!warper_) throw Error("tween: nothing to draw (no mesh prepared and no samples given)");
+  const glm::vec3 centre = model_.bounds.centre();
+  const glm::vec3 eye = frame.eye_in_object_space();
+  const CellLocation at = locate_view(model_.data, eye - centre);
+  last_cell_ = at.cell;
+  last_passes_ = 0;
+  if (at.cell < 0) return;
+  const TweenCell& cell = model_.data.cells[size_t(at.cell)];
+  const int mesh = meshes_[size_t(at.cell)];
+  const bool pair = cell.is_pair();
+  const int n = int(cell.samples.size());
+  // Which stored position of a point belongs to the cell's k-th sample, and where the view puts it.
+  auto slot = [&](int k) { return pair ? 2 * k : k; };
+  const glm::vec3 view_weights = pair ? path_weights(at.t) : glm::vec3(at.weights[0], at.weights[1], at.weights[2]);
+  auto own_position = [&](int k) {
+    glm::vec3 w(0.0f);
+    w[slot(k)] = 1.0f;
+    return w;
+  };
+  int nearest = 0;
+  for (int k = 1; k < n; ++k)
+    if (at.weights[size_t(k)] > at.weights[size_t(nearest)]) nearest = k;
+
+  warper_->begin(overlap_);
+  auto pass = [&](int k, const glm::vec3& positions, float weight) {
+    warper_->pass(mesh, textures_[cell.samples[size_t(k)]], positions, slot(k), weight);
+    ++last_passes_;
+  };
+  if (method_ == "nearest") {
+    pass(nearest, own_position(nearest), 1.0f);
+  } else if (method_ == "linear") {
+    pass(nearest, view_weights, 1.0f);
+  } else if (method_ == "crossfade") {
+    for (int k = 0; k < n; ++k) pass(k, own_position(k), at.weights[size_t(k)]);
+  } else {  // bilinear on a ring pair, trilinear on a sphere triangle
+    for (int k = 0; k < n; ++k) pass(k, view_weights, at.weights[size_t(k)]);
+  }
+  warper_->end();
+
+  // The samples were taken from model_.distance_diagonals away; nearer views see them larger.
+  const float diagonal = std::max(model_.bounds.diagonal(), 1e-6f);
+  const float frame_distance = std::max(glm::length(eye - centre) / diagonal, 1e-3f);
+  const float zoom = (model_.distance_diagonals / frame_distance) * std::tan(glm::radians(model_.fov_y_degrees) / 2.0f) /
+                     std::tan(glm::radians(frame.camera.fov_y_degrees) / 2.0f);
+  const float h = float(frame.viewport.y) * zoom;
+  const float w = h * float(model_.data.width) / float(model_.data.height);
+  warper_->composite({(float(frame.viewport.x) - w) / 2.0f, (float(frame.viewport.y) - h) / 2.0f, w, h});
+}
+
+std::map<std::string, double> TweenRenderer::counters() const {
+  std::map<std::string, double> c;
+  if (last_cell_ >= 0) c["triangles"] = double(warper_->triangles(meshes_[size_t(last_cell_)]));
+  c["passes"] = last_passes_;
+  c["cell"] = last_cell_;
+  if (!model_.data.cells.empty()) c["bytes_per_cell"] = double(encode_tween(model_.data).size()) / double(model_.data.cells.size());
+  return c;
+}
+
+Image TweenRenderer::last_view() const {
+  if (!warper_) throw Error("tween: no view drawn yet");
+  return warper_->read();
+}
+
+}  // namespace inkwire

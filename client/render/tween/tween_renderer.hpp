@@ -1,0 +1,66 @@
+#pragma once
+// The super-realistic renderer (SPEC T2-T5): views synthesised from sample images by warping
+// them along their control points. Samples come either from a mesh (rendered once in prepare(),
+// in any style, on a ring or a geodesic sphere, with exact control points) or from outside
+// (photos with tween data: use_model()). Methods:
+//   nearest    the closest sample, unwarped (the baseline that jumps between views)
+//   crossfade  the cell's samples blended by proximity, unwarped
+//   linear     the closest sample warped to the view
+//   bilinear   both samples of a ring pair warped to the view and blended
+//   trilinear  the three samples of a sphere triangle warped to the view and blended
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "client/render/renderer.hpp"
+#include "client/render/tween/image_warper.hpp"
+#include "common/image.hpp"
+#include "common/topology.hpp"
+#include "common/tween/tween_data.hpp"
+
+namespace inkwire {
+
+// Everything a view is synthesised from.
+struct TweenModel {
+  TweenData data;
+  std::vector<Image> images;        // one per sample, data.width x data.height
+  float distance_diagonals = 1.4f;  // how far the samples' camera stood (for zooming the view)
+  float fov_y_degrees = 45.0f;      // the samples' vertical field of view
+  Bounds bounds;                    // the object's box (its centre is what the samples looked at)
+};
+
+// Checks that images and data agree (count, sizes). Throws inkwire::Error naming the mismatch.
+void validate(const TweenModel& model);
+
+class TweenRenderer final : public Renderer {
+ public:
+  static std::vector<ParamSpec> params();
+  void configure(const StyleParams& params) override;
+  // Renders the sample set from the mesh (ring, or sphere for trilinear) and its tween data.
+  void prepare(const SceneObject& object) override;
+  // Uses samples from outside instead (photos + tween data); replaces any prepared mesh.
+  void use_model(TweenModel model);
+  const TweenModel& model() const { return model_; }
+  void draw(const FrameState& frame) override;
+  std::map<std::string, double> counters() const override;
+
+  // The last view at the samples' resolution, upright, premultiplied RGBA (for measuring).
+  Image last_view() const;
+
+ private:
+  void build_from_mesh();
+  void upload();
+  std::string method_ = "bilinear";
+  OverlapMode overlap_ = OverlapMode::Layered;
+  int ring_samples_ = 24, sphere_level_ = 1, points_ = 65, sample_size_ = 256;
+  std::string sample_style_ = "default";
+  std::string built_for_;  // the sampling the current model was made with ("" = from outside)
+  const SceneObject* object_ = nullptr;
+  TweenModel model_;
+  std::unique_ptr<ImageWarper> warper_;
+  std::vector<gl::Texture> textures_;
+  std::vector<int> meshes_;  // per cell
+  int last_cell_ = -1, last_passes_ = 0;
+};
+
+}  // namespace inkwire

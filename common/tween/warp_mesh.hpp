@@ -1,0 +1,32 @@
+#pragma once
+// The triangulated control points a warp draws (SPEC T3): Delaunay triangles computed once per
+// cell on the points' mid-path positions (where folds are rarest), over the cell's points plus
+// fixed points along the image border so the whole image is covered and its frame stays put.
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "common/tween/tween_data.hpp"
+
+namespace inkwire {
+
+struct WarpMesh {
+  std::vector<ControlPoint> points;  // the cell's points, then the border points
+  std::vector<std::array<uint32_t, 3>> triangles;
+};
+
+// Delaunay triangles of `points` (OpenCV Subdiv2D) as index triples. Points closer than
+// 1/8 pixel to an earlier one are left out of the triangles (they would fold).
+std::vector<std::array<uint32_t, 3>> delaunay_triangles(std::span<const glm::vec2> points);
+
+// Border points every `border_step` pixels or so (corners included), the same in every sample.
+std::vector<glm::vec2> border_points(int width, int height, int per_side = 4);
+
+// The cell's control points extended by the border, triangulated on pairs' halfway positions
+// or triangles' centroids.
+WarpMesh build_warp_mesh(const TweenCell& cell, int width, int height);
+
+}  // namespace inkwire
