@@ -40,7 +40,8 @@ std::vector<BenchObject>& Harness::lod_series() {
   return lods_;
 }
 
-Result Harness::time_frames(Renderer& renderer, const BenchObject& object, int frames) {
+Result Harness::time_frames(Renderer& renderer, const BenchObject& object, int frames, Canvas* target) {
+  Canvas& canvas = target ? *target : *canvas_;
   const Backdrop clear(BackdropSpec::parse("#d9dde3"));
   // The object turns a full revolution every 1000 frames about its vertical axis, so every
   // frame's view-dependent work (orientation, silhouettes) is real work, as it is for a user
@@ -55,7 +56,7 @@ Result Harness::time_frames(Renderer& renderer, const BenchObject& object, int f
     frame.time_seconds = i / 60.0;
     frame.model = glm::rotate(glm::mat4(1.0f), float(i) * 2.0f * std::numbers::pi_v<float> / 1000.0f, glm::vec3(0, 1, 0)) * pose;
     const auto start = std::chrono::steady_clock::now();
-    canvas_->bind();
+    canvas.bind();
     clear.draw();
     renderer.draw(frame);
     gl::glFinish();
@@ -64,7 +65,7 @@ Result Harness::time_frames(Renderer& renderer, const BenchObject& object, int f
   }
   gl::check_error("bench frame");
   frame.model = pose;  // leave the renderer's counters describing the study's pose
-  canvas_->bind();
+  canvas.bind();
   clear.draw();
   renderer.draw(frame);
   std::sort(seconds.begin(), seconds.end());
@@ -80,7 +81,7 @@ Result Harness::time_frames(Renderer& renderer, const BenchObject& object, int f
 }
 
 const std::vector<std::pair<std::string, Suite>>& suites() {
-  static const std::vector<std::pair<std::string, Suite>> all = {{"default", run_default_suite}, {"comic", run_comic_suite}, {"sketch", run_sketch_suite}, {"hatching", run_hatching_suite}, {"painterly", run_painterly_suite}, {"net", run_net_suite}};
+  static const std::vector<std::pair<std::string, Suite>> all = {{"default", run_default_suite}, {"comic", run_comic_suite}, {"sketch", run_sketch_suite}, {"hatching", run_hatching_suite}, {"painterly", run_painterly_suite}, {"tween", run_tween_suite}, {"landmarks", run_landmarks_suite}, {"net", run_net_suite}};
   return all;
 }
 

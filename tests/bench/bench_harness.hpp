@@ -54,8 +54,9 @@ class Harness {
   // Times `frames` frames of `renderer` (after a short warm-up) drawing `object` over a flat
   // clear while it turns, finishing GL work each frame so the time is the frame's real cost.
   // Ends with one frame at the study's pose, so the renderer's counters describe that pose.
-  // Fills fps fields and `frames`; the caller fills names and counters.
-  Result time_frames(Renderer& renderer, const BenchObject& object, int frames);
+  // Fills fps fields and `frames`; the caller fills names and counters. Draws into `target`
+  // when given (suites with their own image size), else the 620x500 canvas.
+  Result time_frames(Renderer& renderer, const BenchObject& object, int frames, Canvas* target = nullptr);
 
  private:
   Options options_;
@@ -75,5 +76,7 @@ std::vector<Result> run_sketch_suite(Harness& harness);
 std::vector<Result> run_hatching_suite(Harness& harness);
 std::vector<Result> run_painterly_suite(Harness& harness);
 std::vector<Result> run_net_suite(Harness& harness);
+std::vector<Result> run_tween_suite(Harness& harness);
+std::vector<Result> run_landmarks_suite(Harness& harness);
 
 }  // namespace inkwire::bench
