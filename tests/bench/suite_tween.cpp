@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include <glm/geometric.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "bench_harness.hpp"
 #include "client/render/styles.hpp"
@@ -139,7 +140,42 @@ std::vector<Result> run_landmarks_suite(Harness& harness) {
   r.counters["mean_error_px"] = checked > wrong ? error_sum / double(checked - wrong) : 0.0;
   r.counters["unverifiable_fraction"] = found ? double(unverifiable) / found : 0.0;
   r.counters.insert(rejected.begin(), rejected.end());
-  return {r};
+  std::vector<Result> results = {r};
+
+  // Real photos (richer texture than any packaged model), when ../shared/data is beside the
+  // checkout: two ring neighbours 15 degrees apart, the centre square scaled to 256x256. No
+  // exact correspondences exist, so only the count and the time are reported.
+  const std::filesystem::path ring = std::filesystem::path(INKWIRE_SHARED_DATA_DIR) / "templeRing";
+  if (!std::filesystem::exists(ring / "templeR0002.png")) {
+    std::fprintf(stderr, "inkwire-bench: %s is absent: skipping the landmarks-on-photos row\n", ring.c_str());
+    return results;
+  }
+  auto square = [&](const char* name) {
+    const cv::Mat grey = grey_of(load_image(ring / name));
+    const int side = std::min(grey.cols, grey.rows);
+    cv::Mat out;
+    cv::resize(grey(cv::Rect((grey.cols - side) / 2, (grey.rows - side) / 2, side, side)), out, cv::Size(kSize, kSize), 0, 0, cv::INTER_AREA);
+    return out;
+  };
+  const cv::Mat a = square("templeR0002.png"), b = square("templeR0004.png");
+  std::vector<double> photo_seconds;
+  size_t count = 0;
+  for (int repeat = 0; repeat < 5; ++repeat) {
+    const auto start = std::chrono::steady_clock::now();
+    count = find_landmarks(a, b, options).size();
+    photo_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  std::sort(photo_seconds.begin(), photo_seconds.end());
+  Result photo;
+  photo.suite = "landmarks";
+  photo.renderer = "landmarks";
+  photo.variant = "templeRing 2->4,256x256";
+  photo.object = "temple";
+  photo.frames = 5;
+  photo.counters["landmarks"] = double(count);
+  photo.counters["seconds"] = photo_seconds[photo_seconds.size() / 2];
+  results.push_back(photo);
+  return results;
 }
 
 }  // namespace inkwire::bench

@@ -38,9 +38,11 @@ Image test_card(int w, int h) {
   return image;
 }
 
-Image view_with(TweenRenderer& tween, const std::string& method, const FrameState& frame, Canvas& canvas) {
+Image view_with(TweenRenderer& tween, const std::string& method, const FrameState& frame, Canvas& canvas,
+                const std::string& layout = "ring") {
   StyleParams params(TweenRenderer::params());
   params.set("method", method);
+  params.set("layout", layout);
   tween.configure(params);
   canvas.bind();
   tween.draw(frame);
@@ -146,4 +148,31 @@ TEST(TweenGLTest, InBetweenViewsBeatNearestSampleAndCrossFade) {
   // pair). The margins leave room for driver differences, not for a warp that stopped working.
   EXPECT_GT(bilinear, nearest + 6.0);
   EXPECT_GT(bilinear, crossfade + 4.0);
+}
+
+TEST(TweenGLTest, TrilinearViewsOffTheEquatorBeatTheNearestSample) {
+  test::offscreen_context();
+  INKWIRE_REQUIRE_FILE(test::cgal_mesh("cow.off"));
+  const SceneObject cow = load_scene_object(test::cgal_mesh("cow.off"));
+  const int size = 256;
+  Canvas canvas(size, size);
+  TweenRenderer tween;
+  StyleParams params(TweenRenderer::params());
+  params.set("layout", "sphere");
+  tween.configure(params);
+  tween.prepare(cow);
+  double nearest = 0.0, trilinear = 0.0;
+  const float views[][2] = {{52.5f, 25.0f}, {160.0f, -35.0f}, {280.0f, 50.0f}};
+  for (const auto& v : views) {
+    const FrameState frame = test::view_of(cow, canvas, v[0], v[1], 1.4f);
+    const Image truth = render_mesh_view(cow, frame.camera.position - cow.topology.bounds.centre(), size, 1.4f);
+    const double n = psnr_covered(view_with(tween, "nearest", frame, canvas, "sphere"), truth);
+    const double t = psnr_covered(view_with(tween, "trilinear", frame, canvas, "sphere"), truth);
+    std::printf("view %.1f,%.1f: nearest %.2f dB, trilinear %.2f dB\n", v[0], v[1], n, t);
+    nearest += n / 3.0;
+    trilinear += t / 3.0;
+  }
+  // Measured 2026-11: nearest 17.2, trilinear 24.2 dB on average (162 samples, 65 points per
+  // triangle).
+  EXPECT_GT(trilinear, nearest + 3.0);
 }

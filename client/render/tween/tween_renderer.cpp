@@ -28,8 +28,10 @@ std::vector<ParamSpec> TweenRenderer::params() {
                    "how a view is made from the samples around it (trilinear samples a geodesic sphere, the others a ring)"),
       choice_param("overlap", "layered", {"layered", "depth-clear"},
                    "how folded triangles are kept from adding up: passes laid nearer and nearer, or depth cleared per pass"),
+      choice_param("layout", "auto", {"auto", "ring", "sphere"},
+                   "where samples are taken: a ring on the equator or a geodesic sphere (auto: sphere for trilinear only)"),
       int_param("samples", "24", 3, 360, "samples on the ring (24 = every 15 degrees)"),
-      int_param("sphere_level", "1", 0, 3, "geodesic sphere subdivisions for trilinear (0: 12 samples, 1: 42, 2: 162)"),
+      int_param("sphere_level", "2", 0, 3, "geodesic sphere subdivisions for trilinear (0: 12 samples, 1: 42, 2: 162)"),
       int_param("points", "65", 3, 2000, "control points per sample pair or triangle"),
       int_param("sample_size", "256", 32, 2048, "sample images are this many pixels square"),
       text_param("sample_style", "default", "the style the samples are rendered in"),
@@ -39,6 +41,7 @@ std::vector<ParamSpec> TweenRenderer::params() {
 void TweenRenderer::configure(const StyleParams& p) {
   method_ = p.get_text("method");
   overlap_ = p.get_text("overlap") == "depth-clear" ? OverlapMode::DepthClear : OverlapMode::Layered;
+  layout_ = p.get_text("layout");
   ring_samples_ = p.get_int("samples");
   sphere_level_ = p.get_int("sphere_level");
   points_ = p.get_int("points");
@@ -54,7 +57,7 @@ void TweenRenderer::prepare(const SceneObject& object) {
 }
 
 void TweenRenderer::build_from_mesh() {
-  const bool sphere = method_ == "trilinear";
+  const bool sphere = layout_ == "sphere" || (layout_ == "auto" && method_ == "trilinear");
   const std::string sampling = (sphere ? "sphere" + std::to_string(sphere_level_) : "ring" + std::to_string(ring_samples_)) +
                                "/" + std::to_string(points_) + "/" + std::to_string(sample_size_) + "/" + sample_style_;
   if (sampling == built_for_) return;

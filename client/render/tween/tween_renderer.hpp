@@ -8,6 +8,7 @@
 //   linear     the closest sample warped to the view
 //   bilinear   both samples of a ring pair warped to the view and blended
 //   trilinear  the three samples of a sphere triangle warped to the view and blended
+// (on a sphere, bilinear and trilinear both warp all three samples of the triangle).
 #include <memory>
 #include <string>
 #include <vector>
@@ -50,9 +51,9 @@ class TweenRenderer final : public Renderer {
  private:
   void build_from_mesh();
   void upload();
-  std::string method_ = "bilinear";
+  std::string method_ = "bilinear", layout_ = "auto";
   OverlapMode overlap_ = OverlapMode::Layered;
-  int ring_samples_ = 24, sphere_level_ = 1, points_ = 65, sample_size_ = 256;
+  int ring_samples_ = 24, sphere_level_ = 2, points_ = 65, sample_size_ = 256;
   std::string sample_style_ = "default";
   std::string built_for_;  // the sampling the current model was made with ("" = from outside)
   const SceneObject* object_ = nullptr;
