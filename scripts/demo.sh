@@ -5,7 +5,9 @@
 # Writes OUT_DIR/contact-sheet.png (models x styles), OUT_DIR/styles/<model>-<style>.png,
 # OUT_DIR/shade-maps.png (the comic shade-map library on one model), OUT_DIR/paintings.png (every
 # shipped painting style), OUT_DIR/turntable-<style>.mp4 and OUT_DIR/painted-video.mp4 (a
-# recorded video painted frame by frame), OUT_DIR/network/ (a server, a viewer recording a shared
+# recorded video painted frame by frame), OUT_DIR/tween-methods.png and OUT_DIR/tween/ (views
+# synthesised between sample images: methods side by side, orbit videos, and real photos of a
+# ring when ../shared/data is there), OUT_DIR/network/ (a server, a viewer recording a shared
 # session while a director client changes its style and camera, and a turntable session).
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -72,6 +74,27 @@ done
   --frames 72 --out "$out/duck-turntable.mp4"
 "$bin/inkwire-render" --video "$out/duck-turntable.mp4" --style painterly --out "$out/painted-video.mp4"
 
+# Super-realistic tweening: a textured product photographed (rendered) every 15 degrees; every
+# view in between synthesised by warping the two nearest samples along their control points.
+truck=/usr/share/assimp/models/glTF/CesiumMilkTruck/CesiumMilkTruck.gltf
+mkdir -p "$out/tween"
+tween_tiles=()
+"$bin/inkwire-render" --mesh "$truck" --style default --view 52.5,0,1.4 --size 320x320 --out "$out/tween/truth.png"
+tween_tiles+=("$out/tween/truth.png" --text:x=10:y=24:size=16:color=0,0,0:font=$font "true view at 52.5 deg")
+for method in nearest crossfade bilinear; do
+  "$bin/inkwire-render" --mesh "$truck" --style tween --set "method=$method" --view 52.5,0,1.4 --size 320x320 \
+    --out "$out/tween/$method.png"
+  tween_tiles+=("$out/tween/$method.png" --text:x=10:y=24:size=16:color=0,0,0:font=$font "$method from 45 + 60 deg")
+done
+oiiotool "${tween_tiles[@]}" --mosaic:pad=4 4x1 --ch R,G,B -o "$out/tween-methods.png"
+"$bin/inkwire-render" --mesh "$truck" --style tween --view 0,0,1.4 --size 480x360 --frames 96 --out "$out/tween/truck-orbit.mp4"
+"$bin/inkwire-render" --mesh "$truck" --style tween --set method=trilinear --view 0,30,1.4 --size 480x360 --frames 96 \
+  --out "$out/tween/truck-orbit-trilinear.mp4"
+if [[ -d "$here/../shared/data/templeRing" ]]; then  # real photos, when the data folder is beside the checkout
+  "$bin/inkwire-eval" tween-ring --dataset "$here/../shared/data/templeRing" --limit 4 --images "$out/tween/temple" \
+    --json "$out/tween/temple.json" > /dev/null
+fi
+
 # Over the network: a real server with its embedded default sessions, a viewer recording the
 # shared "demo" session, and a director client that changes the session's style and camera
 # once a second. The viewer draws every change locally from control messages of a few bytes.
@@ -104,4 +127,4 @@ wait $viewer_pid
 kill -TERM $server_pid && wait $server_pid || true
 trap - EXIT
 
-echo "demo: wrote $out/contact-sheet.png, $out/shade-maps.png, $out/paintings.png, $out/styles/, $out/turntable-*.mp4, $out/painted-video.mp4 and $out/network/ (viewer.mp4: a shared session followed over the network)"
+echo "demo: wrote $out/contact-sheet.png, $out/shade-maps.png, $out/paintings.png, $out/styles/, $out/turntable-*.mp4, $out/painted-video.mp4, $out/tween-methods.png, $out/tween/ and $out/network/ (viewer.mp4: a shared session followed over the network)"
