@@ -40,16 +40,18 @@ Image draw_into(Renderer& renderer, Canvas& canvas, const Camera& camera) {
   return canvas.read();
 }
 
-// Colour from a multisampled canvas (smooth edges, like a photo); depth, when wanted, from a
-// second single-sampled drawing (multisampled depth cannot be read back).
-Image draw_view(Renderer& renderer, int size, const Camera& camera, std::vector<float>* depth) {
-  static constexpr int kSamples = 4;
-  Canvas colour(size, size, kSamples);
-  Image image = draw_into(renderer, colour, camera);
+// Colour from a multisampled canvas (smooth edges, like a photo); depth from a second,
+// single-sampled drawing (multisampled depth cannot be read back). Made once per sample set.
+struct SampleCanvases {
+  explicit SampleCanvases(int size) : colour(size, size, 4), depth(size, size, 1) {}
+  Canvas colour, depth;
+};
+
+Image draw_view(Renderer& renderer, SampleCanvases& canvases, const Camera& camera, std::vector<float>* depth) {
+  Image image = draw_into(renderer, canvases.colour, camera);
   if (depth) {
-    Canvas single(size, size, 1);
-    draw_into(renderer, single, camera);
-    *depth = single.read_depth();
+    draw_into(renderer, canvases.depth, camera);
+    *depth = canvases.depth.read_depth();
   }
   return image;
 }
@@ -111,10 +113,11 @@ MeshSamples render_mesh_samples(const SceneObject& object, const std::vector<glm
   const FramebufferBinding restore;
   auto renderer = make_renderer(style);
   renderer->prepare(object);
+  SampleCanvases canvases(size);
   for (const glm::vec3& d : directions) {
     s.cameras.push_back(sample_camera(s.bounds, d, distance_diagonals));
     std::vector<float> depth;
-    s.images.push_back(draw_view(*renderer, size, s.cameras.back(), &depth));
+    s.images.push_back(draw_view(*renderer, canvases, s.cameras.back(), &depth));
     s.depths.push_back(std::move(depth));
   }
   return s;
@@ -125,7 +128,8 @@ Image render_mesh_view(const SceneObject& object, const glm::vec3& direction, in
   const FramebufferBinding restore;
   auto renderer = make_renderer(style);
   renderer->prepare(object);
-  return draw_view(*renderer, size, sample_camera(object.topology.bounds, direction, distance_diagonals), nullptr);
+  SampleCanvases canvases(size);
+  return draw_view(*renderer, canvases, sample_camera(object.topology.bounds, direction, distance_diagonals), nullptr);
 }
 
 TweenCell exact_cell(const MeshSamples& samples, const SceneObject& object, const std::vector<uint16_t>& cell, int count) {
