@@ -94,6 +94,7 @@ void TweenRenderer::upload() {
   warper_ = std::make_unique<ImageWarper>(model_.data.width, model_.data.height);
   textures_.clear();
   for (const Image& image : model_.images) textures_.push_back(make_sample_texture(image));
+  bytes_per_cell_ = double(encode_tween(model_.data).size()) / double(model_.data.cells.size());
   meshes_.clear();
   for (const TweenCell& cell : model_.data.cells)
     meshes_.push_back(warper_->add_mesh(build_warp_mesh(cell, model_.data.width, model_.data.height)));
@@ -155,7 +156,7 @@ std::map<std::string, double> TweenRenderer::counters() const {
   if (last_cell_ >= 0) c["triangles"] = double(warper_->triangles(meshes_[size_t(last_cell_)]));
   c["passes"] = last_passes_;
   c["cell"] = last_cell_;
-  if (!model_.data.cells.empty()) c["bytes_per_cell"] = double(encode_tween(model_.data).size()) / double(model_.data.cells.size());
+  if (warper_) c["bytes_per_cell"] = bytes_per_cell_;
   return c;
 }
 

@@ -62,6 +62,7 @@ class TweenRenderer final : public Renderer {
   std::vector<gl::Texture> textures_;
   std::vector<int> meshes_;  // per cell
   int last_cell_ = -1, last_passes_ = 0;
+  double bytes_per_cell_ = 0.0;  // the model's tween data as the codec writes it
 };
 
 }  // namespace inkwire
