@@ -1,0 +1,53 @@
+#include "server/face/face_features.hpp"
+
+#include <glm/geometric.hpp>
+
+namespace inkwire {
+
+using namespace face_index;
+
+namespace {
+
+float mean_y(const FaceLandmarks& p, int first, int last) {
+  float sum = 0;
+  for (int i = first; i <= last; ++i) sum += p[size_t(i)].y;
+  return sum / float(last - first + 1);
+}
+
+float eye_openness(const FaceLandmarks& p, int first) {
+  const auto at = [&](int k) { return p[size_t(first + k)]; };
+  const float gap = 0.5f * (glm::distance(at(1), at(5)) + glm::distance(at(2), at(4)));
+  return gap / glm::distance(at(0), at(3));
+}
+
+}  // namespace
+
+FaceFeatures measure_features(const FaceLandmarks& landmarks) {
+  const FaceLandmarks p = to_face(landmarks, face_frame(landmarks));
+  FaceFeatures f;
+  f.brow_raise_left = -mean_y(p, kBrowLeftFirst, kBrowLeftLast);
+  f.brow_raise_right = -mean_y(p, kBrowRightFirst, kBrowRightLast);
+  // Inner ends (21, 22) against outer ends (17, 26): y is down, so inner-up makes this positive.
+  f.brow_inner_raise = 0.5f * ((p[17].y + p[26].y) - (p[21].y + p[22].y));
+  f.eye_open_left = eye_openness(p, kEyeLeftFirst);
+  f.eye_open_right = eye_openness(p, kEyeRightFirst);
+  f.mouth_open = (glm::distance(p[61], p[67]) + glm::distance(p[62], p[66]) + glm::distance(p[63], p[65])) / 3.0f;
+  f.mouth_width = glm::distance(p[kMouthLeft], p[kMouthRight]);
+  const float midline = 0.5f * (p[kLipTop].y + p[kLipBottom].y);
+  f.corner_lift = midline - 0.5f * (p[kMouthLeft].y + p[kMouthRight].y);
+  f.jaw_drop = p[kChin].y - p[kNoseTip].y;
+  return f;
+}
+
+FaceFeatures operator+(const FaceFeatures& a, const FaceFeatures& b) {
+  return {a.brow_raise_left + b.brow_raise_left, a.brow_raise_right + b.brow_raise_right, a.eye_open_left + b.eye_open_left,
+          a.eye_open_right + b.eye_open_right,   a.mouth_open + b.mouth_open,             a.mouth_width + b.mouth_width,
+          a.corner_lift + b.corner_lift,         a.jaw_drop + b.jaw_drop,                 a.brow_inner_raise + b.brow_inner_raise};
+}
+
+FaceFeatures operator*(float s, const FaceFeatures& f) {
+  return {s * f.brow_raise_left, s * f.brow_raise_right, s * f.eye_open_left, s * f.eye_open_right, s * f.mouth_open,
+          s * f.mouth_width,     s * f.corner_lift,      s * f.jaw_drop,      s * f.brow_inner_raise};
+}
+
+}  // namespace inkwire
