@@ -271,4 +271,10 @@ Message decode(MessageType type, const uint8_t* payload, size_t size) {
   return m;
 }
 
+std::optional<ExpressionState> expression_state(const ExpressionCode& message) {
+  const auto expression = expression_from_code(message.code);
+  if (!expression) return std::nullopt;
+  return ExpressionState{*expression, message.intensity};
+}
+
 }  // namespace inkwire::protocol

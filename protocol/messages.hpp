@@ -12,6 +12,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "common/face/expression.hpp"
 #include "protocol/streams.hpp"
 
 namespace inkwire::protocol {
@@ -188,5 +189,8 @@ bool is_state(MessageType type);
 // in the revision; false (and nothing changed) for any other message. Server and clients both
 // keep their copy of a session's state with it.
 bool apply_state_change(Snapshot& snapshot, const Message& change);
+
+// The expression a code from the wire shows: nothing for codes this version does not know.
+std::optional<ExpressionState> expression_state(const ExpressionCode& message);
 
 }  // namespace inkwire::protocol

@@ -99,6 +99,8 @@ class Texture : public Handle<delete_texture> {
   void update(const Image& image);
   void bind(int unit) const;
   GLenum target() const { return target_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
 
  private:
   using Handle::Handle;

@@ -20,9 +20,4 @@ std::optional<Expression> expression_from_name(std::string_view name) {
   return std::nullopt;
 }
 
-std::optional<Expression> expression_from_code(uint8_t code) {
-  if (code >= kExpressionCount) return std::nullopt;
-  return Expression(code);
-}
-
 }  // namespace inkwire

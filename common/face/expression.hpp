@@ -28,7 +28,10 @@ constexpr int kExpressionCount = 13;
 const char* name_of(Expression e);
 std::optional<Expression> expression_from_name(std::string_view name);
 // Codes from the wire: nothing for numbers this version does not know.
-std::optional<Expression> expression_from_code(uint8_t code);
+inline std::optional<Expression> expression_from_code(uint8_t code) {
+  if (code >= kExpressionCount) return std::nullopt;
+  return Expression(code);
+}
 
 // An expression as the face shows it: which one, and how strongly (255 = the full template).
 struct ExpressionState {

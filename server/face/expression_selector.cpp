@@ -8,7 +8,8 @@ namespace inkwire {
 
 namespace {
 
-// Intensity 0-255 from how far `amount` goes towards `full`.
+// Intensity 0-255 from how far `amount` goes towards `full`. The full amounts are about what the
+// development faces show for each expression, which is what the templates (255) reproduce.
 uint8_t intensity_of(float amount, float full) { return uint8_t(std::lround(std::clamp(amount / full, 0.0f, 1.0f) * 255.0f)); }
 
 }  // namespace
@@ -26,9 +27,9 @@ ExpressionState classify(const FaceFeatures& face, const FaceFeatures& neutral, 
 
   // An open mouth decides first: laughing and surprised faces also narrow or widen the eyes.
   if (mouth_open > t.mouth_open) {
-    const uint8_t open = intensity_of(mouth_open, 0.6f);
-    if (widening > t.smile_width) return {Expression::Laugh, std::max(open, intensity_of(widening, 0.3f))};
-    if (surprised) return {Expression::Surprise, std::max(open, intensity_of(brow, 0.2f))};
+    const uint8_t open = intensity_of(mouth_open, 0.3f);
+    if (widening > t.smile_width) return {Expression::Laugh, std::max(open, intensity_of(widening, 0.2f))};
+    if (surprised) return {Expression::Surprise, std::max(open, intensity_of(brow, 0.1f))};
     if (widening < -t.round_narrowing) return {Expression::VisemeRound, open};
     return {Expression::VisemeOpen, open};
   }
@@ -36,10 +37,10 @@ ExpressionState classify(const FaceFeatures& face, const FaceFeatures& neutral, 
     return {eye_left < eye_right ? Expression::WinkLeft : Expression::WinkRight, intensity_of(1.0f - std::min(eye_left, eye_right), 0.8f)};
   if (eyes < t.eyes_closed_mean) return {Expression::EyesClosed, intensity_of(1.0f - eyes, 0.8f)};
   if (widening > t.smile_width || corner_lift > t.smile_corner_lift)
-    return {Expression::Smile, std::max(intensity_of(corner_lift, 0.15f), intensity_of(widening, 0.25f))};
+    return {Expression::Smile, std::max(intensity_of(corner_lift, 0.1f), intensity_of(widening, 0.2f))};
   // Sad brows rise too, but tilted (inner ends up) and with the mouth corners down.
   if (corner_lift < -t.sad_corner_drop && brow_tilt > t.sad_brow_tilt) return {Expression::Sad, intensity_of(-corner_lift, 0.1f)};
-  if (surprised) return {Expression::Surprise, std::max(intensity_of(brow, 0.2f), intensity_of(eyes - 1.0f, 0.4f))};
+  if (surprised) return {Expression::Surprise, std::max(intensity_of(brow, 0.1f), intensity_of(eyes - 1.0f, 0.2f))};
   if (brow < -t.brow_lower) return {Expression::Frown, intensity_of(-brow, 0.15f)};
   if (mouth_open > t.viseme_wide_open && widening > 0.5f * t.smile_width) return {Expression::VisemeWide, intensity_of(widening, 0.2f)};
   return {Expression::Neutral, 0};

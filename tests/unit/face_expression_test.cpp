@@ -73,8 +73,8 @@ TEST(ExpressionSelection, TableOfSyntheticFaces) {
 TEST(ExpressionSelection, IntensityGrowsWithTheExpression) {
   const FaceFeatures neutral = measure_features(synthetic_face({}));
   int last = -1;
-  for (float open : {0.2f, 0.3f, 0.4f, 0.5f}) {
-    const ExpressionState s = classify(measure_features(synthetic_face({.brow_raise = 0.07f, .mouth_open = open})), neutral);
+  for (float open : {0.15f, 0.2f, 0.25f, 0.3f}) {
+    const ExpressionState s = classify(measure_features(synthetic_face({.brow_raise = 0.065f, .mouth_open = open})), neutral);
     ASSERT_EQ(s.expression, Expression::Surprise);
     EXPECT_GT(int(s.intensity), last);
     last = s.intensity;

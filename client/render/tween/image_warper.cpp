@@ -40,20 +40,36 @@ ImageWarper::ImageWarper(int width, int height)
   fbo_.check_complete("ImageWarper target");
 }
 
-int ImageWarper::add_mesh(const WarpMesh& mesh) {
+namespace {
+
+std::vector<float> vertex_data(const WarpMesh& mesh) {
   std::vector<float> vertices;
   vertices.reserve(mesh.points.size() * 6);
   for (const ControlPoint& p : mesh.points)
     for (const glm::vec2& v : p) vertices.insert(vertices.end(), {v.x, v.y});
+  return vertices;
+}
+
+}  // namespace
+
+int ImageWarper::add_mesh(const WarpMesh& mesh) {
+  const std::vector<float> vertices = vertex_data(mesh);
   std::vector<uint32_t> indices;
   for (const auto& t : mesh.triangles) indices.insert(indices.end(), t.begin(), t.end());
-  Mesh m{gl::Buffer::create(vertices), gl::Buffer::create(indices), gl::VertexArray::create(), GLsizei(indices.size())};
+  Mesh m{gl::Buffer::create(vertices), gl::Buffer::create(indices), mesh.points.size(), gl::VertexArray::create(), GLsizei(indices.size())};
   for (GLuint k = 0; k < 3; ++k) m.vao.attribute(k, m.vertices, 2, 6 * sizeof(float), k * 2 * sizeof(float));
   m.vao.bind();
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m.indices.id());  // recorded in the bound vertex array
   glBindVertexArray(0);
   meshes_.push_back(std::move(m));
   return int(meshes_.size()) - 1;
+}
+
+void ImageWarper::update_mesh(int mesh, const WarpMesh& moved) {
+  Mesh& m = meshes_.at(size_t(mesh));
+  if (moved.points.size() != m.points) throw Error("ImageWarper::update_mesh(): the point count changed");
+  const std::vector<float> vertices = vertex_data(moved);
+  m.vertices.upload(vertices.size() * sizeof(float), vertices.data(), GL_DYNAMIC_DRAW);
 }
 
 void ImageWarper::begin(OverlapMode overlap) {
@@ -89,6 +105,7 @@ void ImageWarper::pass(int mesh, const gl::Texture& sample, const glm::vec3& pos
   warp_.set("position_weights", position_weights);
   warp_.set("source", std::clamp(source, 0, 2));
   warp_.set("weight", weight);
+  warp_.set("sample_size", glm::vec2(sample.width(), sample.height()));
   warp_.set("depth", depth);
   sample.bind(0);
   m.vao.bind();

@@ -30,13 +30,15 @@ class ImageWarper {
 
   // Uploads a mesh once; returns its handle for pass().
   int add_mesh(const WarpMesh& mesh);
+  // Replaces a mesh's positions (same points and triangles, e.g. moved landmarks each frame).
+  void update_mesh(int mesh, const WarpMesh& moved);
   size_t triangles(int mesh) const { return meshes_.at(size_t(mesh)).index_count / 3; }
 
   // Starts a view: binds the target (saving the caller's framebuffer) and clears it to
   // transparent black.
   void begin(OverlapMode overlap);
   // Adds `sample` warped: vertices at position_weights . (p0, p1, p2), texels read at
-  // p[source], colour times `weight`.
+  // p[source] (pixels of `sample`, which may be larger than the view), colour times `weight`.
   void pass(int mesh, const gl::Texture& sample, const glm::vec3& position_weights, int source, float weight);
   // Ends the view and rebinds the caller's framebuffer and viewport.
   void end();
@@ -49,6 +51,7 @@ class ImageWarper {
  private:
   struct Mesh {
     gl::Buffer vertices, indices;
+    size_t points = 0;
     gl::VertexArray vao;
     GLsizei index_count = 0;
   };

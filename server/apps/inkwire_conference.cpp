@@ -1,0 +1,241 @@
+// inkwire-conference: a whole low-bandwidth conference in one process, for demos and
+// measurement. The speaker side (camera, video or image sequence) runs the server's face
+// pipeline; the expression codes go through the real wire encoding and decoding; the receiver
+// side deforms the neutral photo (sent once) by each code, and optionally paints it. Writes the
+// side-by-side video input | reconstruction | painted reconstruction and the bytes sent.
+//
+//   inkwire-conference --input SRC --out side.mp4 [--neutral PHOTO] [--json stats.json]
+//   inkwire-conference --speaker PHOTO --script smile:1,neutral:0.5 --out side.mp4
+#include <algorithm>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "client/gl/canvas.hpp"
+#include "client/gl/context.hpp"
+#include "client/output/frame_writer.hpp"
+#include "client/render/backdrop.hpp"
+#include "client/render/face/face_reconstructor.hpp"
+#include "client/render/painterly/painterly_renderer.hpp"
+#include "client/render/painterly/video_painter.hpp"
+#include "common/error.hpp"
+#include "common/video_source.hpp"
+#include "protocol/framing.hpp"
+#include "server/face/face_coder.hpp"
+
+using namespace inkwire;
+
+namespace {
+
+struct Options {
+  std::string input, neutral, speaker, script, out, json_path, paint = "impressionist";
+  int fps = 0, repeat = 1, frames = 0, height = 360;
+};
+
+struct ScriptStep {
+  ExpressionState state;
+  double seconds;
+};
+
+// "smile:1.0,surprise@200:0.8,...": expression[@intensity]:seconds.
+std::vector<ScriptStep> parse_script(const std::string& text) {
+  std::vector<ScriptStep> steps;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) {
+    const auto colon = item.find(':');
+    if (colon == std::string::npos) throw Error("--script item '" + item + "' is not expression:seconds");
+    std::string name = item.substr(0, colon);
+    int intensity = 255;
+    if (const auto at = name.find('@'); at != std::string::npos) intensity = std::stoi(name.substr(at + 1)), name = name.substr(0, at);
+    const auto e = expression_from_name(name);
+    const double seconds = std::stod(item.substr(colon + 1));
+    if (!e || intensity < 0 || intensity > 255 || !(seconds > 0 && seconds < 600)) throw Error("--script item '" + item + "' is not valid");
+    steps.push_back({{*e, uint8_t(intensity)}, seconds});
+  }
+  if (steps.empty()) throw Error("--script is empty");
+  return steps;
+}
+
+// A frame source: a real one, or a speaker synthesised from one photo following a script.
+class Speaker {
+ public:
+  Speaker(const Options& o) {
+    if (!o.speaker.empty()) {
+      photo_ = load_image(o.speaker);
+      script_ = parse_script(o.script);
+      fps_ = o.fps > 0 ? o.fps : 25;
+      FaceAnalyzer analyzer({.detect_every = 1, .detect_width = 320, .upsample = 0});
+      const auto face = analyzer.analyse(photo_);
+      if (!face) throw Error("--speaker photo shows no face");
+      actor_.emplace(photo_, face->landmarks);
+    } else {
+      source_.emplace(o.input);
+      fps_ = o.fps > 0 ? o.fps : source_->fps();
+    }
+    repeat_ = std::max(o.repeat, 1);
+  }
+  double fps() const { return fps_; }
+  std::optional<Image> next() {
+    if (actor_) {
+      const double t = double(frame_++) / fps_;
+      double end = 0;
+      for (const ScriptStep& step : script_) {
+        if (t < (end += step.seconds)) {
+          if (actor_->expression() != step.state || frame_ == 1) actor_->set_expression(step.state, t);
+          actor_->render(t);
+          return actor_->read();
+        }
+      }
+      return std::nullopt;
+    }
+    if (held_ && held_count_ < repeat_) return ++held_count_, held_;
+    held_ = source_->next();
+    held_count_ = 1;
+    return held_;
+  }
+
+ private:
+  std::optional<VideoSource> source_;
+  Image photo_;
+  std::vector<ScriptStep> script_;
+  std::optional<FaceReconstructor> actor_;
+  std::optional<Image> held_;
+  int repeat_ = 1, held_count_ = 0, frame_ = 0;
+  double fps_ = 25;
+};
+
+Image fit_height(const Image& image, int height) {
+  const int width = std::max(2, int(std::lround(double(image.width) * height / image.height)) & ~1);
+  Image out(width, height);
+  const cv::Mat src(image.height, image.width, CV_8UC4, const_cast<uint8_t*>(image.pixels.data()));
+  cv::Mat dst(height, width, CV_8UC4, out.pixels.data());
+  cv::resize(src, dst, dst.size(), 0, 0, cv::INTER_AREA);
+  return out;
+}
+
+Image side_by_side(const std::vector<Image>& panels) {
+  int width = 0;
+  for (const Image& p : panels) width += p.width;
+  Image out(width, panels.front().height);
+  int x0 = 0;
+  for (const Image& p : panels) {
+    for (int y = 0; y < p.height; ++y)
+      std::copy_n(&p.pixels[size_t(y) * size_t(p.width) * 4], size_t(p.width) * 4, &out.pixels[(size_t(y) * size_t(width) + size_t(x0)) * 4]);
+    x0 += p.width;
+  }
+  return out;
+}
+
+Image opaque(Image image) {  // the reconstruction is premultiplied; the photo covers it all
+  for (size_t i = 3; i < image.pixels.size(); i += 4) image.pixels[i] = 255;
+  return image;
+}
+
+int run(const Options& o) {
+  // Everything draws into its own off-screen targets: the context's own surface is never shown.
+  auto context = create_offscreen_context(64, 64);
+  Speaker speaker(o);
+  std::optional<Image> first = speaker.next();
+  if (!first) throw Error("the input has no frames");
+
+  // Speaker side: calibration and the neutral photo (sent once, as an asset would be).
+  FaceCoder coder({.detect_every = 5, .detect_width = 320, .upsample = first->width < 480 ? 1 : 0});
+  const Image neutral = o.neutral.empty() ? *first : load_image(o.neutral);
+  const FaceLandmarks neutral_landmarks = coder.calibrate(neutral);
+
+  // Receiver side.
+  FaceReconstructor receiver(neutral, neutral_landmarks);
+  Canvas paint_canvas(neutral.width, neutral.height, 1);
+  std::optional<VideoPainter> painter;
+  if (o.paint != "none") {
+    StyleParams params(PainterlyRenderer::params());
+    params.set_assignment("style=" + o.paint);
+    PaintStyle style = paint_style_from_params(params);
+    style.brushes = std::clamp(int(double(style.brushes) * neutral.width * neutral.height / 60000.0), 500, 30000);
+    painter.emplace(style, 7);
+    paint_canvas.bind();
+    Backdrop(BackdropSpec::parse("canvas")).draw();
+  }
+
+  protocol::FrameDecoder wire;
+  FrameWriter writer(o.out, o.frames > 0 ? o.frames : 100000, int(std::lround(speaker.fps())), false);
+  int frames = 0, faces = 0;
+  std::map<std::string, int> shown;
+  double analysis_ms = 0;
+  for (std::optional<Image> frame = std::move(first); frame && (o.frames == 0 || frames < o.frames); frame = speaker.next(), ++frames) {
+    const double now = double(frames) / speaker.fps();
+    const auto start = std::chrono::steady_clock::now();
+    const auto message = coder.code(*frame, now);
+    analysis_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    faces += coder.last_face().has_value();
+    if (message) {
+      const protocol::Bytes bytes = protocol::encode(*message);  // over the wire and back
+      wire.feed(bytes.data(), bytes.size());
+      while (auto received = wire.next())
+        if (const auto* code = std::get_if<protocol::ExpressionCode>(&*received))
+          if (const auto state = protocol::expression_state(*code)) receiver.set_expression(*state, now);
+    }
+    receiver.render(now);
+    const Image reconstruction = opaque(receiver.read());
+    ++shown[name_of(receiver.expression().expression)];
+    std::vector<Image> panels = {fit_height(*frame, o.height), fit_height(reconstruction, o.height)};
+    if (painter) {
+      paint_canvas.bind();
+      painter->paint(reconstruction);
+      panels.push_back(fit_height(paint_canvas.read(), o.height));
+    }
+    writer.write(side_by_side(panels));
+  }
+  writer.close();
+
+  const double seconds = frames / speaker.fps();
+  nlohmann::json stats = {{"frames", frames},
+                          {"seconds", seconds},
+                          {"fps", speaker.fps()},
+                          {"faces_found", faces},
+                          {"messages", coder.stream().messages()},
+                          {"bytes", coder.stream().bytes()},
+                          {"bytes_per_second", seconds > 0 ? double(coder.stream().bytes()) / seconds : 0.0},
+                          {"neutral_photo_bytes", neutral.pixels.size()},
+                          {"analysis_ms_mean", frames ? analysis_ms / frames : 0.0},
+                          {"frames_per_expression", shown}};
+  if (!o.json_path.empty()) std::ofstream(o.json_path) << stats.dump(2) << "\n";
+  std::cout << stats.dump(2) << "\n";
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"inkwire-conference: speaker (face analysis, expression codes) and receiver (reconstruction) in one process; "
+               "writes input | reconstruction | painted reconstruction side by side"};
+  Options o;
+  app.add_option("--input", o.input, "camera:N, /dev/videoN, a video file, a folder of images or a %04d pattern");
+  app.add_option("--speaker", o.speaker, "instead of --input: synthesise the speaker from this photo following --script");
+  app.add_option("--script", o.script, "with --speaker: expression[@intensity]:seconds,... e.g. neutral:1,smile:1,surprise@200:1");
+  app.add_option("--neutral", o.neutral, "the speaker's neutral photo (default: the first frame)");
+  app.add_option("--out", o.out, "side-by-side video (.mp4) or %04d.png frames")->required();
+  app.add_option("--json", o.json_path, "write the figures (bytes sent, frames, expressions shown) here");
+  app.add_option("--paint", o.paint, "painterly style of the third panel, or none")->default_val("impressionist");
+  app.add_option("--fps", o.fps, "frame rate (default: the source's)")->check(CLI::Range(1, 120));
+  app.add_option("--repeat", o.repeat, "show each input frame this many times (stills as a clip)")->check(CLI::Range(1, 1000));
+  app.add_option("--frames", o.frames, "stop after this many frames (0: the whole input)")->check(CLI::Range(0, 100000));
+  app.add_option("--height", o.height, "panel height in the output")->check(CLI::Range(64, 2160));
+  try {
+    app.parse(argc, argv);
+    if (o.input.empty() == o.speaker.empty()) throw CLI::ValidationError("give exactly one of --input and --speaker");
+    if (!o.speaker.empty() && o.script.empty()) throw CLI::ValidationError("--speaker needs --script");
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    return run(o);
+  } catch (const std::exception& e) {
+    std::cerr << "inkwire-conference: " << e.what() << "\n";
+    return 1;
+  }
+}
