@@ -69,12 +69,17 @@ FaceReconstructor::FaceReconstructor(const Image& neutral, const FaceLandmarks& 
   const FaceFrame frame = face_frame(landmarks);
   const FaceLandmarks face = to_face(landmarks, frame);
 
-  // Points: the 68 landmarks, fixed anchors (clamped into the photo), the image border.
+  // Points: the 68 landmarks, fixed anchors, the image border.
   std::vector<glm::vec2> points(landmarks.begin(), landmarks.end());
   landmark_of_.resize(kFaceLandmarks);
   for (int i = 0; i < kFaceLandmarks; ++i) landmark_of_[size_t(i)] = i;
-  const glm::vec2 inner_max(float(width_) - 2.0f, float(height_) - 2.0f);
-  for (const glm::vec2& a : face_anchors(face)) points.push_back(glm::clamp(frame.to_image(a), glm::vec2(2.0f), inner_max));
+  // Anchors near or past the image edge are left out (the border points hold the frame there);
+  // squeezed against the edge they would make sliver triangles the triangulation can miss.
+  const float margin = 0.04f * float(std::min(width_, height_));
+  for (const glm::vec2& face_point : face_anchors(face)) {
+    const glm::vec2 a = frame.to_image(face_point);
+    if (a.x > margin && a.y > margin && a.x < float(width_) - margin && a.y < float(height_) - margin) points.push_back(a);
+  }
   for (const glm::vec2& b : border_points(width_, height_)) points.push_back(b);
   landmark_of_.resize(points.size(), -1);
 
