@@ -95,6 +95,25 @@ if [[ -d "$here/../shared/data/templeRing" ]]; then  # real photos, when the dat
     --json "$out/tween/temple.json" > /dev/null
 fi
 
+# Low-bandwidth conferencing: the speaker's frames are analysed (dlib landmarks -> expression
+# code), only the codes cross the wire, and the receiver deforms the neutral photo by them.
+# Packaged photos hold no face video, so the speaker is synthesised from one packaged photo;
+# with the Yale faces beside the checkout, a real subject's photos play the speaker too.
+mkdir -p "$out/conference"
+"$bin/inkwire-conference" --speaker /usr/share/doc/libdlib19.1/examples/faces/Tom_Cruise_avp_2014_4.jpg \
+  --script neutral:1,smile@200:1,surprise:1,viseme-open@180:0.6,viseme-round:0.6,laugh@220:1,eyes-closed:0.8,wink-left:0.8,neutral:0.6 \
+  --fps 25 --out "$out/conference/packaged-speaker.mp4" --json "$out/conference/packaged-speaker.json" > /dev/null
+yale="$here/../shared/data/yalefaces"
+if [[ -d "$yale" ]]; then
+  rm -rf "$out/conference/yale-input" && mkdir -p "$out/conference/yale-input"
+  i=0
+  for label in normal happy normal surprised sleepy normal wink happy sad normal; do
+    cp "$yale/subject11_$label.png" "$out/conference/yale-input/$(printf %02d $i)_$label.png"; i=$((i + 1))
+  done
+  "$bin/inkwire-conference" --input "$out/conference/yale-input" --neutral "$yale/subject11_normal.png" --repeat 15 --fps 15 \
+    --out "$out/conference/yale-subject11.mp4" --json "$out/conference/yale-subject11.json" > /dev/null
+fi
+
 # Over the network: a real server with its embedded default sessions, a viewer recording the
 # shared "demo" session, and a director client that changes the session's style and camera
 # once a second. The viewer draws every change locally from control messages of a few bytes.
@@ -127,4 +146,4 @@ wait $viewer_pid
 kill -TERM $server_pid && wait $server_pid || true
 trap - EXIT
 
-echo "demo: wrote $out/contact-sheet.png, $out/shade-maps.png, $out/paintings.png, $out/styles/, $out/turntable-*.mp4, $out/painted-video.mp4, $out/tween-methods.png, $out/tween/ and $out/network/ (viewer.mp4: a shared session followed over the network)"
+echo "demo: wrote $out/contact-sheet.png, $out/shade-maps.png, $out/paintings.png, $out/styles/, $out/turntable-*.mp4, $out/painted-video.mp4, $out/tween-methods.png, $out/tween/, $out/conference/ (input | reconstruction | painted, with bytes sent in the .json) and $out/network/ (viewer.mp4: a shared session followed over the network)"

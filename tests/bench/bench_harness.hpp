@@ -76,6 +76,7 @@ std::vector<Result> run_sketch_suite(Harness& harness);
 std::vector<Result> run_hatching_suite(Harness& harness);
 std::vector<Result> run_painterly_suite(Harness& harness);
 std::vector<Result> run_net_suite(Harness& harness);
+std::vector<Result> run_face_suite(Harness& harness);
 std::vector<Result> run_tween_suite(Harness& harness);
 std::vector<Result> run_landmarks_suite(Harness& harness);
 
