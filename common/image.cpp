@@ -5,6 +5,7 @@
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+#include <opencv2/imgproc.hpp>
 
 #include "common/error.hpp"
 
@@ -75,6 +76,16 @@ void flip_rows(Image& image) {
   for (int y = 0; y < image.height / 2; ++y)
     std::swap_ranges(image.pixels.begin() + y * row, image.pixels.begin() + (y + 1) * row,
                      image.pixels.begin() + (image.height - 1 - y) * row);
+}
+
+Image resized(const Image& image, int width, int height) {
+  if (width <= 0 || height <= 0 || image.width <= 0 || image.height <= 0) throw Error("resized(): empty image or size");
+  Image out(width, height);
+  const cv::Mat source(image.height, image.width, CV_8UC4, const_cast<uint8_t*>(image.pixels.data()));
+  cv::Mat target(height, width, CV_8UC4, out.pixels.data());
+  const bool shrinking = width < image.width || height < image.height;
+  cv::resize(source, target, target.size(), 0, 0, shrinking ? cv::INTER_AREA : cv::INTER_LINEAR);
+  return out;
 }
 
 }  // namespace inkwire

@@ -39,4 +39,7 @@ void save_image(const Image& image, const std::filesystem::path& file, bool keep
 // Reverses row order: GL read-backs are bottom-up.
 void flip_rows(Image& image);
 
+// A copy scaled to `width` x `height` (area averaging when shrinking, bilinear when growing).
+Image resized(const Image& image, int width, int height);
+
 }  // namespace inkwire

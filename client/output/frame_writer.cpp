@@ -26,8 +26,8 @@ std::string frame_path(const std::string& pattern, int index) {
   return m.prefix().str() + number + m.suffix().str();
 }
 
-FrameWriter::FrameWriter(const std::string& path, int frames, int fps, bool keep_alpha)
-    : path_(path), keep_alpha_(keep_alpha), fps_(fps) {
+FrameWriter::FrameWriter(const std::string& path, int frames, int fps, bool keep_alpha, VideoQuality quality)
+    : path_(path), keep_alpha_(keep_alpha), fps_(fps), quality_(std::move(quality)) {
   video_ = path.ends_with(".mp4");
   if (!video_ && frames > 1 && !has_pattern(path))
     throw Error("--out '" + path + "' names one image but " + std::to_string(frames) + " frames were asked for: use a %04d pattern or .mp4");
@@ -46,7 +46,8 @@ void FrameWriter::write(const Image& frame) {
   if (!pipe_) {
     const std::string cmd = "ffmpeg -loglevel error -y -f rawvideo -pix_fmt rgba -s " + std::to_string(frame.width) + "x" +
                             std::to_string(frame.height) + " -r " + std::to_string(fps_) +
-                            " -i - -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -c:v libx264 -preset medium -crf 20 -pix_fmt yuv420p -movflags +faststart " +
+                            " -i - -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -c:v libx264 -preset " + shell_quote(quality_.preset) +
+                            " -crf " + std::to_string(quality_.crf) + " -pix_fmt yuv420p -movflags +faststart " +
                             shell_quote(path_);
     pipe_ = popen(cmd.c_str(), "w");
     if (!pipe_) throw Error("could not start ffmpeg to write " + path_);

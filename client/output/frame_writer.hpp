@@ -9,11 +9,18 @@
 
 namespace inkwire {
 
+// x264's settings for .mp4: CRF 20 "medium" looks clean; CRF 40 "veryslow" is the lowest
+// sensible quality (the size video conferencing is compared with).
+struct VideoQuality {
+  int crf = 20;
+  std::string preset = "medium";
+};
+
 class FrameWriter {
  public:
   // Throws inkwire::Error if the path cannot hold `frames` frames (e.g. one .png for many
   // frames without a %d pattern) or ffmpeg cannot be started.
-  FrameWriter(const std::string& path, int frames, int fps, bool keep_alpha);
+  FrameWriter(const std::string& path, int frames, int fps, bool keep_alpha, VideoQuality quality = {});
   ~FrameWriter();
   FrameWriter(const FrameWriter&) = delete;
   FrameWriter& operator=(const FrameWriter&) = delete;
@@ -26,6 +33,7 @@ class FrameWriter {
   std::string path_;
   bool video_ = false, keep_alpha_ = true;
   int fps_ = 24, written_ = 0;
+  VideoQuality quality_;
   FILE* pipe_ = nullptr;
 };
 

@@ -13,7 +13,6 @@
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
-#include <opencv2/imgproc.hpp>
 
 #include "client/gl/canvas.hpp"
 #include "client/gl/context.hpp"
@@ -109,12 +108,7 @@ class Speaker {
 };
 
 Image fit_height(const Image& image, int height) {
-  const int width = std::max(2, int(std::lround(double(image.width) * height / image.height)) & ~1);
-  Image out(width, height);
-  const cv::Mat src(image.height, image.width, CV_8UC4, const_cast<uint8_t*>(image.pixels.data()));
-  cv::Mat dst(height, width, CV_8UC4, out.pixels.data());
-  cv::resize(src, dst, dst.size(), 0, 0, cv::INTER_AREA);
-  return out;
+  return resized(image, std::max(2, int(std::lround(double(image.width) * height / image.height)) & ~1), height);
 }
 
 Image side_by_side(const std::vector<Image>& panels) {
@@ -128,11 +122,6 @@ Image side_by_side(const std::vector<Image>& panels) {
     x0 += p.width;
   }
   return out;
-}
-
-Image opaque(Image image) {  // the reconstruction is premultiplied; the photo covers it all
-  for (size_t i = 3; i < image.pixels.size(); i += 4) image.pixels[i] = 255;
-  return image;
 }
 
 int run(const Options& o) {
@@ -180,7 +169,7 @@ int run(const Options& o) {
           if (const auto state = protocol::expression_state(*code)) receiver.set_expression(*state, now);
     }
     receiver.render(now);
-    const Image reconstruction = opaque(receiver.read());
+    const Image reconstruction = receiver.read();  // opaque: the warped photo covers every pixel
     ++shown[name_of(receiver.expression().expression)];
     std::vector<Image> panels = {fit_height(*frame, o.height), fit_height(reconstruction, o.height)};
     if (painter) {

@@ -45,32 +45,6 @@ Bounds bounds_of(const FaceLandmarks& points) {
   return b;
 }
 
-}  // namespace
-
-FaceAnalyzer::FaceAnalyzer(FaceAnalyzerOptions options) : models_(std::make_unique<Models>()), options_(std::move(options)) {
-  if (!std::filesystem::is_regular_file(options_.model))
-    throw Error("face landmark model '" + options_.model + "' not found (Debian package libdlib-data)");
-  try {
-    dlib::deserialize(options_.model) >> models_->predictor;
-  } catch (const std::exception& e) {
-    throw Error("face landmark model '" + options_.model + "' is unreadable: " + e.what());
-  }
-  if (models_->predictor.num_parts() != kFaceLandmarks)
-    throw Error("face landmark model '" + options_.model + "' has " + std::to_string(models_->predictor.num_parts()) +
-                " points, not 68");
-}
-
-FaceAnalyzer::~FaceAnalyzer() = default;
-FaceAnalyzer::FaceAnalyzer(FaceAnalyzer&&) noexcept = default;
-FaceAnalyzer& FaceAnalyzer::operator=(FaceAnalyzer&&) noexcept = default;
-
-void FaceAnalyzer::reset() {
-  tracked_.reset();
-  frames_since_detection_ = 0;
-}
-
-namespace {
-
 void check_frame(const Image& frame) {
   if (frame.width <= 0 || frame.height <= 0 || frame.pixels.size() != size_t(frame.width) * size_t(frame.height) * 4)
     throw Error("face analysis: empty or inconsistent frame");
@@ -101,6 +75,28 @@ std::vector<FaceBox> detect_in(dlib::frontal_face_detector& detector, const dlib
 }
 
 }  // namespace
+
+FaceAnalyzer::FaceAnalyzer(FaceAnalyzerOptions options) : models_(std::make_unique<Models>()), options_(std::move(options)) {
+  if (!std::filesystem::is_regular_file(options_.model))
+    throw Error("face landmark model '" + options_.model + "' not found (Debian package libdlib-data)");
+  try {
+    dlib::deserialize(options_.model) >> models_->predictor;
+  } catch (const std::exception& e) {
+    throw Error("face landmark model '" + options_.model + "' is unreadable: " + e.what());
+  }
+  if (models_->predictor.num_parts() != kFaceLandmarks)
+    throw Error("face landmark model '" + options_.model + "' has " + std::to_string(models_->predictor.num_parts()) +
+                " points, not 68");
+}
+
+FaceAnalyzer::~FaceAnalyzer() = default;
+FaceAnalyzer::FaceAnalyzer(FaceAnalyzer&&) noexcept = default;
+FaceAnalyzer& FaceAnalyzer::operator=(FaceAnalyzer&&) noexcept = default;
+
+void FaceAnalyzer::reset() {
+  tracked_.reset();
+  frames_since_detection_ = 0;
+}
 
 std::vector<FaceBox> FaceAnalyzer::detect(const Image& frame) {
   check_frame(frame);
@@ -138,9 +134,7 @@ std::optional<FaceAnalysis> FaceAnalyzer::analyse(const Image& frame) {
     ++frames_since_detection_;
   }
 
-  const auto start = Clock::now();
   FaceAnalysis out{place_landmarks(models_->predictor, grey, box), detecting};
-  landmarks_ms_ = ms_since(start);
 
   const Bounds b = bounds_of(out.landmarks);
   if (b.width() < 8.0f || b.x1 < 0 || b.y1 < 0 || b.x0 > float(frame.width) || b.y0 > float(frame.height)) {

@@ -54,9 +54,8 @@ class FaceAnalyzer {
   // Forgets the tracked face: the next frame runs the detector.
   void reset();
 
-  // Time the last analyse() spent detecting (0 when it tracked) and placing landmarks.
+  // Time the last analyse() spent detecting (0 when it tracked).
   double last_detect_ms() const { return detect_ms_; }
-  double last_landmarks_ms() const { return landmarks_ms_; }
 
  private:
   struct Models;
@@ -66,7 +65,7 @@ class FaceAnalyzer {
   std::optional<FaceLandmarks> tracked_;
   // The detector's box relative to the landmarks' bounding box at the last detection.
   float box_scale_ = 1, box_dx_ = 0, box_dy_ = 0;
-  double detect_ms_ = 0, landmarks_ms_ = 0;
+  double detect_ms_ = 0;
 };
 
 }  // namespace inkwire

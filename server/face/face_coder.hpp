@@ -23,8 +23,6 @@ class FaceCoder {
   std::optional<protocol::ExpressionCode> code(const Image& frame, double now);
 
   const std::optional<FaceAnalysis>& last_face() const { return last_face_; }
-  ExpressionState state() const { return selector_.state(); }
-  const FaceAnalyzer& analyzer() const { return analyzer_; }
   const ExpressionStream& stream() const { return stream_; }
 
  private:

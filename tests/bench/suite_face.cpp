@@ -11,9 +11,9 @@
 #include <cstdio>
 #include <filesystem>
 
-#include <opencv2/imgproc.hpp>
 
 #include "bench_harness.hpp"
+#include "client/output/frame_writer.hpp"
 #include "client/render/face/face_reconstructor.hpp"
 #include "common/error.hpp"
 #include "server/face/face_coder.hpp"
@@ -28,9 +28,8 @@ constexpr double kClipSeconds = 12.0;
 // The photo scaled to the frame's height, centred on grey.
 Image framed(const Image& photo) {
   const int w = int(double(photo.width) * kHeight / photo.height);
-  Image scaled(w, kHeight), out(kWidth, kHeight);
-  cv::resize(cv::Mat(photo.height, photo.width, CV_8UC4, const_cast<uint8_t*>(photo.pixels.data())),
-             cv::Mat(kHeight, w, CV_8UC4, scaled.pixels.data()), {w, kHeight}, 0, 0, cv::INTER_AREA);
+  const Image scaled = resized(photo, w, kHeight);
+  Image out(kWidth, kHeight);
   for (size_t i = 0; i < out.pixels.size(); ++i) out.pixels[i] = i % 4 == 3 ? 255 : 110;
   for (int y = 0; y < kHeight; ++y)
     std::copy_n(&scaled.pixels[size_t(y) * size_t(w) * 4], size_t(w) * 4, &out.pixels[(size_t(y) * kWidth + size_t((kWidth - w) / 2)) * 4]);
@@ -55,9 +54,7 @@ std::vector<Image> speaker_clip(const Image& frame, const FaceLandmarks& landmar
     const int k = std::min(int(t / step), int(std::size(script)) - 1);
     if (k != shown) actor.set_expression(script[k], t), shown = k;
     actor.render(t);
-    Image image = actor.read();
-    for (size_t p = 3; p < image.pixels.size(); p += 4) image.pixels[p] = 255;
-    clip.push_back(std::move(image));
+    clip.push_back(actor.read());  // opaque: the warped photo covers every pixel
   }
   return clip;
 }
@@ -65,12 +62,9 @@ std::vector<Image> speaker_clip(const Image& frame, const FaceLandmarks& landmar
 // x264's size for the clip: bytes per second of the encoded stream.
 double x264_bytes_per_second(const std::vector<Image>& clip, double fps, const std::string& dir) {
   const std::string out = (std::filesystem::path(dir.empty() ? "." : dir) / "face-clip-x264.mp4").string();
-  const std::string command = "ffmpeg -v error -y -f rawvideo -pix_fmt rgba -s " + std::to_string(kWidth) + "x" + std::to_string(kHeight) +
-                              " -r " + std::to_string(int(fps)) + " -i - -an -c:v libx264 -preset veryslow -crf 40 -pix_fmt yuv420p '" + out + "'";
-  FILE* pipe = popen(command.c_str(), "w");
-  if (!pipe) throw Error("cannot start ffmpeg");
-  for (const Image& f : clip) std::fwrite(f.pixels.data(), 1, f.pixels.size(), pipe);
-  if (pclose(pipe) != 0) throw Error("ffmpeg failed to encode the face clip");
+  FrameWriter writer(out, int(clip.size()), int(fps), false, {.crf = 40, .preset = "veryslow"});
+  for (const Image& f : clip) writer.write(f);
+  writer.close();
   const double bytes = double(std::filesystem::file_size(out));
   std::filesystem::remove(out);
   return bytes / (double(clip.size()) / fps);

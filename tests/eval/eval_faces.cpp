@@ -120,8 +120,10 @@ nlohmann::json run_faces(const FacesOptions& options) {
       const auto points = label == "normal" ? neutral_points : landmarks_of(analyzer, upsampled, photo->second);
       std::string chosen = "no-face";
       ExpressionState state;
+      std::optional<FaceFeatures> features;
       if (points) {
-        state = classify(measure_features(*points), neutral);
+        features = measure_features(*points);
+        state = classify(*features, neutral);
         chosen = label_of(state.expression);
       } else {
         ++no_face;
@@ -139,7 +141,7 @@ nlohmann::json run_faces(const FacesOptions& options) {
       if (options.details) {
         nlohmann::json d = {{"file", photo->second.filename().string()}, {"label", label}, {"chosen", chosen},
                             {"code", name_of(state.expression)}, {"intensity", state.intensity}};
-        if (points) d["features"] = features_json(measure_features(*points)), d["neutral"] = features_json(neutral);
+        if (features) d["features"] = features_json(*features), d["neutral"] = features_json(neutral);
         details.push_back(d);
       }
     }

@@ -66,7 +66,9 @@ TEST(ExpressionSelection, TableOfSyntheticFaces) {
   for (const Case& c : cases) {
     const ExpressionState s = classify(measure_features(synthetic_face(c.pose)), neutral);
     EXPECT_EQ(name_of(s.expression), std::string(name_of(c.expected))) << c.what;
-    if (c.expected != Expression::Neutral) EXPECT_GT(s.intensity, 0) << c.what;
+    if (c.expected != Expression::Neutral) {
+      EXPECT_GT(s.intensity, 0) << c.what;
+    }
   }
 }
 

@@ -35,7 +35,6 @@ class FaceReconstructor {
 
   int width() const { return width_; }
   int height() const { return height_; }
-  size_t triangles() const { return warper_.triangles(mesh_); }
 
  private:
   int width_, height_;
