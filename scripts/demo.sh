@@ -8,7 +8,8 @@
 # recorded video painted frame by frame), OUT_DIR/tween-methods.png and OUT_DIR/tween/ (views
 # synthesised between sample images: methods side by side, orbit videos, and real photos of a
 # ring when ../shared/data is there), OUT_DIR/network/ (a server, a viewer recording a shared
-# session while a director client changes its style and camera, and a turntable session).
+# session while a director client changes its style and camera, a turntable session, and a
+# conference whose client rebuilds the speaker's face from expression codes).
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 out=$(realpath -m "${1:-$here/demo-output}")
@@ -102,7 +103,8 @@ fi
 mkdir -p "$out/conference"
 "$bin/inkwire-conference" --speaker /usr/share/doc/libdlib19.1/examples/faces/Tom_Cruise_avp_2014_4.jpg \
   --script neutral:1,smile@200:1,surprise:1,viseme-open@180:0.6,viseme-round:0.6,laugh@220:1,eyes-closed:0.8,wink-left:0.8,neutral:0.6 \
-  --fps 25 --out "$out/conference/packaged-speaker.mp4" --json "$out/conference/packaged-speaker.json" > /dev/null
+  --fps 25 --out "$out/conference/packaged-speaker.mp4" --input-out "$out/conference/packaged-speaker-input.mp4" \
+  --json "$out/conference/packaged-speaker.json" > /dev/null
 yale="$here/../shared/data/yalefaces"
 if [[ -d "$yale" ]]; then
   rm -rf "$out/conference/yale-input" && mkdir -p "$out/conference/yale-input"
@@ -114,12 +116,24 @@ if [[ -d "$yale" ]]; then
     --out "$out/conference/yale-subject11.mp4" --json "$out/conference/yale-subject11.json" > /dev/null
 fi
 
-# Over the network: a real server with its embedded default sessions, a viewer recording the
-# shared "demo" session, and a director client that changes the session's style and camera
-# once a second. The viewer draws every change locally from control messages of a few bytes.
+# Over the network: a real server with the embedded default's sessions plus a conference whose
+# speaker is the synthesised clip above, a viewer recording the shared "demo" session, and a
+# director client that changes the session's style and camera once a second. The viewer draws
+# every change locally from control messages of a few bytes.
 mkdir -p "$out/network"
 rm -rf "$out/network/server-data"
-"$bin/inkwire-server" --listen 127.0.0.1:0 --data "$out/network/server-data" 2> "$out/network/server.log" &
+speaker_photo=/usr/share/doc/libdlib19.1/examples/faces/Tom_Cruise_avp_2014_4.jpg
+cat > "$out/network/server.json" <<EOF
+{ "sessions": [
+  { "name": "demo", "kind": "scene", "style": "comic-extended", "assets": [ { "path": "$meshes/cow.off" } ] },
+  { "name": "sketchbook", "kind": "scene", "style": "sketch-pencil", "assets": [ { "path": "$meshes/bull.off" } ] },
+  { "name": "turntable", "kind": "turntable",
+    "assets": [ { "path": "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb" } ] },
+  { "name": "conference", "kind": "conference",
+    "face": { "source": "$out/conference/packaged-speaker-input.mp4", "neutral": "$speaker_photo", "loop": true } } ] }
+EOF
+"$bin/inkwire-server" --listen 127.0.0.1:0 --data "$out/network/server-data" --config "$out/network/server.json" \
+  2> "$out/network/server.log" &
 server_pid=$!
 trap 'kill $server_pid 2>/dev/null || true' EXIT
 port=""
@@ -143,7 +157,13 @@ done
 wait $viewer_pid
 "${client[@]}" --session turntable --name turntable --view 60,25,1.2 --frames 48 --fps 24 --size 480x360 \
   --out "$out/network/turntable.mp4" 2>> "$out/network/viewer.log"
+# The conference: the server analyses the speaker and sends codes only; the listener deforms the
+# neutral photo (fetched once) by them. Then one member asks for paint, and the face is painted.
+"${client[@]}" --session conference --name listener --frames 120 --fps 15 --size 360x480 \
+  --out "$out/network/conference.mp4" 2>> "$out/network/viewer.log"
+"${client[@]}" --session conference --name painter --style painterly --set style=impressionist --frames 45 --fps 15 \
+  --size 360x480 --out "$out/network/conference-painted.mp4" 2>> "$out/network/viewer.log"
 kill -TERM $server_pid && wait $server_pid || true
 trap - EXIT
 
-echo "demo: wrote $out/contact-sheet.png, $out/shade-maps.png, $out/paintings.png, $out/styles/, $out/turntable-*.mp4, $out/painted-video.mp4, $out/tween-methods.png, $out/tween/, $out/conference/ (input | reconstruction | painted, with bytes sent in the .json) and $out/network/ (viewer.mp4: a shared session followed over the network)"
+echo "demo: wrote $out/contact-sheet.png, $out/shade-maps.png, $out/paintings.png, $out/styles/, $out/turntable-*.mp4, $out/painted-video.mp4, $out/tween-methods.png, $out/tween/, $out/conference/ (input | reconstruction | painted, with bytes sent in the .json) and $out/network/ (viewer.mp4: a shared session followed over the network; conference.mp4 and conference-painted.mp4: a speaker's face rebuilt from expression codes)"

@@ -21,6 +21,18 @@ AssetKind asset_kind_from_string(const std::string& name) {
   throw Error("asset kind '" + name + "' is not mesh, image, samples, tween or landmarks");
 }
 
+FaceSourceConfig face_source_from_json(const SessionConfig& session, const nlohmann::json& j) {
+  if (session.kind != SessionKind::Conference) throw Error("session '" + session.name + "': only conference sessions take a face source");
+  FaceSourceConfig face;
+  face.source = j.at("source").get<std::string>();
+  face.neutral = j.value("neutral", "");
+  face.loop = j.value("loop", true);
+  face.fps = j.value("fps", 0.0);
+  if (face.source.empty()) throw Error("session '" + session.name + "': face source is empty");
+  if (!(face.fps >= 0 && face.fps <= 120)) throw Error("session '" + session.name + "': face fps must be 0 (the source's) to 120");
+  return face;
+}
+
 }  // namespace
 
 void parse_listen(const std::string& text, ServerConfig& config) {
@@ -39,7 +51,7 @@ ServerConfig ServerConfig::embedded_default() {
   const fs::path cgal = INKWIRE_MESH_DIR;
   const fs::path engine = "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
   auto session = [&](std::string name, SessionKind kind, const fs::path& model, std::string style) {
-    SessionConfig s{.name = std::move(name), .kind = kind, .token = "", .assets = {}, .style = std::move(style), .settings = {}};
+    SessionConfig s{.name = std::move(name), .kind = kind, .token = "", .assets = {}, .style = std::move(style), .settings = {}, .face = {}};
     if (!model.empty() && fs::exists(model)) s.assets.push_back({model, AssetKind::Mesh});
     if (model.empty() || !s.assets.empty()) c.sessions.push_back(std::move(s));
   };
@@ -71,6 +83,7 @@ ServerConfig ServerConfig::load(const fs::path& file) {
         session.settings = s.value("settings", std::vector<std::string>{});
         for (const auto& a : s.value("assets", nlohmann::json::array()))
           session.assets.push_back({a.at("path").get<std::string>(), asset_kind_from_string(a.value("kind", "mesh"))});
+        if (s.contains("face")) session.face = face_source_from_json(session, s.at("face"));
         c.sessions.push_back(std::move(session));
       }
     }

@@ -5,6 +5,7 @@
 // Debian-packaged models.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,15 @@ struct SessionAsset {
   protocol::AssetKind kind = protocol::AssetKind::Mesh;
 };
 
+// A conference session's speaker (SPEC F1-F5): the server analyses these frames and sends the
+// expression codes to the session's members, with the neutral photo and its landmarks as assets.
+struct FaceSourceConfig {
+  std::string source;               // VideoSource spec: camera:N, /dev/videoN, video, folder, pattern
+  std::filesystem::path neutral;    // the speaker's neutral photo; empty: the source's first frame
+  bool loop = true;                 // start a recorded source again at its end
+  double fps = 0;                   // pace of a recorded source; 0: its own
+};
+
 struct SessionConfig {
   std::string name;
   protocol::SessionKind kind = protocol::SessionKind::Scene;
@@ -24,6 +34,7 @@ struct SessionConfig {
   std::vector<SessionAsset> assets;
   std::string style = "default";
   std::vector<std::string> settings;  // KEY=VALUE
+  std::optional<FaceSourceConfig> face;  // conference sessions only
 };
 
 struct ServerConfig {

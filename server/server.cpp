@@ -4,10 +4,13 @@
 
 #include "common/camera.hpp"
 #include "common/error.hpp"
+#include "common/face/landmarks_file.hpp"
 #include "common/log.hpp"
 #include "server/connection.hpp"
+#include "server/face/face_feed.hpp"
 
 namespace inkwire::server {
+namespace fs = std::filesystem;
 namespace {
 
 constexpr auto no_throw = asio::experimental::as_tuple(asio::use_awaitable);
@@ -56,7 +59,39 @@ void Server::create_sessions() {
   }
 }
 
+void Server::start_face_feeds() {
+  // A speaker that cannot be set up (no source, no face in the photo) is logged and left out;
+  // every other session is served as usual.
+  for (const SessionConfig& c : config_.sessions) {
+    if (!c.face) continue;
+    const std::shared_ptr<Session> session = find_session(c.name);
+    try {
+      auto feed = std::make_unique<FaceFeed>(*c.face);
+      const fs::path dir = config_.data_dir / "faces";
+      fs::create_directories(dir);
+      const fs::path photo = dir / (c.name + "-neutral.png"), landmarks = dir / (c.name + "-neutral.landmarks.json");
+      save_image(feed->neutral(), photo, false);
+      save_landmarks(landmarks, feed->landmarks());
+      session->set_face_assets(store_.add_file(photo, protocol::AssetKind::Image),
+                               store_.add_file(landmarks, protocol::AssetKind::Landmarks));
+      persist(*session);
+      std::weak_ptr<Session> weak = session;
+      feed->start([this, weak](const protocol::ExpressionCode& code) {
+        asio::post(io_, [weak, code] {
+          if (const auto s = weak.lock()) s->apply(code, nullptr);
+        });
+      });
+      log_info("face-source-started", {{"session", c.name}, {"source", c.face->source},
+                                       {"photo", {feed->neutral().width, feed->neutral().height}}});
+      face_feeds_.push_back(std::move(feed));
+    } catch (const std::exception& e) {
+      log(LogLevel::Error, "face-source-failed", {{"session", c.name}, {"source", c.face->source}, {"reason", e.what()}});
+    }
+  }
+}
+
 void Server::start() {
+  start_face_feeds();
   log_info("listening", {{"host", config_.host}, {"port", port()}, {"data", config_.data_dir.string()}, {"sessions", sessions_.size()}});
   asio::co_spawn(io_, accept_loop(), asio::detached);
   asio::co_spawn(io_, persist_loop(), asio::detached);
@@ -111,6 +146,7 @@ void Server::stop() {
   std::error_code ec;
   acceptor_.close(ec);
   persist_timer_.cancel();
+  face_feeds_.clear();  // joins their threads; codes they posted are applied or dropped with the context
   for (auto& [name, session] : sessions_) persist(*session);
   // Copy: closing connections forget themselves.
   auto open = connections_;

@@ -4,6 +4,7 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <vector>
 
 #include <asio.hpp>
 
@@ -14,6 +15,7 @@
 namespace inkwire::server {
 
 class Connection;
+class FaceFeed;
 
 class Server {
  public:
@@ -38,6 +40,7 @@ class Server {
 
  private:
   void create_sessions();
+  void start_face_feeds();
   asio::awaitable<void> accept_loop();
   asio::awaitable<void> persist_loop();
 
@@ -48,6 +51,7 @@ class Server {
   asio::steady_timer persist_timer_;
   std::map<std::string, std::shared_ptr<Session>> sessions_;
   std::map<const Connection*, std::shared_ptr<Connection>> connections_;
+  std::vector<std::unique_ptr<FaceFeed>> face_feeds_;
   uint64_t next_id_ = 1;
   bool stopping_ = false;
 };

@@ -11,6 +11,17 @@ bool Session::lists_asset(const protocol::Hash& hash) const {
   return std::any_of(stored_.state.assets.begin(), stored_.state.assets.end(), [&](const auto& a) { return a.hash == hash; });
 }
 
+void Session::set_face_assets(const protocol::AssetAnnounce& photo, const protocol::AssetAnnounce& landmarks) {
+  auto& assets = stored_.state.assets;
+  std::erase_if(assets, [](const protocol::AssetAnnounce& a) {
+    return a.kind == protocol::AssetKind::Image || a.kind == protocol::AssetKind::Landmarks;
+  });
+  assets.push_back(photo);
+  assets.push_back(landmarks);
+  ++stored_.state.revision;
+  dirty = true;
+}
+
 void Session::join(const std::shared_ptr<Connection>& member) { members_.push_back(member); }
 
 void Session::leave(const Connection* member) {

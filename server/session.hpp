@@ -30,6 +30,10 @@ class Session {
   // revision and forwards it, encoded once, to every other member. False if it is no change.
   bool apply(const protocol::Message& change, const Connection* sender);
 
+  // A conference speaker's neutral photo and landmarks (SPEC F5) replace the session's image
+  // and landmark assets. Called before clients are served.
+  void set_face_assets(const protocol::AssetAnnounce& photo, const protocol::AssetAnnounce& landmarks);
+
   // Set by apply(); cleared by whoever persists the state.
   bool dirty = false;
 

@@ -13,7 +13,6 @@
 #include "client/output/frame_writer.hpp"
 #include "client/render/backdrop.hpp"
 #include "client/render/coverage.hpp"
-#include "client/render/painterly/painterly_renderer.hpp"
 #include "client/render/painterly/video_painter.hpp"
 #include "client/render/styles.hpp"
 #include "common/error.hpp"
@@ -38,27 +37,20 @@ int paint_video(const Options& o) {
   std::optional<Image> first = source.next();
   if (!first) throw Error("video '" + o.video + "' has no frames");
   const int limit = o.frames > 0 ? o.frames : source.live() ? 300 : 100000;
-  StyleParams params(PainterlyRenderer::params());
-  for (const std::string& a : o.set) params.set_assignment(a);
   auto context = create_offscreen_context(first->width, first->height, o.gl);
   Canvas canvas(first->width, first->height, 1);
-  // Style settings as for meshes; with no brush count set, it scales with the frame so strokes
-  // keep their size (the styles' counts suit an object of about 60 000 pixels).
-  PaintStyle style = paint_style_from_params(params);
-  if (params.get_int("brushes") == 0)
-    style.brushes = std::clamp(int(double(style.brushes) * first->width * first->height / 60000.0), 500, 30000);
-  VideoPainter painter(style, uint64_t(params.get_int("seed")));
+  const auto painter = make_video_painter(o.set, first->width, first->height);
   canvas.bind();
   Backdrop(BackdropSpec::parse("canvas")).draw();
   FrameWriter writer(o.out, o.frames > 0 ? o.frames : 100000, o.fps > 0 ? o.fps : int(source.fps() + 0.5), false);
   int painted = 0;
   for (std::optional<Image> frame = std::move(first); frame && painted < limit; frame = source.next(), ++painted) {
     canvas.bind();
-    painter.paint(*frame);
+    painter->paint(*frame);
     writer.write(canvas.read());
   }
   writer.close();
-  std::cerr << "inkwire-render: painted " << painted << " frames of " << o.video << " with " << style.brushes << " brushes\n";
+  std::cerr << "inkwire-render: painted " << painted << " frames of " << o.video << " with " << painter->painter().style().brushes << " brushes\n";
   return 0;
 }
 

@@ -34,8 +34,10 @@ int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& 
     if (log) {
       // steady_clock is CLOCK_MONOTONIC: comparable across processes on this machine.
       const auto now_us = std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
-      log << nlohmann::json{{"frame", i}, {"revision", sync.view().revision()}, {"style", sync.view().style()},
-                            {"monotonic_us", now_us}}.dump() << "\n" << std::flush;
+      nlohmann::json line = {{"frame", i}, {"revision", sync.view().revision()}, {"style", sync.view().style()}, {"monotonic_us", now_us}};
+      if (const auto expression = sync.view().expression())
+        line["expression"] = {{"name", name_of(expression->expression)}, {"intensity", expression->intensity}};
+      log << line.dump() << "\n" << std::flush;
     }
     tick += period;
     std::this_thread::sleep_until(tick);

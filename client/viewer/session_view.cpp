@@ -36,55 +36,98 @@ glm::mat4 model_matrix(const protocol::ObjectPose& pose) {
   return glm::translate(glm::mat4(1.0f), pose.translation) * glm::mat4_cast(q) * glm::scale(glm::mat4(1.0f), glm::vec3(pose.scale));
 }
 
+namespace {
+
+// The cached file of the first asset of `kind`, or an empty path.
+std::filesystem::path first_asset_file(const protocol::Snapshot& state, const std::vector<std::filesystem::path>& files,
+                                       protocol::AssetKind kind) {
+  for (size_t i = 0; i < state.assets.size() && i < files.size(); ++i)
+    if (state.assets[i].kind == kind) return files[i];
+  return {};
+}
+
+}  // namespace
+
 void SessionView::update(const protocol::Snapshot& state, const std::vector<std::filesystem::path>& asset_files) {
   state_ = state;
   revision_ = state.revision;
-  // The first mesh asset is the object (conference sessions have none).
-  std::filesystem::path mesh;
-  for (size_t i = 0; i < state.assets.size() && i < asset_files.size(); ++i)
-    if (state.assets[i].kind == protocol::AssetKind::Mesh) {
-      mesh = asset_files[i];
-      break;
-    }
-  const bool new_object = mesh != mesh_file_;
-  if (new_object) {
-    mesh_file_ = mesh;
-    object_.reset();
-    if (!mesh.empty()) {
-      try {
-        object_ = load_scene_object(mesh, 0, kSceneDiagonal);
-      } catch (const Error& e) {
-        error_ = "cannot load the session's mesh: " + std::string(e.what());
-      }
+  const bool new_content = state.kind == protocol::SessionKind::Conference ? update_face(state, asset_files)
+                                                                           : update_object(state, asset_files);
+  update_style(state, new_content);
+  if (face_) face_->set_expression(state.expression);
+}
+
+bool SessionView::update_object(const protocol::Snapshot& state, const std::vector<std::filesystem::path>& asset_files) {
+  // The first mesh asset is the object.
+  const std::filesystem::path mesh = first_asset_file(state, asset_files, protocol::AssetKind::Mesh);
+  if (mesh == mesh_file_) return false;
+  mesh_file_ = mesh;
+  object_.reset();
+  content_error_.clear();
+  if (!mesh.empty()) {
+    try {
+      object_ = load_scene_object(mesh, 0, kSceneDiagonal);
+    } catch (const Error& e) {
+      content_error_ = "cannot load the session's mesh: " + std::string(e.what());
     }
   }
+  return true;
+}
+
+bool SessionView::update_face(const protocol::Snapshot& state, const std::vector<std::filesystem::path>& asset_files) {
+  const std::filesystem::path photo = first_asset_file(state, asset_files, protocol::AssetKind::Image);
+  const std::filesystem::path landmarks = first_asset_file(state, asset_files, protocol::AssetKind::Landmarks);
+  if (photo == face_files_[0] && landmarks == face_files_[1]) return false;
+  face_files_[0] = photo, face_files_[1] = landmarks;
+  face_.reset();
+  content_error_.clear();
+  if (photo.empty() || landmarks.empty()) {
+    content_error_ = "the conference has no speaker yet (no photo and landmarks assets)";
+  } else {
+    try {
+      face_.emplace(photo, landmarks);
+    } catch (const Error& e) {
+      content_error_ = "cannot show the speaker: " + std::string(e.what());
+    }
+  }
+  return true;
+}
+
+void SessionView::update_style(const protocol::Snapshot& state, bool new_content) {
   std::string key = state.style.renderer;
   for (const std::string& s : state.style.settings) key += " " + s;
-  if (key == style_key_ && !new_object) return;
+  if (key == style_key_ && !new_content) return;
   try {
+    if (face_) face_->set_style(state.style.renderer, state.style.settings);
     auto renderer = make_renderer(state.style.renderer, state.style.settings);
     if (object_) renderer->prepare(*object_);
     renderer_ = std::move(renderer);
     backdrop_.emplace(BackdropSpec::parse(default_backdrop(state.style.renderer)));
     style_key_ = key;
-    error_.clear();
+    style_error_.clear();
   } catch (const Error& e) {
-    error_ = "style '" + state.style.renderer + "' refused: " + e.what();
-    std::fprintf(stderr, "inkwire-client: %s (keeping the previous style)\n", error_.c_str());
+    style_error_ = "style '" + state.style.renderer + "' refused: " + e.what();
+    std::fprintf(stderr, "inkwire-client: %s (keeping the previous style)\n", style_error_.c_str());
     const bool fresh = !renderer_;
     if (fresh) {
       // Nothing drawn yet: fall back to the default so the session still shows.
       renderer_ = make_renderer("default");
       backdrop_.emplace(BackdropSpec::parse(default_backdrop("default")));
     }
-    if (object_ && (fresh || new_object)) renderer_->prepare(*object_);
+    if (object_ && (fresh || new_content)) renderer_->prepare(*object_);
     style_key_ = key;
   }
+}
+
+std::optional<ExpressionState> SessionView::expression() const {
+  if (!face_) return std::nullopt;
+  return face_->expression();
 }
 
 void SessionView::draw(glm::ivec2 viewport, double time_seconds, long frame) {
   if (!backdrop_) backdrop_.emplace(BackdropSpec::parse("paper"));
   backdrop_->draw();
+  if (face_) face_->draw(viewport, time_seconds);
   if (!object_ || !renderer_) return;
   FrameState f;
   f.viewport = viewport;

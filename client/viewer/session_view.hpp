@@ -1,8 +1,9 @@
 #pragma once
 // Draws a session's state locally (SPEC N5): the object from the cached mesh asset, in the
 // session's style, from the session's camera and object pose. Objects are centred and scaled to
-// kSceneDiagonal, the scene space in which camera and object poses travel. Needs a current GL
-// context; draws into whatever framebuffer is bound.
+// kSceneDiagonal, the scene space in which camera and object poses travel. A conference session
+// shows the speaker's face instead (ConferenceView). Needs a current GL context; draws into
+// whatever framebuffer is bound.
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -12,6 +13,7 @@
 #include "client/render/backdrop.hpp"
 #include "client/render/renderer.hpp"
 #include "client/render/scene_object.hpp"
+#include "client/viewer/conference_view.hpp"
 #include "protocol/messages.hpp"
 
 namespace inkwire {
@@ -33,16 +35,26 @@ class SessionView {
   void update(const protocol::Snapshot& state, const std::vector<std::filesystem::path>& asset_files);
   void draw(glm::ivec2 viewport, double time_seconds, long frame);
 
-  const std::string& error() const { return error_; }
+  // Why the mesh, the speaker or the style could not be shown; empty when all is well.
+  const std::string& error() const { return content_error_.empty() ? style_error_ : content_error_; }
   uint32_t revision() const { return revision_; }
   const std::string& style() const { return style_key_; }
+  // The expression shown, in conference sessions.
+  std::optional<ExpressionState> expression() const;
 
  private:
+  // Each returns true when what it draws was replaced.
+  bool update_object(const protocol::Snapshot& state, const std::vector<std::filesystem::path>& asset_files);
+  bool update_face(const protocol::Snapshot& state, const std::vector<std::filesystem::path>& asset_files);
+  void update_style(const protocol::Snapshot& state, bool new_content);
+
   std::optional<SceneObject> object_;
   std::filesystem::path mesh_file_;
+  std::optional<ConferenceView> face_;
+  std::filesystem::path face_files_[2];  // photo, landmarks
   std::unique_ptr<Renderer> renderer_;
   std::optional<Backdrop> backdrop_;
-  std::string style_key_, error_;
+  std::string style_key_, content_error_, style_error_;
   protocol::Snapshot state_;
   uint32_t revision_ = 0;
 };

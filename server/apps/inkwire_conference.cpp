@@ -5,7 +5,7 @@
 // side-by-side video input | reconstruction | painted reconstruction and the bytes sent.
 //
 //   inkwire-conference --input SRC --out side.mp4 [--neutral PHOTO] [--json stats.json]
-//   inkwire-conference --speaker PHOTO --script smile:1,neutral:0.5 --out side.mp4
+//   inkwire-conference --speaker PHOTO --script smile:1,neutral:0.5 --out side.mp4 [--input-out speaker.mp4]
 #include <algorithm>
 #include <fstream>
 #include <iostream>
@@ -19,7 +19,6 @@
 #include "client/output/frame_writer.hpp"
 #include "client/render/backdrop.hpp"
 #include "client/render/face/face_reconstructor.hpp"
-#include "client/render/painterly/painterly_renderer.hpp"
 #include "client/render/painterly/video_painter.hpp"
 #include "common/error.hpp"
 #include "common/video_source.hpp"
@@ -31,7 +30,7 @@ using namespace inkwire;
 namespace {
 
 struct Options {
-  std::string input, neutral, speaker, script, out, json_path, paint = "impressionist";
+  std::string input, neutral, speaker, script, out, input_out, json_path, paint = "impressionist";
   int fps = 0, repeat = 1, frames = 0, height = 360;
 };
 
@@ -139,19 +138,18 @@ int run(const Options& o) {
   // Receiver side.
   FaceReconstructor receiver(neutral, neutral_landmarks);
   Canvas paint_canvas(neutral.width, neutral.height, 1);
-  std::optional<VideoPainter> painter;
+  std::unique_ptr<VideoPainter> painter;
   if (o.paint != "none") {
-    StyleParams params(PainterlyRenderer::params());
-    params.set_assignment("style=" + o.paint);
-    PaintStyle style = paint_style_from_params(params);
-    style.brushes = std::clamp(int(double(style.brushes) * neutral.width * neutral.height / 60000.0), 500, 30000);
-    painter.emplace(style, 7);
+    painter = make_video_painter({"style=" + o.paint, "seed=7"}, neutral.width, neutral.height);
     paint_canvas.bind();
     Backdrop(BackdropSpec::parse("canvas")).draw();
   }
 
   protocol::FrameDecoder wire;
-  FrameWriter writer(o.out, o.frames > 0 ? o.frames : 100000, int(std::lround(speaker.fps())), false);
+  const int max_frames = o.frames > 0 ? o.frames : 100000, fps = int(std::lround(speaker.fps()));
+  FrameWriter writer(o.out, max_frames, fps, false);
+  std::optional<FrameWriter> input_writer;
+  if (!o.input_out.empty()) input_writer.emplace(o.input_out, max_frames, fps, false);
   int frames = 0, faces = 0;
   std::map<std::string, int> shown;
   double analysis_ms = 0;
@@ -178,8 +176,10 @@ int run(const Options& o) {
       panels.push_back(fit_height(paint_canvas.read(), o.height));
     }
     writer.write(side_by_side(panels));
+    if (input_writer) input_writer->write(*frame);
   }
   writer.close();
+  if (input_writer) input_writer->close();
 
   const double seconds = frames / speaker.fps();
   nlohmann::json stats = {{"frames", frames},
@@ -208,6 +208,7 @@ int main(int argc, char** argv) {
   app.add_option("--script", o.script, "with --speaker: expression[@intensity]:seconds,... e.g. neutral:1,smile:1,surprise@200:1");
   app.add_option("--neutral", o.neutral, "the speaker's neutral photo (default: the first frame)");
   app.add_option("--out", o.out, "side-by-side video (.mp4) or %04d.png frames")->required();
+  app.add_option("--input-out", o.input_out, "also write the speaker's frames as they are (.mp4 or %04d.png), e.g. to feed a server");
   app.add_option("--json", o.json_path, "write the figures (bytes sent, frames, expressions shown) here");
   app.add_option("--paint", o.paint, "painterly style of the third panel, or none")->default_val("impressionist");
   app.add_option("--fps", o.fps, "frame rate (default: the source's)")->check(CLI::Range(1, 120));

@@ -128,7 +128,11 @@ server::ServerConfig load_server_config(const std::string& data_dir, int session
   server::ServerConfig config;
   config.port = 0;
   config.data_dir = data_dir;
-  for (int i = 0; i < sessions; ++i) config.sessions.push_back({.name = "s" + std::to_string(i)});
+  for (int i = 0; i < sessions; ++i) {
+    server::SessionConfig session;
+    session.name = "s" + std::to_string(i);
+    config.sessions.push_back(std::move(session));
+  }
   return config;
 }
 
@@ -138,7 +142,8 @@ Result run_load(const LoadShape& shape, const std::string& data_dir) {
   server.start();
   std::thread server_thread([&] { server_io.run(); });
 
-  Load load{.shape = shape, .sent = {}, .latencies_ms = {}};
+  Load load;
+  load.shape = shape;
   load.sent.assign(size_t(shape.sessions), std::vector<Clock::time_point>(size_t(shape.seconds * shape.hz)));
   asio::io_context client_io(1);
   const asio::ip::tcp::endpoint endpoint{asio::ip::make_address("127.0.0.1"), server.port()};

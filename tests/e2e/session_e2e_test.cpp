@@ -9,7 +9,7 @@
 #include "client/net/session_client.hpp"
 #include "client/viewer/session_view.hpp"
 #include "common/image.hpp"
-#include "process.hpp"
+#include "e2e_support.hpp"
 
 using namespace inkwire;
 using namespace inkwire::e2e;
@@ -19,73 +19,10 @@ namespace {
 
 const fs::path kMesh = fs::path(INKWIRE_MESH_DIR) / "cow.off";
 
-fs::path output_dir(const std::string& test) {
-  const fs::path dir = fs::path(INKWIRE_TEST_OUTPUT_DIR) / "e2e" / test;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-// A server on a free port with a scene session "cows" and a session "locked" with a token.
-class ServerUnderTest {
- public:
-  explicit ServerUnderTest(const fs::path& dir, bool fresh = true) : dir_(dir) {
-    if (fresh) {
-      nlohmann::json config = {
-          {"sessions", {{{"name", "cows"}, {"kind", "scene"}, {"style", "default"}, {"assets", {{{"path", kMesh.string()}}}}},
+// A scene session "cows" and a session "locked" with a token.
+nlohmann::json cows_config() {
+  return {{"sessions", {{{"name", "cows"}, {"kind", "scene"}, {"style", "default"}, {"assets", {{{"path", kMesh.string()}}}}},
                         {{"name", "locked"}, {"kind", "scene"}, {"token", "s3cret"}, {"assets", nlohmann::json::array()}}}}};
-      std::ofstream(dir / "server.json") << config.dump(2);
-    }
-    start();
-  }
-  void start() {
-    process_ = std::make_unique<Process>("inkwire-server", std::vector<std::string>{"--listen", "127.0.0.1:0", "--data", (dir_ / "data").string(), "--config", (dir_ / "server.json").string()},
-                                         dir_ / ("server-" + std::to_string(starts_++) + ".log"));
-    port_ = 0;
-    eventually([&] {
-      std::istringstream lines(process_->output());
-      for (std::string line; std::getline(lines, line);) {
-        const auto j = nlohmann::json::parse(line, nullptr, false);
-        if (j.is_object() && j.value("event", "") == "listening") port_ = j.value("port", 0);
-      }
-      return port_ != 0 || !process_->running();
-    });
-    ASSERT_NE(port_, 0) << process_->output();
-  }
-  void kill() {
-    process_->kill(SIGKILL);
-    process_->wait();
-  }
-  std::string address() const { return "127.0.0.1:" + std::to_string(port_); }
-  asio::ip::tcp::endpoint endpoint() const { return {asio::ip::make_address("127.0.0.1"), uint16_t(port_)}; }
-  Process& process() { return *process_; }
-
- private:
-  fs::path dir_;
-  std::unique_ptr<Process> process_;
-  int port_ = 0, starts_ = 0;
-};
-
-std::unique_ptr<Process> headless_client(const ServerUnderTest& server, const fs::path& dir, const std::string& name, int frames, int fps) {
-  return std::make_unique<Process>(
-      "inkwire-client",
-      std::vector<std::string>{"--connect", server.address(), "--session", "cows", "--headless", "--frames", std::to_string(frames),
-                               "--fps", std::to_string(fps), "--size", "240x180", "--cache", (dir / ("cache-" + name)).string(),
-                               "--out", (dir / (name + "-%04d.png")).string(), "--frame-log", (dir / (name + ".jsonl")).string(),
-                               "--name", name},
-      dir / (name + ".log"));
-}
-
-std::vector<nlohmann::json> frame_log(const fs::path& file) {
-  std::vector<nlohmann::json> lines;
-  std::ifstream in(file);
-  for (std::string line; std::getline(in, line);)
-    if (auto j = nlohmann::json::parse(line, nullptr, false); j.is_object()) lines.push_back(j);
-  return lines;
-}
-
-int64_t monotonic_us() {
-  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 // The same state drawn by this process, for comparison with what a client wrote.
@@ -99,13 +36,6 @@ Image render_locally(const protocol::Snapshot& state, const std::vector<fs::path
   return canvas.read();
 }
 
-double mean_difference(const Image& a, const Image& b) {
-  if (a.width != b.width || a.height != b.height) return 255.0;
-  double sum = 0;
-  for (size_t i = 0; i < a.pixels.size(); ++i) sum += std::abs(int(a.pixels[i]) - int(b.pixels[i]));
-  return sum / double(a.pixels.size());
-}
-
 }  // namespace
 
 class SessionE2ETest : public ::testing::Test {
@@ -117,10 +47,10 @@ class SessionE2ETest : public ::testing::Test {
 
 TEST_F(SessionE2ETest, ThreeClientsFollowOneChangeWithinTwoFramesAndALateJoinerGetsTheSnapshot) {
   const fs::path dir = output_dir("three-clients");
-  ServerUnderTest server(dir);
+  ServerUnderTest server(dir, cows_config());
   const int frames = 30, fps = 10;
-  auto b = headless_client(server, dir, "b", frames, fps);
-  auto c = headless_client(server, dir, "c", frames, fps);
+  auto b = headless_client(server, "cows", dir, "b", frames, fps);
+  auto c = headless_client(server, "cows", dir, "c", frames, fps);
   // Change once both are drawing.
   ASSERT_TRUE(eventually([&] { return frame_log(dir / "b.jsonl").size() >= 3 && frame_log(dir / "c.jsonl").size() >= 3; }))
       << b->output() << c->output();
@@ -148,20 +78,20 @@ TEST_F(SessionE2ETest, ThreeClientsFollowOneChangeWithinTwoFramesAndALateJoinerG
     EXPECT_LE(stale, 2);
     EXPECT_EQ(log.back()["revision"].get<uint32_t>(), changed.revision);
     EXPECT_EQ(log.back()["style"].get<std::string>(), "comic shade_map=two-tone");
-    const Image last = load_image(dir / (name + "-" + std::to_string(10000 + frames - 1).substr(1) + ".png"));
+    const Image last = load_image(client_frame(dir, name, frames - 1));
     EXPECT_LT(mean_difference(last, expected), 0.5) << "the client's last frame differs from the same state drawn here";
   }
 
   // A late joiner draws the changed state from its very first frame.
-  auto d = headless_client(server, dir, "d", 1, 10);
+  auto d = headless_client(server, "cows", dir, "d", 1, 10);
   ASSERT_EQ(d->wait(), 0) << d->output();
   EXPECT_EQ(frame_log(dir / "d.jsonl").at(0)["revision"].get<uint32_t>(), changed.revision);
-  EXPECT_LT(mean_difference(load_image(dir / "d-0000.png"), expected), 0.5);
+  EXPECT_LT(mean_difference(load_image(client_frame(dir, "d", 0)), expected), 0.5);
 }
 
 TEST_F(SessionE2ETest, AClientThatStopsReadingDoesNotDelayTheOthers) {
   const fs::path dir = output_dir("slow-reader");
-  ServerUnderTest server(dir);
+  ServerUnderTest server(dir, cows_config());
   // The slow client: says hello, joins, then never reads a byte.
   asio::io_context io;
   asio::ip::tcp::socket slow(io);
@@ -192,7 +122,7 @@ TEST_F(SessionE2ETest, AClientThatStopsReadingDoesNotDelayTheOthers) {
 
 TEST_F(SessionE2ETest, WrongTokenBadVersionAndGarbageAreRefusedWithReasonsWhileOthersAreServed) {
   const fs::path dir = output_dir("refusals");
-  ServerUnderTest server(dir);
+  ServerUnderTest server(dir, cows_config());
   SessionClient good(server.address(), "good");
   good.join("cows", "");
 
@@ -238,7 +168,7 @@ TEST_F(SessionE2ETest, WrongTokenBadVersionAndGarbageAreRefusedWithReasonsWhileO
 
 TEST_F(SessionE2ETest, AKilledServerRestartsWithItsCatalogueAndAssetsIntact) {
   const fs::path dir = output_dir("restart");
-  ServerUnderTest server(dir);
+  ServerUnderTest server(dir, cows_config());
   {
     SessionClient a(server.address(), "a");
     a.join("cows", "");

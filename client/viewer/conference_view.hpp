@@ -1,0 +1,45 @@
+#pragma once
+// A conference session on the client (SPEC F5): the speaker's neutral photo and its landmarks
+// (assets, fetched once) deformed to each received expression code, tweened, and fitted into
+// the viewport. The session's style "painterly" (with its settings) paints the face with
+// brushes, each frame over the last so strokes persist; any other style shows the photo.
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "client/gl/canvas.hpp"
+#include "client/render/face/face_reconstructor.hpp"
+#include "client/render/painterly/rect_image.hpp"
+#include "client/render/painterly/video_painter.hpp"
+#include "protocol/messages.hpp"
+
+namespace inkwire {
+
+class ConferenceView {
+ public:
+  // Throws inkwire::Error when the photo or the landmarks are unreadable or do not fit together.
+  ConferenceView(const std::filesystem::path& photo, const std::filesystem::path& landmarks);
+
+  // The tween to `code` starts at the next drawn frame. Codes this client does not know (a
+  // newer server) are ignored: the face keeps its expression.
+  void set_expression(const protocol::ExpressionCode& code);
+  // Throws inkwire::Error for painterly settings the painter does not take (the previous look
+  // is kept).
+  void set_style(const std::string& renderer, const std::vector<std::string>& settings);
+  // Into the bound framebuffer, centred, as large as fits.
+  void draw(glm::ivec2 viewport, double time_seconds);
+
+  ExpressionState expression() const { return face_.expression(); }
+
+ private:
+  FaceReconstructor face_;
+  std::optional<ExpressionState> pending_;
+  std::unique_ptr<VideoPainter> painter_;  // painterly style only
+  std::optional<Canvas> painting_;         // what the painter paints over, frame after frame
+  gl::Texture painted_;                    // its latest frame, to lay into the viewport
+  RectImage rect_image_;
+};
+
+}  // namespace inkwire
