@@ -88,4 +88,20 @@ Image resized(const Image& image, int width, int height) {
   return out;
 }
 
+Image side_by_side(const std::vector<Image>& panels) {
+  if (panels.empty()) throw Error("side_by_side(): no images");
+  int width = 0;
+  for (const Image& p : panels) {
+    if (p.height != panels.front().height) throw Error("side_by_side(): the images differ in height");
+    width += p.width;
+  }
+  Image out(width, panels.front().height);
+  int x0 = 0;
+  for (const Image& p : panels) {
+    for (int y = 0; y < p.height; ++y) std::copy_n(p.at(0, y), size_t(p.width) * 4, out.at(x0, y));
+    x0 += p.width;
+  }
+  return out;
+}
+
 }  // namespace inkwire

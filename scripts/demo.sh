@@ -6,8 +6,9 @@
 # OUT_DIR/shade-maps.png (the comic shade-map library on one model), OUT_DIR/paintings.png (every
 # shipped painting style), OUT_DIR/turntable-<style>.mp4 and OUT_DIR/painted-video.mp4 (a
 # recorded video painted frame by frame), OUT_DIR/tween-methods.png and OUT_DIR/tween/ (views
-# synthesised between sample images: methods side by side, orbit videos, and real photos of a
-# ring when ../shared/data is there), OUT_DIR/network/ (a server, a viewer recording a shared
+# synthesised between sample images: methods side by side, orbit videos, real photos of a ring
+# when ../shared/data is there, a morph between two faces, dropped video frames regenerated),
+# OUT_DIR/network/ (a server, a viewer recording a shared
 # session while a director client changes its style and camera, a turntable session, and a
 # conference whose client rebuilds the speaker's face from expression codes).
 set -euo pipefail
@@ -95,6 +96,19 @@ if [[ -d "$here/../shared/data/templeRing" ]]; then  # real photos, when the dat
   "$bin/inkwire-eval" tween-ring --dataset "$here/../shared/data/templeRing" --limit 4 --images "$out/tween/temple" \
     --json "$out/tween/temple.json" > /dev/null
 fi
+# The same warp engine between two different faces (landmarks from the face model, both photos
+# cut to one framing), and regenerating dropped video frames: the comic turntable keeps every
+# third frame and the two in between are tweened (the sheet: input | hold | cross-fade | tween).
+faces=/usr/share/doc/libdlib19.1/examples/faces
+"$bin/inkwire-tween" morph --from "$faces/Tom_Cruise_avp_2014_4.jpg" --to "$faces/2008_001009.jpg" --frame-faces \
+  --out "$out/tween/morph-faces.mp4" --sheet "$out/tween/morph-faces.png" > /dev/null
+yale="$here/../shared/data/yalefaces"
+if [[ -d "$yale" ]]; then
+  "$bin/inkwire-tween" morph --from "$yale/subject02_normal.png" --to "$yale/subject07_happy.png" --frame-faces \
+    --out "$out/tween/morph-yale.mp4" --sheet "$out/tween/morph-yale.png" > /dev/null
+fi
+"$bin/inkwire-tween" restore --input "$out/turntable-comic.mp4" --keep-every 3 --out "$out/tween/restored-turntable.mp4" \
+  --sheet "$out/tween/restored-turntable.png" --json "$out/tween/restored-turntable.json" > /dev/null
 
 # Low-bandwidth conferencing: the speaker's frames are analysed (dlib landmarks -> expression
 # code), only the codes cross the wire, and the receiver deforms the neutral photo by them.

@@ -110,19 +110,6 @@ Image fit_height(const Image& image, int height) {
   return resized(image, std::max(2, int(std::lround(double(image.width) * height / image.height)) & ~1), height);
 }
 
-Image side_by_side(const std::vector<Image>& panels) {
-  int width = 0;
-  for (const Image& p : panels) width += p.width;
-  Image out(width, panels.front().height);
-  int x0 = 0;
-  for (const Image& p : panels) {
-    for (int y = 0; y < p.height; ++y)
-      std::copy_n(&p.pixels[size_t(y) * size_t(p.width) * 4], size_t(p.width) * 4, &out.pixels[(size_t(y) * size_t(width) + size_t(x0)) * 4]);
-    x0 += p.width;
-  }
-  return out;
-}
-
 int run(const Options& o) {
   // Everything draws into its own off-screen targets: the context's own surface is never shown.
   auto context = create_offscreen_context(64, 64);

@@ -4,27 +4,13 @@
 #include <cstdio>
 
 #include "client/gl/context.hpp"
-#include "client/render/tween/image_warper.hpp"
+#include "client/render/tween/pair_tween.hpp"
 #include "common/error.hpp"
 #include "common/image_metrics.hpp"
-#include "common/tween/warp_mesh.hpp"
 #include "server/tween/landmarks.hpp"
 #include "server/tween/photo_ring.hpp"
 
 namespace inkwire::eval {
-namespace {
-
-// Truth | nearest | cross-fade | tween, side by side.
-Image sheet(const std::vector<const Image*>& images) {
-  Image out(images[0]->width * int(images.size()), images[0]->height);
-  for (size_t k = 0; k < images.size(); ++k)
-    for (int y = 0; y < out.height; ++y)
-      std::copy_n(images[k]->at(0, y), size_t(images[k]->width) * 4, out.at(int(k) * images[0]->width, y));
-  return out;
-}
-
-}  // namespace
-
 nlohmann::json run_tween_ring(const TweenRingOptions& o) {
   const PhotoRing ring = load_photo_ring(o.dataset);
   std::vector<RingTriple> triples = ring_triples(ring);
@@ -36,7 +22,6 @@ nlohmann::json run_tween_ring(const TweenRingOptions& o) {
   if (first.width > kMaxTweenImageSide || first.height > kMaxTweenImageSide)
     throw Error("ring photos are " + std::to_string(first.width) + "x" + std::to_string(first.height) + ", larger than tween data allows");
   auto context = create_offscreen_context(64, 64);
-  ImageWarper warper(first.width, first.height);
   LandmarkOptions landmark_options;
   landmark_options.count = o.landmarks;
   landmark_options.search = {64, 16};  // about 15 degrees of turn across a 480-pixel photo
@@ -62,24 +47,10 @@ nlohmann::json run_tween_ring(const TweenRingOptions& o) {
     data.cells.push_back(cell_from_landmarks(landmarks, 0, 1));
     const std::vector<uint8_t> bytes = encode_tween(data);
     data = decode_tween(bytes);
-    const int mesh = warper.add_mesh(build_warp_mesh(data.cells[0], data.width, data.height));
     seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    const gl::Texture a = make_sample_texture(before), b = make_sample_texture(after);
-    const glm::vec3 at_view = path_weights(tri.t), own_a(1, 0, 0), own_b(0, 0, 1);
-    std::vector<Image> views;
-    for (int m = 0; m < 3; ++m) {
-      warper.begin(OverlapMode::Layered);
-      if (m == 0) {
-        if (tri.t < 0.5f) warper.pass(mesh, a, own_a, 0, 1.0f);
-        else warper.pass(mesh, b, own_b, 2, 1.0f);
-      } else {
-        warper.pass(mesh, a, m == 1 ? own_a : at_view, 0, 1.0f - tri.t);
-        warper.pass(mesh, b, m == 1 ? own_b : at_view, 2, tri.t);
-      }
-      warper.end();
-      views.push_back(warper.read());
-    }
+    PairTween pair(before, after, data.cells[0]);
+    const std::vector<Image> views = {tri.t < 0.5f ? before : after, pair.crossfade(tri.t), pair.tween(tri.t)};
     nlohmann::json row = {{"middle", ring.names[size_t(tri.middle)]}, {"t", tri.t}, {"landmarks", landmarks.size()},
                           {"bytes", bytes.size()}};
     for (int m = 0; m < 3; ++m) {
@@ -96,7 +67,7 @@ nlohmann::json run_tween_ring(const TweenRingOptions& o) {
                  ring.names[size_t(tri.middle)].c_str(), landmarks.size(), double(row["psnr"]["nearest"]),
                  double(row["psnr"]["crossfade"]), double(row["psnr"]["tween"]));
     if (!o.images_dir.empty())
-      save_image(sheet({&truth, &views[0], &views[1], &views[2]}),
+      save_image(side_by_side({truth, views[0], views[1], views[2]}),
                  o.images_dir / (std::filesystem::path(ring.names[size_t(tri.middle)]).stem().string() + "-truth-nearest-crossfade-tween.png"),
                  false);
   }

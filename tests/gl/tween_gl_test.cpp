@@ -9,14 +9,18 @@
 
 #include "client/render/tween/image_warper.hpp"
 #include "client/render/tween/mesh_samples.hpp"
+#include "client/render/tween/pair_tween.hpp"
 #include "client/render/tween/tween_renderer.hpp"
 #include "client/render/styles.hpp"
+#include "common/error.hpp"
 #include "common/image_metrics.hpp"
 #include "common/random.hpp"
 #include "common/tween/view_sphere.hpp"
 #include "common/tween/warp_mesh.hpp"
 #include "gl_test_support.hpp"
+#include "server/tween/landmarks.hpp"
 #include "../unit/test_data.hpp"
+#include "../unit/test_images.hpp"
 
 using namespace inkwire;
 
@@ -175,4 +179,50 @@ TEST(TweenGLTest, TrilinearViewsOffTheEquatorBeatTheNearestSample) {
   // Measured 2026-11: nearest 17.2, trilinear 24.2 dB on average (162 samples, 65 points per
   // triangle).
   EXPECT_GT(trilinear, nearest + 3.0);
+}
+
+namespace {
+
+// PSNR away from the left and right edges, where content enters and leaves the frame.
+double interior_psnr(const Image& a, const Image& b, int margin) {
+  const int w = a.width - 2 * margin;
+  Image ca(w, a.height), cb(w, b.height);
+  for (int y = 0; y < a.height; ++y) {
+    std::copy_n(a.at(margin, y), size_t(w) * 4, ca.at(0, y));
+    std::copy_n(b.at(margin, y), size_t(w) * 4, cb.at(0, y));
+  }
+  return psnr(ca, cb);
+}
+
+}  // namespace
+
+TEST(PairTweenGLTest, EndsAreTheTwoFramesAndTheMiddleFrameIsRegeneratedBetterThanByFadingOrHolding) {
+  test::offscreen_context();
+  const int width = 240, shift = 16;
+  const Image scene = test::random_discs(width + shift, 180, 11);
+  const Image a = test::panned(scene, 0, width), b = test::panned(scene, shift, width), truth = test::panned(scene, shift / 2, width);
+  LandmarkOptions options;
+  options.search = {24, 4};
+  const std::vector<Landmark> landmarks = find_landmarks(grey_of(a), grey_of(b), options);
+  ASSERT_GE(landmarks.size(), 20u);
+  PairTween pair(a, b, cell_from_landmarks(landmarks, 0, 1));
+
+  EXPECT_GT(psnr(pair.tween(0.0f), a), 45.0);
+  EXPECT_GT(interior_psnr(pair.tween(1.0f), b, shift), 45.0);
+  const double tween = interior_psnr(pair.tween(0.5f), truth, shift), fade = interior_psnr(pair.crossfade(0.5f), truth, shift),
+               hold = interior_psnr(a, truth, shift);
+  std::printf("middle frame of a %d-pixel pan: tween %.1f dB, cross-fade %.1f dB, hold %.1f dB (%zu landmarks)\n", shift, tween, fade, hold,
+              landmarks.size());
+  EXPECT_GT(tween, fade + 5.0);
+  EXPECT_GT(tween, hold + 5.0);
+}
+
+TEST(PairTweenGLTest, ImagesOfDifferentSizesOrTriangleCellsAreRefused) {
+  test::offscreen_context();
+  TweenCell pair;
+  pair.samples = {0, 1};
+  EXPECT_THROW(PairTween(Image(10, 10), Image(12, 10), pair), Error);
+  TweenCell triangle;
+  triangle.samples = {0, 1, 2};
+  EXPECT_THROW(PairTween(Image(10, 10), Image(10, 10), triangle), Error);
 }
