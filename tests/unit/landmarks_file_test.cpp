@@ -7,6 +7,7 @@
 
 #include "common/error.hpp"
 #include "common/face/landmarks_file.hpp"
+#include "test_data.hpp"
 
 using namespace inkwire;
 namespace fs = std::filesystem;
@@ -20,12 +21,7 @@ FaceLandmarks some_landmarks() {
 }
 
 std::string refusal(const std::string& json) {
-  try {
-    parse_landmarks(json);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
+  return test::error_of([&] { parse_landmarks(json); });
 }
 
 }  // namespace

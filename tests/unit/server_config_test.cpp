@@ -5,6 +5,7 @@
 
 #include "common/error.hpp"
 #include "server/config.hpp"
+#include "test_data.hpp"
 
 using namespace inkwire;
 using namespace inkwire::server;
@@ -20,12 +21,7 @@ ServerConfig load_text(const std::string& json) {
 }
 
 std::string refusal(const std::string& json) {
-  try {
-    load_text(json);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
+  return test::error_of([&] { load_text(json); });
 }
 
 }  // namespace

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "common/error.hpp"
+
 namespace inkwire::test {
 
 inline std::filesystem::path cgal_mesh(const std::string& name) { return std::filesystem::path(INKWIRE_MESH_DIR) / name; }
@@ -19,6 +21,17 @@ inline std::filesystem::path write_temp(const std::string& name, const std::stri
   std::filesystem::create_directories(dir);
   std::ofstream(dir / name, std::ios::binary) << text;
   return dir / name;
+}
+
+// The one-line reason `action` was refused with (its inkwire::Error), or "" when it was not.
+template <class Action>
+std::string error_of(Action action) {
+  try {
+    action();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
 }
 
 }  // namespace inkwire::test

@@ -13,6 +13,7 @@
 #include "common/tween/tween_data.hpp"
 #include "common/tween/view_sphere.hpp"
 #include "common/tween/warp_mesh.hpp"
+#include "test_data.hpp"
 
 using namespace inkwire;
 
@@ -40,12 +41,7 @@ TweenData turntable_like(int samples, int points, float shift, uint64_t seed, in
 }
 
 std::string error_of(const std::vector<uint8_t>& bytes) {
-  try {
-    decode_tween(bytes);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
+  return test::error_of([&] { decode_tween(bytes); });
 }
 
 }  // namespace
