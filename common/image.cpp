@@ -88,6 +88,14 @@ Image resized(const Image& image, int width, int height) {
   return out;
 }
 
+Image cropped(const Image& image, int x, int y, int width, int height) {
+  if (x < 0 || y < 0 || width <= 0 || height <= 0 || x + width > image.width || y + height > image.height)
+    throw Error("cropped(): the rectangle is not inside the image");
+  Image out(width, height);
+  for (int row = 0; row < height; ++row) std::copy_n(image.at(x, y + row), size_t(width) * 4, out.at(0, row));
+  return out;
+}
+
 Image side_by_side(const std::vector<Image>& panels) {
   if (panels.empty()) throw Error("side_by_side(): no images");
   int width = 0;

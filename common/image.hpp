@@ -36,6 +36,10 @@ Image load_image_from_memory(std::span<const uint8_t> encoded, const std::string
 // Writes PNG (or any format OpenImageIO knows by extension). `keep_alpha` false drops alpha.
 void save_image(const Image& image, const std::filesystem::path& file, bool keep_alpha = true);
 
+// The width x height rectangle of `image` whose top-left pixel is (x, y). Throws inkwire::Error
+// when it does not lie inside the image.
+Image cropped(const Image& image, int x, int y, int width, int height);
+
 // Images of one height laid left to right (contact sheets, side-by-side videos). Throws
 // inkwire::Error when there are none or their heights differ.
 Image side_by_side(const std::vector<Image>& panels);

@@ -80,11 +80,6 @@ Crop face_crop(const Image& image, const FaceLandmarks& face) {
   c.y = std::clamp(int(frame.origin.y - above), 0, image.height - c.height);
   return c;
 }
-Image cropped(const Image& image, const Crop& c) {
-  Image out(c.width, c.height);
-  for (int y = 0; y < c.height; ++y) std::copy_n(image.at(c.x, c.y + y), size_t(c.width) * 4, out.at(0, y));
-  return out;
-}
 
 int morph(const MorphOptions& o) {
   Image a = load_image(o.from);
@@ -98,7 +93,7 @@ int morph(const MorphOptions& o) {
     if (o.frame_faces) {
       // Both faces cut out at the same framing, so the morph moves features, not whole photos.
       const Crop ca = face_crop(a, fa), cb = face_crop(b_original, fb);
-      a = cropped(a, ca), b_original = cropped(b_original, cb);
+      a = cropped(a, ca.x, ca.y, ca.width, ca.height), b_original = cropped(b_original, cb.x, cb.y, cb.width, cb.height);
       for (glm::vec2& p : fa) p -= glm::vec2(ca.x, ca.y);
       for (glm::vec2& p : fb) p -= glm::vec2(cb.x, cb.y);
     }

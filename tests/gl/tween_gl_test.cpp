@@ -186,12 +186,7 @@ namespace {
 // PSNR away from the left and right edges, where content enters and leaves the frame.
 double interior_psnr(const Image& a, const Image& b, int margin) {
   const int w = a.width - 2 * margin;
-  Image ca(w, a.height), cb(w, b.height);
-  for (int y = 0; y < a.height; ++y) {
-    std::copy_n(a.at(margin, y), size_t(w) * 4, ca.at(0, y));
-    std::copy_n(b.at(margin, y), size_t(w) * 4, cb.at(0, y));
-  }
-  return psnr(ca, cb);
+  return psnr(cropped(a, margin, 0, w, a.height), cropped(b, margin, 0, w, b.height));
 }
 
 }  // namespace

@@ -37,3 +37,23 @@ TEST(ImageTest, TruncatedAndBogusFilesAreRefused) {
   EXPECT_THROW(load_image(write_temp("bogus.png", "not a png at all")), Error);
   EXPECT_THROW(load_image("/nonexistent.png"), Error);
 }
+
+TEST(ImageTest, CropsAndSideBySideKeepEveryPixelInPlace) {
+  Image image(5, 4);
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 5; ++x) image.at(x, y)[0] = uint8_t(10 * y + x);
+  const Image part = cropped(image, 1, 2, 3, 2);
+  ASSERT_EQ(part.width, 3);
+  ASSERT_EQ(part.height, 2);
+  EXPECT_EQ(part.at(0, 0)[0], 21);
+  EXPECT_EQ(part.at(2, 1)[0], 33);
+  EXPECT_THROW(cropped(image, 3, 0, 3, 1), Error);
+  EXPECT_THROW(cropped(image, -1, 0, 2, 1), Error);
+
+  const Image both = side_by_side({part, cropped(image, 0, 0, 2, 2)});
+  ASSERT_EQ(both.width, 5);
+  EXPECT_EQ(both.at(2, 1)[0], 33);
+  EXPECT_EQ(both.at(4, 1)[0], 11);
+  EXPECT_THROW(side_by_side({part, image}), Error);
+  EXPECT_THROW(side_by_side({}), Error);
+}

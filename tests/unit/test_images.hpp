@@ -28,10 +28,6 @@ inline Image random_discs(int w, int h, uint64_t seed) {
 }
 
 // The `width`-pixel window of `scene` that starts `shift` pixels in.
-inline Image panned(const Image& scene, int shift, int width) {
-  Image out(width, scene.height);
-  for (int y = 0; y < scene.height; ++y) std::copy_n(scene.at(shift, y), size_t(width) * 4, out.at(0, y));
-  return out;
-}
+inline Image panned(const Image& scene, int shift, int width) { return cropped(scene, shift, 0, width, scene.height); }
 
 }  // namespace inkwire::test
