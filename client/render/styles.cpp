@@ -99,7 +99,7 @@ class CompositeRenderer final : public Renderer {
 
 }  // namespace
 
-std::unique_ptr<Renderer> make_renderer(const std::string& name, const std::vector<std::string>& assignments) {
+std::vector<StyleParams> style_params(const std::string& name, const std::vector<std::string>& assignments) {
   const std::vector<std::string> names = split_parts(name);
   std::vector<StyleParams> params;
   for (const std::string& part : names) params.emplace_back(find_style(part).params());
@@ -110,6 +110,12 @@ std::unique_ptr<Renderer> make_renderer(const std::string& name, const std::vect
       if (p.has(key)) p.set(key, value), used = true;
     if (!used) params.front().set(key, value);  // throws, naming the known keys
   }
+  return params;
+}
+
+std::unique_ptr<Renderer> make_renderer(const std::string& name, const std::vector<std::string>& assignments) {
+  const std::vector<std::string> names = split_parts(name);
+  const std::vector<StyleParams> params = style_params(name, assignments);
   std::vector<std::unique_ptr<Renderer>> parts;
   for (size_t i = 0; i < names.size(); ++i) {
     parts.push_back(find_style(names[i]).create());

@@ -28,6 +28,10 @@ const StyleInfo& find_style(const std::string& name);
 // assignment goes to every part that has the key, and one no part has is an error.
 std::unique_ptr<Renderer> make_renderer(const std::string& name, const std::vector<std::string>& assignments = {});
 
+// The configuration make_renderer() would give each part, without making a renderer; throws
+// what it would throw (unknown style, unknown key, bad value).
+std::vector<StyleParams> style_params(const std::string& name, const std::vector<std::string>& assignments = {});
+
 // The backdrop a style (or the first style of a combination) is drawn over by default.
 std::string default_backdrop(const std::string& name);
 

@@ -97,24 +97,30 @@ void SessionView::update_style(const protocol::Snapshot& state, bool new_content
   std::string key = state.style.renderer;
   for (const std::string& s : state.style.settings) key += " " + s;
   if (key == style_key_ && !new_content) return;
+  // A conference shows the speaker's photo, never a mesh: its style is checked and decides
+  // whether the face is painted, but no mesh renderer is made for it.
+  const bool shows_object = state.kind != protocol::SessionKind::Conference;
   try {
+    style_params(state.style.renderer, state.style.settings);
     if (face_) face_->set_style(state.style.renderer, state.style.settings);
-    auto renderer = make_renderer(state.style.renderer, state.style.settings);
-    if (object_) renderer->prepare(*object_);
-    renderer_ = std::move(renderer);
+    if (shows_object) {
+      auto renderer = make_renderer(state.style.renderer, state.style.settings);
+      if (object_) renderer->prepare(*object_);
+      renderer_ = std::move(renderer);
+    }
     backdrop_.emplace(BackdropSpec::parse(default_backdrop(state.style.renderer)));
     style_key_ = key;
     style_error_.clear();
   } catch (const Error& e) {
     style_error_ = "style '" + state.style.renderer + "' refused: " + e.what();
     std::fprintf(stderr, "inkwire-client: %s (keeping the previous style)\n", style_error_.c_str());
-    const bool fresh = !renderer_;
+    const bool fresh = shows_object ? !renderer_ : !backdrop_;
     if (fresh) {
       // Nothing drawn yet: fall back to the default so the session still shows.
-      renderer_ = make_renderer("default");
+      if (shows_object) renderer_ = make_renderer("default");
       backdrop_.emplace(BackdropSpec::parse(default_backdrop("default")));
     }
-    if (object_ && (fresh || new_content)) renderer_->prepare(*object_);
+    if (object_ && renderer_ && (fresh || new_content)) renderer_->prepare(*object_);
     style_key_ = key;
   }
 }

@@ -1,7 +1,9 @@
 #include <gtest/gtest.h>
 
+#include "client/render/styles.hpp"
 #include "common/error.hpp"
 #include "common/style_params.hpp"
+#include "test_data.hpp"
 
 using namespace inkwire;
 
@@ -40,4 +42,16 @@ TEST(StyleParamsTest, BadValuesAreRefusedWithReasons) {
     EXPECT_NE(std::string(e.what()).find("known: width|k|fade|ink|mode"), std::string::npos) << e.what();
   }
   EXPECT_FLOAT_EQ(p.get_float("width"), 2.0f) << "a refused value must not change the old one";
+}
+
+// What make_renderer() would be configured with, checked without making one (no GL needed):
+// how a client checks a conference's style, which draws no mesh.
+TEST(StyleParamsTest, StyleChecksWithoutARendererRefuseWhatMakeRendererWould) {
+  const auto parts = style_params("hatching+sketch-charcoal", {"angle=30", "fade=false"});
+  ASSERT_EQ(parts.size(), 2u);
+  EXPECT_FLOAT_EQ(parts[0].get_float("angle"), 30.0f);
+  EXPECT_FALSE(parts[1].get_bool("fade"));
+  EXPECT_EQ(test::error_of([] { style_params("no-such-style"); }).find("unknown style 'no-such-style'"), 0u);
+  EXPECT_NE(test::error_of([] { style_params("painterly", {"no_such_key=1"}); }), "");
+  EXPECT_NE(test::error_of([] { style_params("comic", {"outline_width=-4"}); }), "");
 }
