@@ -84,6 +84,7 @@
   X(PFNGLUNIFORM1FPROC, glUniform1f)                                         \
   X(PFNGLUNIFORM2FPROC, glUniform2f)                                         \
   X(PFNGLUNIFORM3FPROC, glUniform3f)                                         \
+  X(PFNGLUNIFORM3IPROC, glUniform3i)                                         \
   X(PFNGLUNIFORM4FPROC, glUniform4f)                                         \
   X(PFNGLUNIFORMMATRIX2FVPROC, glUniformMatrix2fv)                           \
   X(PFNGLUNIFORMMATRIX3FVPROC, glUniformMatrix3fv)                           \

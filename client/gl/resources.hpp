@@ -9,6 +9,7 @@
 #include <glm/mat2x2.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
 
 #include "client/gl/gl.hpp"
 #include "common/image.hpp"
@@ -130,6 +131,7 @@ class Program : public Handle<delete_program> {
   void set(const char* name, float v) const { glUniform1f(location(name), v); }
   void set(const char* name, const glm::vec2& v) const { glUniform2f(location(name), v.x, v.y); }
   void set(const char* name, const glm::vec3& v) const { glUniform3f(location(name), v.x, v.y, v.z); }
+  void set(const char* name, const glm::ivec3& v) const { glUniform3i(location(name), v.x, v.y, v.z); }
   void set(const char* name, const glm::vec4& v) const { glUniform4f(location(name), v.x, v.y, v.z, v.w); }
   void set(const char* name, const glm::mat2& m) const { glUniformMatrix2fv(location(name), 1, GL_FALSE, &m[0][0]); }
   void set(const char* name, const glm::mat3& m) const { glUniformMatrix3fv(location(name), 1, GL_FALSE, &m[0][0]); }

@@ -59,9 +59,13 @@ std::vector<Result> run_tween_suite(Harness& harness) {
       {"nearest", {"method=nearest"}},
       {"crossfade", {"method=crossfade"}},
       {"linear", {"method=linear"}},
-      {"bilinear-layered", {"method=bilinear", "overlap=layered"}},
-      {"bilinear-depthclear", {"method=bilinear", "overlap=depth-clear"}},
+      {"bilinear", {"method=bilinear"}},
       {"trilinear", {"method=trilinear"}},
+      // The study's way: one pass per sample into an off-screen view, then laid over the frame.
+      {"crossfade-per-sample", {"method=crossfade", "passes=per-sample"}},
+      {"bilinear-layered", {"method=bilinear", "passes=per-sample", "overlap=layered"}},
+      {"bilinear-depthclear", {"method=bilinear", "passes=per-sample", "overlap=depth-clear"}},
+      {"trilinear-per-sample", {"method=trilinear", "passes=per-sample"}},
   };
   for (const Variant& v : variants) {
     const bool reference = *v.name == '\0';

@@ -145,9 +145,8 @@ void FaceReconstructor::render(double now) {
   for (size_t i = 0; i < mesh_points_.points.size(); ++i)
     if (landmark_of_[i] >= 0) mesh_points_.points[i][1] = shown[size_t(landmark_of_[i])];
   warper_.update_mesh(mesh_, mesh_points_);
-  warper_.begin(OverlapMode::Layered);
-  warper_.pass(mesh_, atlas_, {0, 1, 0}, 0, 1.0f);
-  warper_.end();
+  const WarpSource photo{&atlas_, 0, 1.0f};
+  warper_.render(mesh_, {0, 1, 0}, {&photo, 1});
 }
 
 }  // namespace inkwire

@@ -38,6 +38,8 @@ ImageWarper::ImageWarper(int width, int height)
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target_.id(), 0);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
   fbo_.check_complete("ImageWarper target");
+  for (int n = 1; n <= 3; ++n)
+    blend_.push_back(gl::Program::from_files({"tween/blend.vert", "tween/blend.frag"}, {"SAMPLES " + std::to_string(n)}));
 }
 
 namespace {
@@ -70,6 +72,69 @@ void ImageWarper::update_mesh(int mesh, const WarpMesh& moved) {
   if (moved.points.size() != m.points) throw Error("ImageWarper::update_mesh(): the point count changed");
   const std::vector<float> vertices = vertex_data(moved);
   m.vertices.upload(vertices.size() * sizeof(float), vertices.data(), GL_DYNAMIC_DRAW);
+}
+
+void ImageWarper::blend(int mesh, const glm::vec3& position_weights, std::span<const WarpSource> sources,
+                        const glm::vec4& to_clip) const {
+  if (sources.empty() || sources.size() > 3) throw Error("ImageWarper: a view is made of 1 to 3 samples");
+  const Mesh& m = meshes_.at(size_t(mesh));
+  const gl::Program& program = blend_[sources.size() - 1];
+  program.use();
+  glm::ivec3 source(0);
+  glm::vec3 weights(0.0f);
+  for (size_t k = 0; k < sources.size(); ++k) {
+    const WarpSource& s = sources[k];
+    source[int(k)] = std::clamp(s.position, 0, 2);
+    weights[int(k)] = s.weight;
+    const std::string index = "[" + std::to_string(k) + "]";
+    program.set(("samples" + index).c_str(), int(k));
+    program.set(("sample_size" + index).c_str(), glm::vec2(s.image->width(), s.image->height()));
+    s.image->bind(GLuint(k));
+  }
+  program.set("position_weights", position_weights);
+  program.set("source", source);
+  program.set("weights", weights);
+  program.set("to_clip", to_clip);
+  program.set("depth", kFirstLayerDepth);
+  glDisable(GL_CULL_FACE);  // folded triangles face away and still carry colour
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied "over"
+  m.vao.bind();
+  glDrawElements(GL_TRIANGLES, m.index_count, GL_UNSIGNED_INT, nullptr);
+  glBindVertexArray(0);
+  glDisable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ZERO);
+}
+
+void ImageWarper::render(int mesh, const glm::vec3& position_weights, std::span<const WarpSource> sources) {
+  const FramebufferBinding restore;
+  fbo_.bind();
+  glViewport(0, 0, width_, height_);
+  glDisable(GL_SCISSOR_TEST);
+  glDepthMask(GL_TRUE);
+  glClearColor(0, 0, 0, 0);
+  glClearDepth(1.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  // Pixels (y down) to clip space, the image's top row at the top.
+  blend(mesh, position_weights, sources, {2.0f / float(width_), -2.0f / float(height_), -1.0f, 1.0f});
+}
+
+void ImageWarper::draw_over(int mesh, const glm::vec3& position_weights, std::span<const WarpSource> sources,
+                            const glm::vec4& rect) const {
+  glm::vec4 viewport;
+  {
+    glm::ivec4 v;
+    glGetIntegerv(GL_VIEWPORT, &v.x);
+    viewport = glm::vec4(v);
+  }
+  // Image pixel (y down) -> window pixel in rect (y up, the image's top row at the rect's top)
+  // -> clip space of the bound viewport.
+  const glm::vec4 to_clip(2.0f * rect.z / (float(width_) * viewport.z), -2.0f * rect.w / (float(height_) * viewport.w),
+                          2.0f * (rect.x - viewport.x) / viewport.z - 1.0f, 2.0f * (rect.y + rect.w - viewport.y) / viewport.w - 1.0f);
+  blend(mesh, position_weights, sources, to_clip);
 }
 
 void ImageWarper::begin(OverlapMode overlap) {

@@ -1,11 +1,17 @@
 #pragma once
 // The warp engine (SPEC T3-T5), shared by the tween renderer and the face reconstruction: any
-// images, any triangulated control points. A view is built in an off-screen target the size of
-// the sample images by one pass per contributing sample: the control-point mesh drawn at the
-// view's positions, textured from that sample at the sample's own positions (piecewise-affine
-// warp by texture mapping), weighted and summed. Overlapping (folded) triangles must not add up
-// twice within a pass: either each pass is laid a little nearer than the last with depth test
-// LESS (layered), or depth is cleared before each pass (depth-clear).
+// images, any triangulated control points. A view is the control-point mesh drawn at the view's
+// positions, textured from each contributing sample at that sample's own positions
+// (piecewise-affine warp by texture mapping), the samples weighted and summed. Two ways:
+//   one pass    every vertex carries its position in each sample and the fragment reads all
+//               of them (render() into the warper's target, or draw_over() straight into the
+//               caller's framebuffer);
+//   per sample  the study's way: one additive pass per sample into the warper's target
+//               (begin() / pass() / end()), then composite().
+// Overlapping (folded) triangles must not add up twice: every pass is depth-tested with LESS at
+// one depth, so the first triangle to reach a pixel is the only one written there; per-sample
+// passes are either laid a little nearer each (layered) or clear depth first (depth-clear).
+#include <span>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -19,6 +25,13 @@
 namespace inkwire {
 
 enum class OverlapMode { Layered, DepthClear };
+
+// One sample's part in a one-pass view.
+struct WarpSource {
+  const gl::Texture* image;
+  int position;  // which stored position of each control point (0-2) lies in `image`
+  float weight;
+};
 
 // A sample image as the warper reads it: premultiplied alpha, linear filtering, no wrap.
 gl::Texture make_sample_texture(const Image& image);
@@ -34,7 +47,15 @@ class ImageWarper {
   void update_mesh(int mesh, const WarpMesh& moved);
   size_t triangles(int mesh) const { return meshes_.at(size_t(mesh)).index_count / 3; }
 
-  // Starts a view: binds the target (saving the caller's framebuffer) and clears it to
+  // One pass into the warper's target (then read()): the mesh at position_weights . (p0, p1,
+  // p2), each pixel the weighted sum of up to three sources read at their own positions.
+  void render(int mesh, const glm::vec3& position_weights, std::span<const WarpSource> sources);
+  // The same view drawn "over" the bound framebuffer into `rect` (window pixels, GL y up),
+  // depth-tested and written at depth 0.5 there (the framebuffer's depth must be clear behind).
+  void draw_over(int mesh, const glm::vec3& position_weights, std::span<const WarpSource> sources,
+                 const glm::vec4& rect) const;
+
+  // Per-sample passes. Starts a view: binds the target (saving the caller's framebuffer) and clears it to
   // transparent black.
   void begin(OverlapMode overlap);
   // Adds `sample` warped: vertices at position_weights . (p0, p1, p2), texels read at
@@ -55,8 +76,11 @@ class ImageWarper {
     gl::VertexArray vao;
     GLsizei index_count = 0;
   };
+  // Draws a one-pass view with clip = pixel * to_clip.xy + to_clip.zw into the bound framebuffer.
+  void blend(int mesh, const glm::vec3& position_weights, std::span<const WarpSource> sources, const glm::vec4& to_clip) const;
   int width_, height_;
   gl::Program warp_, composite_;
+  std::vector<gl::Program> blend_;  // one program per number of sources (1-3)
   gl::Texture target_;
   gl::Renderbuffer depth_;
   gl::Framebuffer fbo_;

@@ -22,20 +22,16 @@ PairTween::PairTween(const Image& a, const Image& b, const TweenCell& cell)
 
 Image PairTween::tween(float t) {
   t = std::clamp(t, 0.0f, 1.0f);
-  const glm::vec3 at = path_weights(t);
-  warper_.begin(OverlapMode::Layered);
-  warper_.pass(mesh_, a_, at, 0, 1.0f - t);
-  warper_.pass(mesh_, b_, at, 2, t);
-  warper_.end();
+  const WarpSource both[] = {{&a_, 0, 1.0f - t}, {&b_, 2, t}};
+  warper_.render(mesh_, path_weights(t), both);
   return warper_.read();
 }
 
 Image PairTween::crossfade(float t) {
   t = std::clamp(t, 0.0f, 1.0f);
-  warper_.begin(OverlapMode::Layered);
-  warper_.pass(mesh_, a_, {1, 0, 0}, 0, 1.0f - t);
-  warper_.pass(mesh_, b_, {0, 0, 1}, 2, t);
-  warper_.end();
+  // Both images unwarped: the mesh where it lies in `a`, and both read at those same pixels.
+  const WarpSource both[] = {{&a_, 0, 1.0f - t}, {&b_, 0, t}};
+  warper_.render(mesh_, {1, 0, 0}, both);
   return warper_.read();
 }
 

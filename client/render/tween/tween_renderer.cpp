@@ -26,8 +26,10 @@ std::vector<ParamSpec> TweenRenderer::params() {
   return {
       choice_param("method", "bilinear", {"nearest", "crossfade", "linear", "bilinear", "trilinear"},
                    "how a view is made from the samples around it (trilinear samples a geodesic sphere, the others a ring)"),
+      choice_param("passes", "one", {"one", "per-sample"},
+                   "one pass reading every sample, or the study's one pass per sample summed in an off-screen view"),
       choice_param("overlap", "layered", {"layered", "depth-clear"},
-                   "how folded triangles are kept from adding up: passes laid nearer and nearer, or depth cleared per pass"),
+                   "per-sample passes: how folded triangles are kept from adding up (passes laid nearer and nearer, or depth cleared per pass)"),
       choice_param("layout", "auto", {"auto", "ring", "sphere"},
                    "where samples are taken: a ring on the equator or a geodesic sphere (auto: sphere for trilinear only)"),
       int_param("samples", "24", 3, 360, "samples on the ring (24 = every 15 degrees)"),
@@ -40,6 +42,7 @@ std::vector<ParamSpec> TweenRenderer::params() {
 
 void TweenRenderer::configure(const StyleParams& p) {
   method_ = p.get_text("method");
+  one_pass_ = p.get_text("passes") == "one";
   overlap_ = p.get_text("overlap") == "depth-clear" ? OverlapMode::DepthClear : OverlapMode::Layered;
   layout_ = p.get_text("layout");
   ring_samples_ = p.get_int("samples");
@@ -100,55 +103,76 @@ void TweenRenderer::upload() {
     meshes_.push_back(warper_->add_mesh(build_warp_mesh(cell, model_.data.width, model_.data.height)));
 }
 
-void TweenRenderer::draw(const FrameState& frame) {
-  if (object_) build_from_mesh();  // the method may have moved between ring and sphere
-  if (!warper_) throw Error("tween: nothing to draw (no mesh prepared and no samples given)");
-  const glm::vec3 centre = model_.bounds.centre();
-  const glm::vec3 eye = frame.eye_in_object_space();
-  const CellLocation at = locate_view(model_.data, eye - centre);
+TweenRenderer::View TweenRenderer::plan(const FrameState& frame) {
+  const CellLocation at = locate_view(model_.data, frame.eye_in_object_space() - model_.bounds.centre());
   last_cell_ = at.cell;
-  last_passes_ = 0;
-  if (at.cell < 0) return;
+  if (at.cell < 0) return {};
   const TweenCell& cell = model_.data.cells[size_t(at.cell)];
-  const int mesh = meshes_[size_t(at.cell)];
   const bool pair = cell.is_pair();
   const int n = int(cell.samples.size());
   // Which stored position of a point belongs to the cell's k-th sample, and where the view puts it.
   auto slot = [&](int k) { return pair ? 2 * k : k; };
-  const glm::vec3 view_weights = pair ? path_weights(at.t) : glm::vec3(at.weights[0], at.weights[1], at.weights[2]);
-  auto own_position = [&](int k) {
+  auto source = [&](int k, int position, float weight) {
+    return WarpSource{&textures_[cell.samples[size_t(k)]], position, weight};
+  };
+  auto own_positions = [&](int k) {
     glm::vec3 w(0.0f);
     w[slot(k)] = 1.0f;
     return w;
   };
+  View view;
+  view.mesh = meshes_[size_t(at.cell)];
+  const glm::vec3 between = pair ? path_weights(at.t) : glm::vec3(at.weights[0], at.weights[1], at.weights[2]);
   int nearest = 0;
   for (int k = 1; k < n; ++k)
     if (at.weights[size_t(k)] > at.weights[size_t(nearest)]) nearest = k;
-
-  warper_->begin(overlap_);
-  auto pass = [&](int k, const glm::vec3& positions, float weight) {
-    warper_->pass(mesh, textures_[cell.samples[size_t(k)]], positions, slot(k), weight);
-    ++last_passes_;
-  };
   if (method_ == "nearest") {
-    pass(nearest, own_position(nearest), 1.0f);
+    view.positions = own_positions(nearest);
+    view.sources = {source(nearest, slot(nearest), 1.0f)};
   } else if (method_ == "linear") {
-    pass(nearest, view_weights, 1.0f);
+    view.positions = between;
+    view.sources = {source(nearest, slot(nearest), 1.0f)};
   } else if (method_ == "crossfade") {
-    for (int k = 0; k < n; ++k) pass(k, own_position(k), at.weights[size_t(k)]);
+    // Unwarped: the mesh drawn where it lies in the first sample, and every sample read at those
+    // same pixels, i.e. each image as it is.
+    view.positions = own_positions(0);
+    for (int k = 0; k < n; ++k) view.sources.push_back(source(k, slot(0), at.weights[size_t(k)]));
   } else {  // bilinear on a ring pair, trilinear on a sphere triangle
-    for (int k = 0; k < n; ++k) pass(k, view_weights, at.weights[size_t(k)]);
+    view.positions = between;
+    for (int k = 0; k < n; ++k) view.sources.push_back(source(k, slot(k), at.weights[size_t(k)]));
   }
-  warper_->end();
+  return view;
+}
+
+void TweenRenderer::draw(const FrameState& frame) {
+  if (object_) build_from_mesh();  // the method may have moved between ring and sphere
+  if (!warper_) throw Error("tween: nothing to draw (no mesh prepared and no samples given)");
+  last_view_ = plan(frame);
+  last_passes_ = 0;
+  if (last_view_.mesh < 0) return;
 
   // The samples were taken from model_.distance_diagonals away; nearer views see them larger.
+  const glm::vec3 centre = model_.bounds.centre();
   const float diagonal = std::max(model_.bounds.diagonal(), 1e-6f);
-  const float frame_distance = std::max(glm::length(eye - centre) / diagonal, 1e-3f);
+  const float frame_distance = std::max(glm::length(frame.eye_in_object_space() - centre) / diagonal, 1e-3f);
   const float zoom = (model_.distance_diagonals / frame_distance) * std::tan(glm::radians(model_.fov_y_degrees) / 2.0f) /
                      std::tan(glm::radians(frame.camera.fov_y_degrees) / 2.0f);
   const float h = float(frame.viewport.y) * zoom;
   const float w = h * float(model_.data.width) / float(model_.data.height);
-  warper_->composite({(float(frame.viewport.x) - w) / 2.0f, (float(frame.viewport.y) - h) / 2.0f, w, h});
+  const glm::vec4 rect((float(frame.viewport.x) - w) / 2.0f, (float(frame.viewport.y) - h) / 2.0f, w, h);
+
+  if (one_pass_) {
+    warper_->draw_over(last_view_.mesh, last_view_.positions, last_view_.sources, rect);
+    last_passes_ = 1;
+    return;
+  }
+  warper_->begin(overlap_);
+  for (const WarpSource& s : last_view_.sources) {
+    warper_->pass(last_view_.mesh, *s.image, last_view_.positions, s.position, s.weight);
+    ++last_passes_;
+  }
+  warper_->end();
+  warper_->composite(rect);
 }
 
 std::map<std::string, double> TweenRenderer::counters() const {
@@ -162,6 +186,8 @@ std::map<std::string, double> TweenRenderer::counters() const {
 
 Image TweenRenderer::last_view() const {
   if (!warper_) throw Error("tween: no view drawn yet");
+  // One-pass views went straight into the frame: made again at the samples' resolution.
+  if (one_pass_ && last_view_.mesh >= 0) warper_->render(last_view_.mesh, last_view_.positions, last_view_.sources);
   return warper_->read();
 }
 

@@ -9,6 +9,8 @@
 //   bilinear   both samples of a ring pair warped to the view and blended
 //   trilinear  the three samples of a sphere triangle warped to the view and blended
 // (on a sphere, bilinear and trilinear both warp all three samples of the triangle).
+// A view is drawn in one pass reading every contributing sample (the default), or as the study
+// drew it: one pass per sample into an off-screen view, laid over the frame afterwards.
 #include <memory>
 #include <string>
 #include <vector>
@@ -49,9 +51,17 @@ class TweenRenderer final : public Renderer {
   Image last_view() const;
 
  private:
+  // What a view is made of: the cell's mesh drawn at `positions`, read from `sources`.
+  struct View {
+    int mesh = -1;
+    glm::vec3 positions{0.0f};
+    std::vector<WarpSource> sources;
+  };
   void build_from_mesh();
   void upload();
+  View plan(const FrameState& frame);
   std::string method_ = "bilinear", layout_ = "auto";
+  bool one_pass_ = true;
   OverlapMode overlap_ = OverlapMode::Layered;
   int ring_samples_ = 24, sphere_level_ = 2, points_ = 65, sample_size_ = 256;
   std::string sample_style_ = "default";
@@ -61,6 +71,7 @@ class TweenRenderer final : public Renderer {
   std::unique_ptr<ImageWarper> warper_;
   std::vector<gl::Texture> textures_;
   std::vector<int> meshes_;  // per cell
+  View last_view_;
   int last_cell_ = -1, last_passes_ = 0;
   double bytes_per_cell_ = 0.0;  // the model's tween data as the codec writes it
 };
