@@ -101,6 +101,7 @@ int run(const Options& o) {
 
   FrameState frame;
   frame.viewport = size;
+  frame.backdrop = &backdrop;
   if (!o.view.empty()) {
     float az = 0, el = 0, dist = 1.4f;
     const int n = std::sscanf(o.view.c_str(), "%f,%f,%f", &az, &el, &dist);

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include <glm/vec4.hpp>
+
 #include "common/error.hpp"
 #include "common/noise.hpp"
 #include "common/style_params.hpp"
@@ -93,9 +95,19 @@ Backdrop::Backdrop(const BackdropSpec& spec) : spec_(spec) {
   empty_vao_ = VertexArray::create();
 }
 
+namespace {
+
+// What draw() clears to (the paper then covers it).
+glm::vec4 clear_colour(const BackdropSpec& spec) {
+  const glm::vec3 c = spec.kind == BackdropSpec::Kind::Colour ? spec.colour : glm::vec3(1.0f);
+  return {c, spec.kind == BackdropSpec::Kind::None ? 0.0f : 1.0f};
+}
+
+}  // namespace
+
 void Backdrop::draw() const {
-  const glm::vec3 c = spec_.kind == BackdropSpec::Kind::Colour ? spec_.colour : glm::vec3(1.0f);
-  glClearColor(c.r, c.g, c.b, spec_.kind == BackdropSpec::Kind::None ? 0.0f : 1.0f);
+  const glm::vec4 c = clear_colour(spec_);
+  glClearColor(c.r, c.g, c.b, c.a);
   glClearDepth(1.0);
   glClearStencil(0);
   glDepthMask(GL_TRUE);
@@ -112,6 +124,18 @@ void Backdrop::draw() const {
   program_->set("paper_size", float(paper_size_));
   empty_vao_.bind();
   glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+std::string Backdrop::under_define() const { return paper_ ? "UNDER_PAPER" : "UNDER_COLOUR"; }
+
+void Backdrop::set_under(const gl::Program& program, GLuint unit) const {
+  if (!paper_) {
+    program.set("under_colour", clear_colour(spec_));
+    return;
+  }
+  paper_->bind(unit);
+  program.set("paper", int(unit));
+  program.set("paper_size", float(paper_size_));
 }
 
 }  // namespace inkwire

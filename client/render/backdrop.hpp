@@ -36,6 +36,12 @@ class Backdrop {
   explicit Backdrop(const BackdropSpec& spec);
   // Clears colour, depth and stencil, then draws the backdrop into the bound framebuffer.
   void draw() const;
+  // For a surface that draws the backdrop under its own see-through ink in one opaque pass
+  // (instead of laying depth first and blending): the shader's #define ("UNDER_PAPER" or
+  // "UNDER_COLOUR"), then its uniforms: "under_colour" (rgba, alpha 0 for "none"), or "paper"
+  // (on texture unit `unit`) and "paper_size", read exactly as draw() reads them.
+  std::string under_define() const;
+  void set_under(const gl::Program& program, GLuint unit) const;
   const BackdropSpec& spec() const { return spec_; }
 
  private:

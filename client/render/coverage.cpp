@@ -11,8 +11,11 @@ namespace inkwire {
 
 double measure_coverage(Renderer& renderer, const FrameState& frame, const Canvas& canvas) {
   canvas.bind();
-  Backdrop(BackdropSpec::parse("none")).draw();
-  renderer.draw(frame);
+  const Backdrop none(BackdropSpec::parse("none"));
+  none.draw();
+  FrameState over_none = frame;
+  over_none.backdrop = &none;
+  renderer.draw(over_none);
   const Image img = canvas.read();
   size_t covered = 0;
   for (size_t i = 3; i < img.pixels.size(); i += 4) covered += img.pixels[i] > 0;

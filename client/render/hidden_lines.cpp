@@ -9,6 +9,16 @@ HiddenLineRemoval::HiddenLineRemoval()
 
 void HiddenLineRemoval::lay_depth(const GpuMesh& mesh, const glm::mat4& mvp) const {
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  begin_surface_depth();
+  depth_only_.use();
+  depth_only_.set("model_view_projection", mvp);
+  mesh.bind();
+  mesh.draw_all();
+  end_surface_depth();
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+void HiddenLineRemoval::begin_surface_depth() {
   glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_TRUE);
   glEnable(GL_CULL_FACE);
@@ -18,12 +28,11 @@ void HiddenLineRemoval::lay_depth(const GpuMesh& mesh, const glm::mat4& mvp) con
   // LEQUAL: the offset's slope term can clamp edge-on slivers to depth 1.0, which LESS would
   // drop against the clear, letting hidden lines show through there.
   glDepthFunc(GL_LEQUAL);
-  depth_only_.use();
-  depth_only_.set("model_view_projection", mvp);
-  mesh.bind();
-  mesh.draw_all();
+}
+
+void HiddenLineRemoval::end_surface_depth() {
   glDisable(GL_POLYGON_OFFSET_FILL);
-  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDepthFunc(GL_LESS);
 }
 
 void HiddenLineRemoval::begin_lines(bool translucent) {

@@ -15,6 +15,10 @@ class HiddenLineRemoval {
   // Pass 1 for one object. The depth is pushed back slightly (polygon offset) so lines lying on
   // the surface win the less-or-equal test instead of stitching with it.
   void lay_depth(const GpuMesh& mesh, const glm::mat4& model_view_projection) const;
+  // Pass 1's depth state for a surface that is drawn in colour at the same time (opaque
+  // hatching): its depth then serves any lines drawn over it exactly as lay_depth()'s would.
+  static void begin_surface_depth();
+  static void end_surface_depth();
   // Pass 2 state: colour writes on, depth test less-or-equal, depth writes off; with
   // `translucent`, ink blends over what is there (strokes with alpha, faded edges, hatching).
   static void begin_lines(bool translucent = false);

@@ -18,6 +18,8 @@
 
 namespace inkwire {
 
+class Backdrop;
+
 struct FrameState {
   Camera camera;
   glm::mat4 model{1.0f};           // object pose
@@ -25,6 +27,10 @@ struct FrameState {
   glm::ivec2 viewport{620, 500};
   double time_seconds = 0.0;       // animation time (drives boiling lines, brush motion, ...)
   long frame = 0;
+  // What the framebuffer was cleared to before this frame's objects, when the caller knows:
+  // renderers with see-through surfaces (hatching) then draw it under their ink in one opaque
+  // pass. Null: unknown, so they lay depth first and blend over whatever is there.
+  const Backdrop* backdrop = nullptr;
 
   glm::mat4 view() const { return camera.view(); }
   glm::mat4 projection() const { return camera.projection(float(viewport.x) / float(viewport.y)); }

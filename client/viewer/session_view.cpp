@@ -142,6 +142,7 @@ void SessionView::draw(glm::ivec2 viewport, double time_seconds, long frame) {
   f.light_direction = default_light_direction(f.camera);
   f.time_seconds = time_seconds;
   f.frame = frame;
+  f.backdrop = &*backdrop_;
   renderer_->draw(f);
 }
 

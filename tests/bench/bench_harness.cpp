@@ -47,6 +47,7 @@ Result Harness::time_frames(Renderer& renderer, const BenchObject& object, int f
   // frame's view-dependent work (orientation, silhouettes) is real work, as it is for a user
   // turning the object; counters are read at the study's pose.
   FrameState frame = object.frame;
+  frame.backdrop = &clear;
   const glm::mat4 pose = object.frame.model;
   std::vector<double> seconds;
   seconds.reserve(size_t(frames));

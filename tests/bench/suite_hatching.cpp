@@ -18,7 +18,7 @@ std::vector<Result> run_hatching_suite(Harness& harness) {
     std::vector<uint8_t> front;
     const double front_faces = double(classify_faces(object.object.mesh, object.object.topology, eye, front));
     double default_fps = 0.0;
-    for (const char* variant : {"", "3d-texture", "multipass"}) {
+    for (const char* variant : {"", "threshold", "3d-texture", "multipass"}) {
       const bool reference = *variant == '\0';
       auto renderer = reference ? make_renderer("default") : make_renderer("hatching", {std::string("variant=") + variant});
       renderer->prepare(object.object);

@@ -19,8 +19,11 @@ Context& offscreen_context() {
 
 Image render_frame(Renderer& renderer, const FrameState& frame, const Canvas& canvas, const std::string& backdrop) {
   canvas.bind();
-  Backdrop(BackdropSpec::parse(backdrop)).draw();
-  renderer.draw(frame);
+  const Backdrop under(BackdropSpec::parse(backdrop));
+  under.draw();
+  FrameState with_backdrop = frame;
+  with_backdrop.backdrop = &under;
+  renderer.draw(with_backdrop);
   return canvas.read();
 }
 

@@ -1,4 +1,7 @@
 // Hatch tone layers (SPEC S7) without GL: nested stroke sets, darkening monotonically.
+#include <cmath>
+#include <cstdio>
+
 #include <gtest/gtest.h>
 
 #include "client/render/hatching/hatch_tones.hpp"
@@ -23,4 +26,32 @@ TEST(HatchTonesTest, LighterLayersAreSubsetsOfDarkerOnes) {
 TEST(HatchTonesTest, BadSizesAreRefused) {
   EXPECT_THROW(make_hatch_tones(1, 64), Error);
   EXPECT_THROW(make_hatch_tones(8, 100), Error);
+}
+
+TEST(HatchTonesTest, ThresholdsReproduceEveryLayer) {
+  const HatchTones tones = make_hatch_tones(16, 64);
+  const Image steps = tone_thresholds(tones);
+  ASSERT_EQ(steps.width, 64);
+  for (size_t k = 0; k < tones.layers.size(); ++k) {
+    const float tone = float(k) / float(tones.layers.size() - 1);
+    // The ink the shader reads at this layer's tone (texel centres, no softness).
+    double error = 0.0;
+    size_t inked = 0, inked_by_steps = 0;
+    for (int y = 0; y < 64; ++y)
+      for (int x = 0; x < 64; ++x) {
+        const uint8_t* t = steps.at(x, y);
+        const float ink = (float(t[0]) / 255.0f <= tone ? float(t[1]) : 0.0f) + (float(t[2]) / 255.0f <= tone ? float(t[3]) - float(t[1]) : 0.0f);
+        const float truth = tones.layers[k].at(x, y)[3];
+        error += std::abs(ink - truth) / 255.0;
+        inked += truth > 127;
+        inked_by_steps += ink > 127;
+      }
+    const double mean_error = error / (64.0 * 64.0);
+    std::printf("layer %2zu: mean ink error %.3f, inked %zu texels, by the steps %zu\n", k, mean_error, inked, inked_by_steps);
+    // Two steps cannot follow a texel darkened by three or more strokes exactly (measured: at
+    // most 0.003 of full ink per texel on average).
+    EXPECT_LT(mean_error, 0.01) << "layer " << k;
+    EXPECT_NEAR(double(inked_by_steps), double(inked), 0.05 * 64 * 64) << "layer " << k;
+  }
+  EXPECT_THROW(tone_thresholds(HatchTones{}), Error);
 }

@@ -58,12 +58,105 @@ HatchTones make_hatch_tones(int layers, int size, uint32_t seed) {
     // Strokes grow roughly with the square of the tone, so tones look evenly spaced.
     const float tone = float(k) / float(layers - 1);
     const int n = int(std::round(float(total) * tone * tone));
-    Image img(size, size, {40, 40, 46, 0});  // graphite colour, no ink yet
-    for (int i = 0; i < n; ++i) draw_stroke(img, strokes[size_t(i)]);
+    // Each layer is the one before plus its new strokes (ink combines by max: order is free).
+    Image img = k == 0 ? Image(size, size, {40, 40, 46, 0}) : tones.layers.back();  // graphite, no ink yet
+    for (int i = k == 0 ? 0 : tones.strokes_in_layer.back(); i < n; ++i) draw_stroke(img, strokes[size_t(i)]);
     tones.layers.push_back(std::move(img));
     tones.strokes_in_layer.push_back(n);
   }
   return tones;
+}
+
+namespace {
+
+// A texel's ink against tone as two steps: `first` up to tone t1, `second` from t2 on.
+struct TwoSteps {
+  int k1 = 0, k2 = 0;  // layers where the steps happen
+  float first = 0.0f, second = 0.0f;
+};
+
+// The two steps closest (least squares) to a texel's ink over the layers, which only grows.
+TwoSteps fit_two_steps(const std::vector<float>& ink) {
+  const int n = int(ink.size());
+  std::vector<double> sum(size_t(n) + 1, 0.0), squares(size_t(n) + 1, 0.0);
+  for (int k = 0; k < n; ++k) {
+    sum[size_t(k) + 1] = sum[size_t(k)] + ink[size_t(k)];
+    squares[size_t(k) + 1] = squares[size_t(k)] + double(ink[size_t(k)]) * ink[size_t(k)];
+  }
+  // Squared error of the mean over [a, b).
+  auto error = [&](int a, int b) {
+    if (b <= a) return 0.0;
+    const double s = sum[size_t(b)] - sum[size_t(a)];
+    return squares[size_t(b)] - squares[size_t(a)] - s * s / double(b - a);
+  };
+  auto mean = [&](int a, int b) { return b > a ? float((sum[size_t(b)] - sum[size_t(a)]) / double(b - a)) : 0.0f; };
+  // Best steps lie where the ink changes (a step inside a run of equal values only moves error
+  // from one side to the other), and a texel changes at a few layers only.
+  std::vector<int> changes;
+  for (int k = 1; k < n; ++k)
+    if (ink[size_t(k)] != ink[size_t(k) - 1]) changes.push_back(k);
+  TwoSteps best;
+  double best_error = 1e300;
+  for (size_t i = 0; i < changes.size(); ++i)
+    for (size_t j = i; j < changes.size(); ++j) {
+      const int k1 = changes[i], k2 = changes[j];
+      // Zero before k1 (the layers only gain ink, and the lightest is bare paper).
+      const double e = squares[size_t(k1)] + error(k1, k2) + error(k2, n);
+      if (e < best_error) best_error = e, best = {k1, k2, mean(k1, k2), mean(k2, n)};
+    }
+  if (best.k1 == best.k2) best.first = best.second;
+  return best;
+}
+
+}  // namespace
+
+Image tone_thresholds(const HatchTones& tones) {
+  const std::vector<Image>& layers = tones.layers;
+  if (layers.size() < 2) throw Error("tone thresholds: need at least two layers");
+  const int w = layers.back().width, h = layers.back().height;
+  Image out(w, h, {255, 0, 255, 0});
+  // A step at layer k sits halfway between the tones of layers k - 1 and k.
+  const float step = 1.0f / float(layers.size() - 1);
+  auto tone_byte = [&](int k) { return uint8_t(std::clamp((float(k) - 0.5f) * step, 0.0f, 1.0f) * 255.0f + 0.5f); };
+  std::vector<uint8_t> known(size_t(w) * size_t(h), 0);
+  std::vector<float> ink(layers.size());
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      for (size_t k = 0; k < layers.size(); ++k) ink[k] = layers[k].at(x, y)[3];
+      if (ink.back() == 0) continue;
+      const TwoSteps s = fit_two_steps(ink);
+      uint8_t* p = out.at(x, y);
+      p[0] = tone_byte(s.k1);
+      p[1] = uint8_t(std::clamp(s.first, 0.0f, 255.0f) + 0.5f);
+      p[2] = tone_byte(s.k2);
+      p[3] = uint8_t(std::clamp(s.second, 0.0f, 255.0f) + 0.5f);
+      known[size_t(y) * size_t(w) + size_t(x)] = 1;
+    }
+  // Bare texels grow in from their inked neighbours (wrapping, as the tile does) one ring at a
+  // time, each taking the lowest tones around it.
+  for (bool grew = true; grew;) {
+    grew = false;
+    std::vector<uint8_t> next = known;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        if (known[size_t(y) * size_t(w) + size_t(x)]) continue;
+        int first = 256, second = 256;
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int nx = (x + dx + w) % w, ny = (y + dy + h) % h;
+            if (!known[size_t(ny) * size_t(w) + size_t(nx)]) continue;
+            first = std::min(first, int(out.at(nx, ny)[0]));
+            second = std::min(second, int(out.at(nx, ny)[2]));
+          }
+        if (first == 256) continue;
+        out.at(x, y)[0] = uint8_t(first);
+        out.at(x, y)[2] = uint8_t(second);
+        next[size_t(y) * size_t(w) + size_t(x)] = 1;
+        grew = true;
+      }
+    known = std::move(next);
+  }
+  return out;
 }
 
 double ink_coverage(const Image& layer) {

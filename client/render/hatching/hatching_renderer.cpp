@@ -5,6 +5,7 @@
 
 #include <glm/trigonometric.hpp>
 
+#include "client/render/backdrop.hpp"
 #include "client/render/hatching/hatch_tones.hpp"
 #include "common/error.hpp"
 
@@ -12,14 +13,18 @@ namespace inkwire {
 
 using namespace gl;
 
-HatchingRenderer::HatchingRenderer()
-    : volume_program_(Program::from_files({"hatching/hatch.vert", "hatching/hatch.frag"}, {"VOLUME 1"})),
-      layer_program_(Program::from_files({"hatching/hatch.vert", "hatching/hatch.frag"})) {}
+namespace {
+
+constexpr glm::vec3 kGraphite(40.0f / 255.0f, 40.0f / 255.0f, 46.0f / 255.0f);  // as the tone layers are inked
+constexpr int kThresholdLayers = 64;  // layers folded into the threshold image: finer tone steps
+
+}  // namespace
 
 std::vector<ParamSpec> HatchingRenderer::params() {
   return {
-      choice_param("variant", "3d-texture", {"3d-texture", "multipass"}, "one pass over a 3D tone texture, or one pass per tone"),
-      int_param("tones", "16", 2, 64, "3d-texture: tone layers along the depth axis"),
+      choice_param("variant", "threshold", {"threshold", "3d-texture", "multipass"},
+                   "one pass over a threshold image, one pass over a 3D tone texture, or one pass per tone"),
+      int_param("tones", "16", 2, 64, "threshold and 3d-texture: tone steps a stroke fades in over (3D texture layers)"),
       int_param("passes", "4", 1, 32, "multipass: densities, one pass each"),
       float_param("angle", "0", -180, 180, "rotation of the hatching, degrees"),
       float_param("scale", "96", 8, 1024, "size of one hatch tile on screen, pixels"),
@@ -29,10 +34,12 @@ std::vector<ParamSpec> HatchingRenderer::params() {
 }
 
 void HatchingRenderer::configure(const StyleParams& p) {
-  multipass_ = p.get_text("variant") == "multipass";
+  const std::string variant = p.get_text("variant");
   const int tones = p.get_int("tones"), passes = p.get_int("passes");
   const float lightness = p.get_float("lightness");
-  if (tones != tone_layers_ || passes != passes_wanted_ || lightness != lightness_) volume_.reset();  // rebuilt on the next draw
+  if (variant != variant_ || tones != tone_layers_ || passes != passes_wanted_ || lightness != lightness_)
+    tones_.reset();  // rebuilt on the next draw
+  variant_ = variant;
   tone_layers_ = tones;
   passes_wanted_ = passes;
   lightness_ = lightness;
@@ -41,19 +48,22 @@ void HatchingRenderer::configure(const StyleParams& p) {
   strength_ = p.get_float("strength");
 }
 
-void HatchingRenderer::prepare(const SceneObject& object) {
-  object_ = &object;
-  mesh_ = std::make_unique<GpuMesh>(object);
-}
+void HatchingRenderer::prepare(const SceneObject& object) { mesh_ = std::make_unique<GpuMesh>(object); }
 
 void HatchingRenderer::build_textures() {
-  // No mipmaps for the 3D texture: they would halve the tone axis too, averaging tones. The
-  // multipass layers are a separate, coarser set (bare paper plus one layer per pass), made
-  // from the same stroke list, so they nest the same way.
-  const HatchTones tones = make_hatch_tones(tone_layers_);
-  volume_ = std::make_unique<Texture>(Texture::stack_from_images(tones.layers, GL_TEXTURE_3D, {.repeat = true, .mipmaps = false, .linear = true}));
-  const HatchTones densities = make_hatch_tones(passes_wanted_ + 1);
-  layers_ = std::make_unique<Texture>(Texture::stack_from_images(densities.layers, GL_TEXTURE_2D_ARRAY, {.repeat = true, .mipmaps = true, .linear = true}));
+  // No mipmaps for the 3D texture and the thresholds: they would average tones. The multipass
+  // layers are a separate, coarser set (bare paper plus one layer per pass), made from the same
+  // stroke list, so they nest the same way.
+  if (variant_ == "threshold") {
+    tones_ = std::make_unique<Texture>(
+        Texture::from_image(tone_thresholds(make_hatch_tones(kThresholdLayers)), {.repeat = true, .mipmaps = false, .linear = true}));
+  } else if (variant_ == "3d-texture") {
+    tones_ = std::make_unique<Texture>(
+        Texture::stack_from_images(make_hatch_tones(tone_layers_).layers, GL_TEXTURE_3D, {.repeat = true, .mipmaps = false, .linear = true}));
+  } else {
+    tones_ = std::make_unique<Texture>(Texture::stack_from_images(make_hatch_tones(passes_wanted_ + 1).layers, GL_TEXTURE_2D_ARRAY,
+                                                                  {.repeat = true, .mipmaps = true, .linear = true}));
+  }
   // Tone by N.L: paper above `lightness`, darkening to full tone facing away from the light.
   std::vector<glm::u8vec4> lookup(256);
   for (size_t i = 0; i < lookup.size(); ++i) {
@@ -65,42 +75,73 @@ void HatchingRenderer::build_textures() {
   tone_lookup_ = std::make_unique<Texture>(Texture::lookup_1d(lookup, true));
 }
 
+const Program& HatchingRenderer::program(const std::string& under_define) {
+  const std::string key = variant_ + "/" + under_define;
+  auto it = programs_.find(key);
+  if (it != programs_.end()) return it->second;
+  std::vector<std::string> defines;
+  if (variant_ == "threshold") defines.push_back("THRESHOLD 1");
+  if (variant_ == "3d-texture") defines.push_back("VOLUME 1");
+  if (!under_define.empty()) defines.push_back(under_define + " 1");
+  return programs_.emplace(key, Program::from_files({"hatching/hatch.vert", "hatching/hatch.frag"}, defines)).first->second;
+}
+
 void HatchingRenderer::draw(const FrameState& frame) {
   if (!mesh_) throw Error("HatchingRenderer::draw(): prepare() was not called");
-  if (!volume_) build_textures();
+  if (!tones_) build_textures();
   const glm::mat4 mvp = frame.model_view_projection();
-  hlr_.lay_depth(*mesh_, mvp);
-  HiddenLineRemoval::begin_lines(/*translucent=*/true);  // only the visible surface is hatched
+  const bool multipass = variant_ == "multipass";
+  opaque_ = frame.backdrop && !multipass;
+  const Program& p = program(opaque_ ? frame.backdrop->under_define() : "");
+  if (opaque_) {
+    // The nearest surface wins by depth like any opaque one; its pixels carry the backdrop.
+    // Its depth is laid as hidden-line removal lays it, so outlines drawn over it (hatching +
+    // a sketcher) meet the same surface they would after a separate depth pass.
+    HiddenLineRemoval::begin_surface_depth();
+    glDisable(GL_BLEND);
+  } else {
+    hlr_.lay_depth(*mesh_, mvp);
+    HiddenLineRemoval::begin_lines(/*translucent=*/true);  // only the visible surface is hatched
+  }
   glEnable(GL_CULL_FACE);
   glCullFace(GL_BACK);
   const float c = std::cos(angle_) / scale_px_, s = std::sin(angle_) / scale_px_;
-  const glm::mat2 screen_to_tile(c, s, -s, c);
-  const Program& program = multipass_ ? layer_program_ : volume_program_;
-  program.use();
-  program.set("model_view_projection", mvp);
-  program.set("light_object", frame.light_in_object_space());
-  program.set("screen_to_tile", screen_to_tile);
-  program.set("strength", strength_);
-  program.set("tone_lookup", 1);
-  program.set("tones", 0);
+  p.use();
+  p.set("model_view_projection", mvp);
+  p.set("light_object", frame.light_in_object_space());
+  p.set("screen_to_tile", glm::mat2(c, s, -s, c));
+  p.set("strength", strength_);
+  p.set("tone_lookup", 1);
+  p.set("tones", 0);
+  tones_->bind(0);
   tone_lookup_->bind(1);
+  if (opaque_) frame.backdrop->set_under(p, 2);
   mesh_->bind();
-  if (multipass_) {
-    layers_->bind(0);
-    program.set("layer_count", float(passes_wanted_ + 1));
+  if (multipass) {
+    p.set("layer_count", float(passes_wanted_ + 1));
     for (int layer = 1; layer <= passes_wanted_; ++layer) {  // layer 0 is bare paper
-      program.set("layer", float(layer));
+      p.set("layer", float(layer));
       mesh_->draw_all();
     }
     passes_ = size_t(passes_wanted_);
   } else {
-    volume_->bind(0);
+    if (variant_ == "threshold") {
+      p.set("softness", 1.0f / float(tone_layers_));
+      p.set("ink_colour", kGraphite);
+    }
     mesh_->draw_all();
     passes_ = 1;
   }
-  HiddenLineRemoval::end_lines();
+  if (opaque_) {
+    HiddenLineRemoval::end_surface_depth();
+  } else {
+    HiddenLineRemoval::end_lines();
+  }
 }
 
-std::map<std::string, double> HatchingRenderer::counters() const { return {{"passes", double(passes_)}}; }
+std::map<std::string, double> HatchingRenderer::counters() const {
+  // Geometry passes: the depth pass counts when the ink is blended.
+  return {{"passes", double(passes_)}, {"geometry_passes", double(passes_ + (opaque_ ? 0 : 1))}};
+}
 
 }  // namespace inkwire

@@ -2,11 +2,18 @@
 // "hatching" (SPEC S7): hatch strokes in screen space (rotated and scaled), made visible by a
 // shade lookup indexed by N.L and used as alpha per pixel (per-vertex alpha pops on coarse
 // meshes). Tones come from layers where lighter stroke sets are subsets of darker ones.
-// Variant "3d-texture" (default): one pass sampling a 3D texture whose depth axis is tone, so
-// tones blend smoothly. Variant "multipass": one pass per tone layer, each fading in as the
-// tone passes it. Drawn over the backdrop with the object's depth laid first (G7), so only the
-// visible surface is hatched and the paper shows through between strokes.
+// Variants:
+//   threshold   (default) one pass reading one 2D texture that holds, per texel, the tone at
+//               which its stroke appears (the nested layers folded into one image)
+//   3d-texture  one pass sampling a 3D texture whose depth axis is tone
+//   multipass   one pass per tone layer, each fading in as the tone passes it
+// When the frame says what its backdrop is, the one-pass variants draw the surface opaque with
+// the backdrop under the ink, depth-tested like any surface; otherwise (and for multipass) the
+// object's depth is laid first (G7) and the ink blended over the framebuffer, so only the
+// visible surface is hatched and the paper shows through between strokes either way.
+#include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "client/render/gpu_mesh.hpp"
@@ -17,7 +24,6 @@ namespace inkwire {
 
 class HatchingRenderer final : public Renderer {
  public:
-  HatchingRenderer();
   static std::vector<ParamSpec> params();
   void configure(const StyleParams& params) override;
   void prepare(const SceneObject& object) override;
@@ -26,17 +32,18 @@ class HatchingRenderer final : public Renderer {
 
  private:
   void build_textures();
+  const gl::Program& program(const std::string& under_define);
 
-  gl::Program volume_program_, layer_program_;
+  std::map<std::string, gl::Program> programs_;  // by variant and backdrop define
   HiddenLineRemoval hlr_;
-  const SceneObject* object_ = nullptr;
   std::unique_ptr<GpuMesh> mesh_;
-  std::unique_ptr<gl::Texture> volume_, layers_, tone_lookup_;
+  std::unique_ptr<gl::Texture> tones_, tone_lookup_;
 
-  bool multipass_ = false;
+  std::string variant_ = "threshold";
   int tone_layers_ = 16, passes_wanted_ = 4;
   float angle_ = 0.0f, scale_px_ = 96.0f, lightness_ = 0.85f, strength_ = 0.9f;
   size_t passes_ = 0;
+  bool opaque_ = false;
 };
 
 }  // namespace inkwire

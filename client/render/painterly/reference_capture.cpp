@@ -59,7 +59,9 @@ const Image& ReferenceCapture::capture(const FrameState& frame) {
   glDepthMask(GL_TRUE);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-  reference_->draw(frame);
+  FrameState cleared = frame;
+  cleared.backdrop = nullptr;  // the capture is cleared to transparent, not to the frame's backdrop
+  reference_->draw(cleared);
   glDisable(GL_SCISSOR_TEST);
   image_ = canvas_->read(rect_.x, rect_.y, rect_.width, rect_.height);
   return image_;

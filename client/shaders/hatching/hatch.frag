@@ -1,28 +1,54 @@
 #version 450 core
 // Screen-space hatching: strokes fixed to the screen tile, rotated and scaled; the tone of the
-// surface (shade lookup by N.L) picks how many strokes show.
+// surface (shade lookup by N.L) picks how many strokes show. One of VOLUME, THRESHOLD or
+// neither (one layer per pass) is defined; with UNDER_PAPER or UNDER_COLOUR the surface is
+// drawn opaque, the backdrop under its ink, instead of as ink blended over the framebuffer.
 in float n_dot_l;
 uniform sampler1D tone_lookup;  // N.L in -1..1 mapped to 0..1 -> tone 0 (paper) .. 1 (darkest)
 uniform mat2 screen_to_tile;    // rotation and repeat scale
 uniform float strength;
-#ifdef VOLUME
+#if defined(VOLUME)
 uniform sampler3D tones;        // depth axis is tone
+#elif defined(THRESHOLD)
+uniform sampler2D tones;        // a texel's ink as two steps: tone, strength, tone, strength
+uniform float softness;         // range of tone over which a stroke fades in
+uniform vec3 ink_colour;
 #else
 uniform sampler2DArray tones;   // one layer per pass
 uniform float layer;            // this pass's layer
 uniform float layer_count;
 #endif
+#if defined(UNDER_PAPER)
+uniform sampler2D paper;        // as the backdrop draws it
+uniform float paper_size;
+#elif defined(UNDER_COLOUR)
+uniform vec4 under_colour;
+#endif
 out vec4 colour;
 void main() {
   vec2 tile = screen_to_tile * gl_FragCoord.xy;
   float tone = texture(tone_lookup, n_dot_l * 0.5 + 0.5).r;
-#ifdef VOLUME
+#if defined(VOLUME)
   vec4 ink = texture(tones, vec3(tile, tone));
-  colour = vec4(ink.rgb, ink.a * strength);
+#elif defined(THRESHOLD)
+  vec4 steps = texture(tones, tile);
+  vec2 reached = clamp((vec2(tone) - steps.rb) / softness + 0.5, 0.0, 1.0);
+  vec4 ink = vec4(ink_colour, steps.g * reached.x + (steps.a - steps.g) * reached.y);
 #else
   // This layer fades in as the tone passes it; the layers nest, so passes add up.
-  float visible = clamp(tone * (layer_count - 1.0) - layer + 1.0, 0.0, 1.0);
   vec4 ink = texture(tones, vec3(tile, layer));
-  colour = vec4(ink.rgb, ink.a * visible * strength);
+  ink.a *= clamp(tone * (layer_count - 1.0) - layer + 1.0, 0.0, 1.0);
+#endif
+  float a = ink.a * strength;
+#if defined(UNDER_PAPER) || defined(UNDER_COLOUR)
+#if defined(UNDER_PAPER)
+  vec4 under = vec4(texture(paper, gl_FragCoord.xy / paper_size).rgb, 1.0);
+#else
+  vec4 under = under_colour;
+#endif
+  // What blending the ink over the backdrop would give, written opaque.
+  colour = vec4(mix(under.rgb, ink.rgb, a), a + under.a * (1.0 - a));
+#else
+  colour = vec4(ink.rgb, a);
 #endif
 }
