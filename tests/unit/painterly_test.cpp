@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <tuple>
 
@@ -28,6 +29,15 @@ Matte disc_matte(int size, float radius, glm::vec2 centre = {0.5f, 0.5f}) {
       const glm::vec2 p((float(x) + 0.5f) / float(size), (float(y) + 0.5f) / float(size));
       inside[size_t(y) * size + x] = glm::length(p - centre) < radius;
     }
+  return Matte(size, size, std::move(inside));
+}
+
+// Vertical bars `bar` pixels wide with gaps as wide: an object that is mostly outline, like a
+// herd's legs.
+Matte bars_matte(int size, int bar) {
+  std::vector<uint8_t> inside(size_t(size) * size);
+  for (int y = size / 8; y < size - size / 8; ++y)
+    for (int x = size / 8; x < size - size / 8; ++x) inside[size_t(y) * size + x] = (x / bar) % 2 == 0;
   return Matte(size, size, std::move(inside));
 }
 
@@ -107,17 +117,37 @@ TEST(BrushFieldTest, RandomisedTimeToLiveSpreadsRespawnsAndAFixedOneSpikes) {
   EXPECT_GE(fixed, 0.25) << "a fixed time-to-live should respawn a synchronised wave";
 }
 
+// Random brushes leave gaps in clumps a brush wide, so the painted share varies by a percent
+// from one scatter to the next around what the size aims at (measured 97.7-98.6% aiming at
+// 98%). Aiming at 99%, every scatter must reach 98%, and on average the aim.
 TEST(BrushFieldTest, AutomaticSizePaintsNinetyEightPercentOfTheObject) {
-  for (const float aspect : {1.0f, 3.0f}) {
-    const Matte matte = disc_matte(240, 0.32f);
-    BrushField field(2000, MotionSettings{}, 5);
-    for (int frame = 0; frame < 100; ++frame) field.step(matte);
-    for (Brush& b : field.brushes()) b.angle = float(&b - field.brushes().data()) * 0.7f;  // any slant
-    const float overlap = overlap_for_coverage(0.98f);
-    const float side = automatic_brush_side(matte, field.last_step().visible, overlap);
-    EXPECT_NEAR(side * side * float(field.last_step().visible) / overlap, float(matte.object_pixels()), 1.0f)
-        << "A_B = P_A * A / visible brushes, times the overlap";
-    EXPECT_GE(painted_fraction(field, matte, side, aspect), 0.98) << "aspect " << aspect;
+  struct Case {
+    const char* name;
+    Matte matte;
+    float most_overlap;  // over the interior's: the outline's share
+  };
+  const Case cases[] = {{"disc", disc_matte(240, 0.32f), 1.1f}, {"bars", bars_matte(240, 12), 1.6f}};
+  for (const Case& c : cases) {
+    double sum = 0.0;
+    int runs = 0;
+    for (const float aspect : {1.0f, 3.0f})
+      for (const uint64_t seed : {5u, 6u, 7u}) {
+        BrushField field(2000, MotionSettings{}, seed);
+        for (int frame = 0; frame < 100; ++frame) field.step(c.matte);
+        for (Brush& b : field.brushes()) b.angle = float(&b - field.brushes().data()) * 0.7f;  // any slant
+        const float side = automatic_brush_side(c.matte, field.last_step().visible, 0.99f);
+        // A_B = P_A * A / visible brushes, times the interior's overlap and a little more for
+        // the outline.
+        const float overlap = side * side * float(field.last_step().visible) / float(c.matte.object_pixels());
+        EXPECT_GT(overlap, overlap_for_coverage(0.99f)) << c.name;
+        EXPECT_LT(overlap, c.most_overlap * overlap_for_coverage(0.99f)) << c.name;
+        const double painted = painted_fraction(field, c.matte, side, aspect);
+        EXPECT_GE(painted, 0.98) << c.name << ", aspect " << aspect << ", seed " << seed;
+        sum += painted;
+        ++runs;
+      }
+    std::printf("%s: %.4f painted on average\n", c.name, sum / runs);
+    EXPECT_GE(sum / runs, 0.985) << c.name;
   }
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "common/error.hpp"
@@ -12,7 +13,15 @@ namespace inkwire {
 Matte::Matte(int width, int height, std::vector<uint8_t> inside) : width_(width), height_(height), inside_(std::move(inside)) {
   if (width <= 0 || height <= 0 || inside_.size() != size_t(width) * size_t(height))
     throw Error("Matte: " + std::to_string(inside_.size()) + " values for " + std::to_string(width) + "x" + std::to_string(height) + " pixels");
-  object_pixels_ = size_t(std::count_if(inside_.begin(), inside_.end(), [](uint8_t v) { return v != 0; }));
+  for (size_t i = 0; i < inside_.size(); ++i)
+    if (inside_[i]) object_indices_.push_back(uint32_t(i));
+  object_pixels_ = object_indices_.size();
+  for (const uint32_t i : object_indices_) {
+    const int x = int(i % uint32_t(width)), y = int(i / uint32_t(width));
+    const bool edge = x == 0 || y == 0 || x == width - 1 || y == height - 1 || !covers_pixel(x - 1, y) || !covers_pixel(x + 1, y) ||
+                      !covers_pixel(x, y - 1) || !covers_pixel(x, y + 1);
+    outline_pixels_ += edge;
+  }
   object_fraction_ = double(object_pixels_) / double(inside_.size());
 }
 
@@ -25,6 +34,13 @@ Matte Matte::from_alpha(const Image& image) {
 bool Matte::covers(glm::vec2 unit) const {
   if (!(unit.x >= 0.0f && unit.x < 1.0f && unit.y >= 0.0f && unit.y < 1.0f)) return false;  // NaN too
   return covers_pixel(std::min(int(unit.x * float(width_)), width_ - 1), std::min(int(unit.y * float(height_)), height_ - 1));
+}
+
+glm::vec2 Matte::random_object_point(Random& random) const {
+  if (object_indices_.empty()) return {random.uniform(0, 1), random.uniform(0, 1)};
+  const uint32_t i = object_indices_[size_t(random.next() % object_indices_.size())];
+  const glm::vec2 pixel(float(i % uint32_t(width_)) + random.uniform(0, 1), float(i / uint32_t(width_)) + random.uniform(0, 1));
+  return glm::min(pixel / glm::vec2(width_, height_), glm::vec2(std::nextafter(1.0f, 0.0f)));
 }
 
 BrushField::BrushField(size_t count, const MotionSettings& motion, uint64_t seed, int colour_frames)
@@ -55,10 +71,8 @@ int BrushField::draw_ttl() {
 }
 
 void BrushField::respawn(Brush& b, size_t index, const Matte& matte) {
-  // A random place; a few tries favour object pixels without scanning the matte.
-  glm::vec2 p{random_.uniform(0, 1), random_.uniform(0, 1)};
-  for (int attempt = 0; attempt < 4 && !matte.covers(p); ++attempt) p = {random_.uniform(0, 1), random_.uniform(0, 1)};
-  b.position = p;
+  // A random place on the object: a respawned brush paints at once.
+  b.position = matte.random_object_point(random_);
   b.velocity = {random_.uniform(-1, 1) * motion_.max_speed * 0.5f, random_.uniform(-1, 1) * motion_.max_speed * 0.5f};
   b.acceleration = {0, 0};
   b.ttl = 0;
@@ -127,11 +141,24 @@ void BrushField::sample_colours(const Image& reference) {
   }
 }
 
-float automatic_brush_side(const Matte& matte, size_t visible, float overlap) {
+float automatic_brush_side(const Matte& matte, size_t visible, float coverage) {
   const double object_pixels = double(matte.object_pixels());
   if (object_pixels == 0) return 1.0f;
-  const double area = object_pixels / double(std::max<size_t>(visible, 1)) * double(overlap);
-  return float(std::sqrt(area));
+  const double per_brush = object_pixels / double(std::max<size_t>(visible, 1));  // A_B before overlap
+  const double bare_wanted = 1.0 - std::clamp(double(coverage), 0.01, 0.9999);
+  auto bare = [&](double side) {
+    const double density = (3.14159265 / 4.0) * side * side / per_brush;
+    const double band = std::min(1.0, double(matte.outline_pixels()) * side / 2.0 / object_pixels);
+    return (1.0 - band) * std::exp(-density) + band * std::exp(-0.75 * density);
+  };
+  // From the interior's size up: bare area falls as the side grows.
+  double lo = std::sqrt(per_brush * double(overlap_for_coverage(coverage))), hi = lo;
+  while (bare(hi) > bare_wanted && hi < 64.0 * lo) hi *= 1.25;
+  for (int i = 0; i < 30; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (bare(mid) > bare_wanted ? lo : hi) = mid;
+  }
+  return float(hi);
 }
 
 float overlap_for_coverage(float coverage) {

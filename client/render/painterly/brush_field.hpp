@@ -32,11 +32,17 @@ class Matte {
   bool covers_pixel(int x, int y) const { return inside_[size_t(y) * size_t(width_) + size_t(x)] != 0; }
   double object_fraction() const { return object_fraction_; }  // P_A
   size_t object_pixels() const { return object_pixels_; }
+  // Object pixels with a 4-neighbour outside the object (or outside the rectangle).
+  size_t outline_pixels() const { return outline_pixels_; }
+  // A uniformly random point of the unit square inside an object pixel (anywhere in the square
+  // when there is none): where a lost brush starts again.
+  glm::vec2 random_object_point(Random& random) const;
 
  private:
   int width_ = 0, height_ = 0;
   std::vector<uint8_t> inside_;
-  size_t object_pixels_ = 0;
+  std::vector<uint32_t> object_indices_;  // every object pixel, row by row
+  size_t object_pixels_ = 0, outline_pixels_ = 0;
   double object_fraction_ = 0;
 };
 
@@ -96,14 +102,20 @@ class BrushField {
 };
 
 // Automatic brush size (SPEC P6): with P_A the object's fraction of the capture area A (pixels)
-// and `visible` brushes on it, each brush covers A_B = P_A * A / visible pixels, times `overlap`
-// so neighbours overlap and no canvas shows through. Returns the side of a square of that area.
-float automatic_brush_side(const Matte& matte, size_t visible, float overlap);
+// and `visible` brushes on it, each brush covers A_B = P_A * A / visible pixels, times an
+// overlap so that neighbours overlap and `coverage` of the object is painted. Returns the side
+// of a square of that area.
+//
+// Brushes fall like a Poisson process: a pixel stays bare with probability exp(-density), so
+// the painted area must be ln(1 / (1 - coverage)) times the object's; a brush paints about the
+// ellipse inscribed in its quad (pi/4 of it). 0.98 needs about 5 (overlap_for_coverage). But a
+// pixel near the object's outline has brush centres on one side only: within half a brush of
+// the outline it sees about 3/4 of the density. The side is grown until the interior and that
+// band together leave `1 - coverage` bare, so objects with long outlines (legs, horns) stay
+// covered too.
+float automatic_brush_side(const Matte& matte, size_t visible, float coverage);
 
-// The overlap that makes brushes at random places cover `coverage` of the object. Brushes fall
-// like a Poisson process: a pixel stays bare with probability exp(-density), so the painted
-// area must be ln(1 / (1 - coverage)) times the object's. A brush paints about the ellipse
-// inscribed in its quad (pi/4 of it), hence the division. 0.98 needs about 5.
+// The interior's overlap alone: ln(1 / (1 - coverage)) / (pi / 4).
 float overlap_for_coverage(float coverage);
 
 }  // namespace inkwire

@@ -150,7 +150,7 @@ void BrushPainter::paint(const Image& reference, PixelRect rect, bool underpaint
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   if (underpaint && style_.underpaint > 0.0f) draw_underpaint(reference, rect);
 
-  side_ = automatic_brush_side(matte, field_->last_step().visible, overlap_for_coverage(style_.coverage));
+  side_ = automatic_brush_side(matte, field_->last_step().visible, style_.coverage);
   const glm::vec2 origin(rect.x, rect.y), size(rect.width, rect.height);
   std::vector<Brush>& brushes = field_->brushes();
   instances_.clear();
