@@ -148,7 +148,26 @@ void BrushPainter::paint(const Image& reference, PixelRect rect, bool underpaint
   glEnable(GL_BLEND);
   // Alpha accumulates as "covered" so a transparent backdrop ends up opaque under paint.
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  if (underpaint && style_.underpaint > 0.0f) draw_underpaint(reference, rect);
+  // The matte goes into the stencil once, as the base coat is laid (or alone): every brush
+  // fragment is then kept on the object by the stencil test instead of reading the matte.
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(rect.x, rect.y, rect.width, rect.height);
+  glStencilMask(0xff);
+  glClearStencil(0);
+  glClear(GL_STENCIL_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_ALWAYS, 1, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  if (underpaint && style_.underpaint > 0.0f) {
+    draw_underpaint(reference, rect);
+  } else {
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    rect_image_.draw(matte_, matte_, rect, /*premultiplied=*/false, 1.0f);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  }
+  glStencilFunc(GL_EQUAL, 1, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
 
   side_ = automatic_brush_side(matte, field_->last_step().visible, style_.coverage);
   const glm::vec2 origin(rect.x, rect.y), size(rect.width, rect.height);
@@ -182,15 +201,13 @@ void BrushPainter::paint(const Image& reference, PixelRect rect, bool underpaint
     instance_buffer_.upload(instances_.size() * sizeof(Instance), instances_.data());
     brush_program_.use();
     brush_program_.set("viewport", glm::vec4(viewport[0], viewport[1], viewport[2], viewport[3]));
-    brush_program_.set("rect", glm::vec4(rect.x, rect.y, rect.width, rect.height));
     brush_program_.set("shapes", 0);
-    brush_program_.set("matte", 1);
     shapes_.bind(0);
-    matte_.bind(1);
     brush_vao_.bind();
     glDrawArraysInstancedBaseInstance(GL_TRIANGLE_STRIP, 0, 4, GLsizei(instances_.size()), 0);
   }
   glBindVertexArray(0);
+  glDisable(GL_STENCIL_TEST);
   glDisable(GL_BLEND);
 }
 

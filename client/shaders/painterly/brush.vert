@@ -6,9 +6,7 @@ layout(location = 2) in float angle;     // radians, counter-clockwise
 layout(location = 3) in float layer;     // shape in the texture array
 layout(location = 4) in vec4 paint;      // colour and opacity
 uniform vec4 viewport;  // x, y, width, height of the target
-uniform vec4 rect;      // the capture rectangle the matte covers: x, y, width, height
 out vec2 shape_uv;
-out vec2 matte_uv;
 flat out float shape_layer;
 flat out vec4 brush_paint;
 void main() {
@@ -18,8 +16,6 @@ void main() {
   vec2 pixel = centre + vec2(c * offset.x - s * offset.y, s * offset.x + c * offset.y);
   gl_Position = vec4((pixel - viewport.xy) / viewport.zw * 2.0 - 1.0, 0.0, 1.0);
   shape_uv = corner * 0.5 + 0.5;
-  // The matte image is stored top row first.
-  matte_uv = vec2((pixel.x - rect.x) / rect.z, 1.0 - (pixel.y - rect.y) / rect.w);
   shape_layer = layer;
   brush_paint = paint;
 }

@@ -8,7 +8,10 @@ uniform bool premultiplied;
 uniform float opacity;
 out vec4 colour;
 void main() {
+  float inside = texture(matte, image_uv).a;
+  // Outside the object nothing is drawn, so the stencil it may write marks the object exactly.
+  if (inside < 0.5) discard;
   vec4 texel = texture(image, image_uv);
   vec3 rgb = premultiplied ? texel.rgb / max(texel.a, 1.0 / 255.0) : texel.rgb;
-  colour = vec4(rgb, opacity * texture(matte, image_uv).a);
+  colour = vec4(rgb, opacity * inside);
 }
