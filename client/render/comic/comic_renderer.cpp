@@ -32,10 +32,20 @@ std::vector<float> parse_floats(const std::string& text) {
 
 }  // namespace
 
+namespace {
+
+Program fill_program(bool extended, bool textured) {
+  std::vector<std::string> defines;
+  if (extended) defines.push_back("EXTENDED 1");
+  if (textured) defines.push_back("TEXTURED 1");
+  return Program::from_files({"comic/comic.vert", "comic/comic.frag"}, defines);
+}
+
+}  // namespace
+
 ComicRenderer::ComicRenderer(bool extended)
     : extended_(extended),
-      fill_(Program::from_files({"comic/comic.vert", "comic/comic.frag"}, extended ? std::vector<std::string>{"EXTENDED 1"}
-                                                                                    : std::vector<std::string>{})),
+      fill_{fill_program(extended, false), fill_program(extended, true)},
       backface_outline_(Program::from_files({"comic/outline.vert", "comic/outline.frag"})),
       edge_outline_(Program::from_files({"comic/edges.vert", "comic/edges.frag"})) {}
 
@@ -169,17 +179,19 @@ void ComicRenderer::draw_fill(const FrameState& frame) {
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.0f, 2.0f);
   glDepthFunc(GL_LEQUAL);
-  fill_.use();
-  fill_.set("model_view_projection", frame.model_view_projection());
   const glm::vec3 light = frame.light_in_object_space();
-  fill_.set("light_object", light);
-  fill_.set("view_object", view_.view);
-  fill_.set("eye_object", view_.eye);
-  fill_.set("exact_view", int(orientation_ == Orientation::TriangleExact));
-  fill_.set("light_dot_view", glm::dot(light, view_.view));
-  fill_.set("shadow_saturation", shadow_saturation_);
-  fill_.set("shade_map", 1);
-  fill_.set("base_texture", 0);
+  for (const Program& fill : fill_) {
+    fill.use();
+    fill.set("model_view_projection", frame.model_view_projection());
+    fill.set("light_object", light);
+    fill.set("view_object", view_.view);
+    fill.set("eye_object", view_.eye);
+    fill.set("exact_view", int(orientation_ == Orientation::TriangleExact));
+    fill.set("light_dot_view", glm::dot(light, view_.view));
+    fill.set("shadow_saturation", shadow_saturation_);
+    fill.set("shade_map", 1);
+    fill.set("base_texture", 0);
+  }
   shade_texture_->bind(1);
 
   const auto& batches = mesh_->batches();
@@ -188,7 +200,7 @@ void ComicRenderer::draw_fill(const FrameState& frame) {
     for (size_t b = 0; b < batches.size(); ++b) {
       const Range& r = picked_ranges_[b];
       if (r.triangles == 0) continue;
-      fill_.set("textured", int(batches[b].textured));
+      fill_[batches[b].textured].use();
       mesh_->bind_texture(batches[b], 0);
       glDrawElements(GL_TRIANGLES, GLsizei(r.triangles * 3), GL_UNSIGNED_INT,
                      reinterpret_cast<const void*>(size_t(r.first_triangle) * 3 * sizeof(uint32_t)));
@@ -196,7 +208,7 @@ void ComicRenderer::draw_fill(const FrameState& frame) {
   } else {
     mesh_->bind();
     for (const GpuBatch& batch : batches) {
-      fill_.set("textured", int(batch.textured));
+      fill_[batch.textured].use();
       mesh_->draw(batch, 0);
     }
   }

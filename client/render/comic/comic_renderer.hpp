@@ -6,6 +6,7 @@
 // Outlines: "edges" (default) draws the silhouette (exact per-face test) and visible creases
 // as wide lines, creases at half width; "backfaces" is the study's method, every back face
 // as a wide line behind the fill, which costs several times more on a software rasteriser.
+#include <array>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -36,7 +37,10 @@ class ComicRenderer final : public Renderer {
   void upload_shade_map();
 
   bool extended_;
-  gl::Program fill_, backface_outline_, edge_outline_;
+  // Fill programs without and with the base texture: a uniform branch around the texture read
+  // still costs every fragment the read under llvmpipe, so untextured batches get their own.
+  std::array<gl::Program, 2> fill_;
+  gl::Program backface_outline_, edge_outline_;
   const SceneObject* object_ = nullptr;
   std::unique_ptr<GpuMesh> mesh_;
   gl::Buffer dynamic_elements_, edge_vertices_;

@@ -1,5 +1,6 @@
 #version 450 core
-// The triangle's flat base colour (C7), times the base texture (C9), shaded by the map.
+// The triangle's flat base colour (C7), times the base texture (C9) where TEXTURED, shaded by
+// the map.
 in vec2 shade_coord;
 in vec2 texcoord;
 flat in vec4 triangle_colour;
@@ -9,8 +10,9 @@ uniform sampler2D shade_map;
 #else
 uniform sampler1D shade_map;
 #endif
+#ifdef TEXTURED
 uniform sampler2D base_texture;
-uniform bool textured;
+#endif
 uniform float shadow_saturation;  // studied cartoons raise saturation in shadow by ~12%
 
 out vec4 colour;
@@ -23,7 +25,9 @@ vec3 apply_shade(vec3 base, vec3 texel) {
 
 void main() {
   vec3 base = triangle_colour.rgb;
-  if (textured) base *= texture(base_texture, texcoord).rgb;
+#ifdef TEXTURED
+  base *= texture(base_texture, texcoord).rgb;
+#endif
 #ifdef EXTENDED
   // Shade map images put R.V = 0 on their bottom row; textures start at the image's top row.
   vec3 texel = texture(shade_map, vec2(shade_coord.x, 1.0 - shade_coord.y)).rgb;
