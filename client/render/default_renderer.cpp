@@ -6,7 +6,9 @@ namespace inkwire {
 
 using namespace gl;
 
-DefaultRenderer::DefaultRenderer() : program_(Program::from_files({"default/mesh.vert", "default/mesh.frag"})) {}
+DefaultRenderer::DefaultRenderer()
+    : programs_{Program::from_files({"default/mesh.vert", "default/mesh.frag"}),
+                Program::from_files({"default/mesh.vert", "default/mesh.frag"}, {"TEXTURED 1"})} {}
 
 std::vector<ParamSpec> DefaultRenderer::params() {
   return {float_param("ambient", "0.2", 0, 1, "light reaching faces turned away from the light")};
@@ -24,14 +26,16 @@ void DefaultRenderer::draw(const FrameState& frame) {
   glEnable(GL_CULL_FACE);
   glCullFace(GL_BACK);
   glDisable(GL_BLEND);
-  program_.use();
-  program_.set("model_view_projection", frame.model_view_projection());
-  program_.set("light_object", frame.light_in_object_space());
-  program_.set("ambient", ambient_);
-  program_.set("base_texture", 0);
+  for (const Program& program : programs_) {
+    program.use();
+    program.set("model_view_projection", frame.model_view_projection());
+    program.set("light_object", frame.light_in_object_space());
+    program.set("ambient", ambient_);
+    program.set("base_texture", 0);  // absent from the untextured program: ignored there
+  }
   mesh_->bind();
   for (const GpuBatch& batch : mesh_->batches()) {
-    program_.set("textured", int(batch.textured));
+    programs_[batch.textured].use();
     mesh_->draw(batch, 0);
   }
 }

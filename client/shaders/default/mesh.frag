@@ -1,10 +1,16 @@
 #version 450 core
+// Smooth shading, times the base texture where TEXTURED.
 in vec4 shaded;
 in vec2 texcoord;
+#ifdef TEXTURED
 uniform sampler2D base_texture;
-uniform bool textured;
+#endif
 out vec4 colour;
 void main() {
-  colour = textured ? shaded * texture(base_texture, texcoord) : shaded;
+#ifdef TEXTURED
+  colour = shaded * texture(base_texture, texcoord);
+#else
+  colour = shaded;
+#endif
   colour.a = 1.0;
 }
