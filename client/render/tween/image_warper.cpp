@@ -124,12 +124,9 @@ void ImageWarper::render(int mesh, const glm::vec3& position_weights, std::span<
 
 void ImageWarper::draw_over(int mesh, const glm::vec3& position_weights, std::span<const WarpSource> sources,
                             const glm::vec4& rect) const {
-  glm::vec4 viewport;
-  {
-    glm::ivec4 v;
-    glGetIntegerv(GL_VIEWPORT, &v.x);
-    viewport = glm::vec4(v);
-  }
+  glm::ivec4 bound;
+  glGetIntegerv(GL_VIEWPORT, &bound.x);
+  const glm::vec4 viewport(bound);
   // Image pixel (y down) -> window pixel in rect (y up, the image's top row at the rect's top)
   // -> clip space of the bound viewport.
   const glm::vec4 to_clip(2.0f * rect.z / (float(width_) * viewport.z), -2.0f * rect.w / (float(height_) * viewport.w),

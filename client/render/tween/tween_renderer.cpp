@@ -94,6 +94,7 @@ void TweenRenderer::use_model(TweenModel model) {
 }
 
 void TweenRenderer::upload() {
+  last_view_ = {};  // it points into the textures about to go
   warper_ = std::make_unique<ImageWarper>(model_.data.width, model_.data.height);
   textures_.clear();
   for (const Image& image : model_.images) textures_.push_back(make_sample_texture(image));
