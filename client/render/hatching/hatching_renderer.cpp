@@ -17,6 +17,27 @@ namespace {
 
 constexpr glm::vec3 kGraphite(40.0f / 255.0f, 40.0f / 255.0f, 46.0f / 255.0f);  // as the tone layers are inked
 constexpr int kThresholdLayers = 64;  // layers folded into the threshold image: finer tone steps
+constexpr float kToneGamma = 0.8f;    // tones darken a little faster than N.L falls
+
+// The shade lookup (S7): paper above N.L = `lightness`, darkening to full tone facing away from
+// the light...
+float tone_at(float n_dot_l, float lightness) {
+  return std::pow(std::clamp((lightness - n_dot_l) / (lightness + 1.0f), 0.0f, 1.0f), kToneGamma);
+}
+
+// ...and back: the N.L below which the surface reaches `tone`.
+float n_dot_l_at(float tone, float lightness) { return lightness - (lightness + 1.0f) * std::pow(tone, 1.0f / kToneGamma); }
+
+// The threshold image with its tones turned into N.L through the lookup's inverse, so the
+// shader compares N.L directly and reads no lookup: the same function, folded in once.
+Image in_n_dot_l(Image thresholds, float lightness) {
+  for (size_t i = 0; i < thresholds.pixels.size(); i += 4)
+    for (size_t c : {size_t(0), size_t(2)}) {
+      const float n_dot_l = n_dot_l_at(float(thresholds.pixels[i + c]) / 255.0f, lightness);
+      thresholds.pixels[i + c] = uint8_t(std::clamp((n_dot_l + 1.0f) / 2.0f, 0.0f, 1.0f) * 255.0f + 0.5f);
+    }
+  return thresholds;
+}
 
 }  // namespace
 
@@ -55,8 +76,8 @@ void HatchingRenderer::build_textures() {
   // layers are a separate, coarser set (bare paper plus one layer per pass), made from the same
   // stroke list, so they nest the same way.
   if (variant_ == "threshold") {
-    tones_ = std::make_unique<Texture>(
-        Texture::from_image(tone_thresholds(make_hatch_tones(kThresholdLayers)), {.repeat = true, .mipmaps = false, .linear = true}));
+    tones_ = std::make_unique<Texture>(Texture::from_image(in_n_dot_l(tone_thresholds(make_hatch_tones(kThresholdLayers)), lightness_),
+                                                           {.repeat = true, .mipmaps = false, .linear = true}));
   } else if (variant_ == "3d-texture") {
     tones_ = std::make_unique<Texture>(
         Texture::stack_from_images(make_hatch_tones(tone_layers_).layers, GL_TEXTURE_3D, {.repeat = true, .mipmaps = false, .linear = true}));
@@ -64,12 +85,9 @@ void HatchingRenderer::build_textures() {
     tones_ = std::make_unique<Texture>(Texture::stack_from_images(make_hatch_tones(passes_wanted_ + 1).layers, GL_TEXTURE_2D_ARRAY,
                                                                   {.repeat = true, .mipmaps = true, .linear = true}));
   }
-  // Tone by N.L: paper above `lightness`, darkening to full tone facing away from the light.
   std::vector<glm::u8vec4> lookup(256);
   for (size_t i = 0; i < lookup.size(); ++i) {
-    const float n_dot_l = -1.0f + 2.0f * float(i) / float(lookup.size() - 1);
-    const float tone = std::clamp((lightness_ - n_dot_l) / (lightness_ + 1.0f), 0.0f, 1.0f);
-    const uint8_t v = uint8_t(std::pow(tone, 0.8f) * 255.0f + 0.5f);
+    const uint8_t v = uint8_t(tone_at(-1.0f + 2.0f * float(i) / float(lookup.size() - 1), lightness_) * 255.0f + 0.5f);
     lookup[i] = {v, v, v, 255};
   }
   tone_lookup_ = std::make_unique<Texture>(Texture::lookup_1d(lookup, true));
@@ -126,7 +144,8 @@ void HatchingRenderer::draw(const FrameState& frame) {
     passes_ = size_t(passes_wanted_);
   } else {
     if (variant_ == "threshold") {
-      p.set("softness", 1.0f / float(tone_layers_));
+      // A stroke fades in over 1/tones of the tone range: about that share of N.L's range.
+      p.set("softness", (lightness_ + 1.0f) / float(tone_layers_));
       p.set("ink_colour", kGraphite);
     }
     mesh_->draw_all();

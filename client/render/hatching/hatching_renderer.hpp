@@ -3,8 +3,9 @@
 // shade lookup indexed by N.L and used as alpha per pixel (per-vertex alpha pops on coarse
 // meshes). Tones come from layers where lighter stroke sets are subsets of darker ones.
 // Variants:
-//   threshold   (default) one pass reading one 2D texture that holds, per texel, the tone at
-//               which its stroke appears (the nested layers folded into one image)
+//   threshold   (default) one pass reading one 2D texture that holds, per texel, the N.L
+//               below which its stroke appears (the nested layers folded into one image, and
+//               the shade lookup folded into its thresholds)
 //   3d-texture  one pass sampling a 3D texture whose depth axis is tone
 //   multipass   one pass per tone layer, each fading in as the tone passes it
 // When the frame says what its backdrop is, the one-pass variants draw the surface opaque with

@@ -4,14 +4,16 @@
 // neither (one layer per pass) is defined; with UNDER_PAPER or UNDER_COLOUR the surface is
 // drawn opaque, the backdrop under its ink, instead of as ink blended over the framebuffer.
 in float n_dot_l;
+#if !defined(THRESHOLD)  // the threshold variant has the lookup folded into its image
 uniform sampler1D tone_lookup;  // N.L in -1..1 mapped to 0..1 -> tone 0 (paper) .. 1 (darkest)
+#endif
 uniform mat2 screen_to_tile;    // rotation and repeat scale
 uniform float strength;
 #if defined(VOLUME)
 uniform sampler3D tones;        // depth axis is tone
 #elif defined(THRESHOLD)
-uniform sampler2D tones;        // a texel's ink as two steps: tone, strength, tone, strength
-uniform float softness;         // range of tone over which a stroke fades in
+uniform sampler2D tones;        // a texel's ink as two steps: N.L, strength, N.L, strength
+uniform float softness;         // range of N.L over which a stroke fades in
 uniform vec3 ink_colour;
 #else
 uniform sampler2DArray tones;   // one layer per pass
@@ -27,12 +29,16 @@ uniform vec4 under_colour;
 out vec4 colour;
 void main() {
   vec2 tile = screen_to_tile * gl_FragCoord.xy;
+#if !defined(THRESHOLD)
   float tone = texture(tone_lookup, n_dot_l * 0.5 + 0.5).r;
+#endif
 #if defined(VOLUME)
   vec4 ink = texture(tones, vec3(tile, tone));
 #elif defined(THRESHOLD)
+  // The thresholds were turned from tones into N.L through the shade lookup's inverse when the
+  // image was made: a texel's ink shows where the surface is darker than its N.L.
   vec4 steps = texture(tones, tile);
-  vec2 reached = clamp((vec2(tone) - steps.rb) / softness + 0.5, 0.0, 1.0);
+  vec2 reached = clamp((steps.rb * 2.0 - 1.0 - vec2(n_dot_l)) / softness + 0.5, 0.0, 1.0);
   vec4 ink = vec4(ink_colour, steps.g * reached.x + (steps.a - steps.g) * reached.y);
 #else
   // This layer fades in as the tone passes it; the layers nest, so passes add up.
