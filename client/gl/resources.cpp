@@ -1,5 +1,7 @@
 #include "client/gl/resources.hpp"
 
+#include <algorithm>
+
 #include "common/error.hpp"
 
 namespace inkwire {
@@ -115,6 +117,9 @@ Texture Texture::stack_from_images(const std::vector<Image>& layers, GLenum targ
   glTexParameteri(target, GL_TEXTURE_MAG_FILTER, options.linear ? GL_LINEAR : GL_NEAREST);
   glTexParameteri(target, GL_TEXTURE_MIN_FILTER, options.mipmaps ? GL_LINEAR_MIPMAP_LINEAR : (options.linear ? GL_LINEAR : GL_NEAREST));
   if (options.mipmaps) glGenerateMipmap(target);
+  t.width_ = w;
+  t.height_ = h;
+  t.mipmaps_ = options.mipmaps;
   return t;
 }
 
@@ -127,6 +132,14 @@ Texture Texture::lookup_1d(const std::vector<glm::u8vec4>& texels, bool linear) 
   glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, filter);
   glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, filter);
   return t;
+}
+
+void Texture::sample_level(int level) const {
+  int levels = 1;
+  while (mipmaps_ && (std::max(width_, height_) >> levels) > 0) ++levels;
+  glBindTexture(target_, id());
+  glTexParameteri(target_, GL_TEXTURE_BASE_LEVEL, std::clamp(level, 0, levels - 1));
+  glTexParameteri(target_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
 }
 
 void Texture::bind(int unit) const {

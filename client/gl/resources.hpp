@@ -99,6 +99,11 @@ class Texture : public Handle<delete_texture> {
   // only when the size changes. Mipmaps, if any, are regenerated.
   void update(const Image& image);
   void bind(int unit) const;
+  // From now on reads only mipmap `level` (clamped to the chain), bilinearly: the level that
+  // trilinear filtering would pick, chosen once by the caller for many draws of one size,
+  // without trilinear filtering's cost per pixel. Textures made without mipmaps stay at 0.
+  // Binds the texture to the active unit.
+  void sample_level(int level) const;
   GLenum target() const { return target_; }
   int width() const { return width_; }
   int height() const { return height_; }
