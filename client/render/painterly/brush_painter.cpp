@@ -133,24 +133,7 @@ void BrushPainter::draw_underpaint(const Image& reference, PixelRect rect) {
   rect_image_.draw(coarse_, matte_, rect, /*premultiplied=*/true, style_.underpaint);
 }
 
-void BrushPainter::paint(const Image& reference, PixelRect rect, bool underpaint, int settle) {
-  if (!field_) throw Error("BrushPainter::paint(): no style set");
-  if (reference.empty() || rect.empty()) return;
-  const Matte matte = Matte::from_alpha(reference);
-  for (int i = 0; i < settle; ++i) field_->step(matte);
-  field_->step(matte);
-  field_->sample_colours(reference);
-  matte_.update(reference);
-
-  GLint viewport[4];
-  glGetIntegerv(GL_VIEWPORT, viewport);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_CULL_FACE);
-  glEnable(GL_BLEND);
-  // Alpha accumulates as "covered" so a transparent backdrop ends up opaque under paint.
-  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  // The matte goes into the stencil once, as the base coat is laid (or alone): every brush
-  // fragment is then kept on the object by the stencil test instead of reading the matte.
+void BrushPainter::lay_matte(const Image& reference, PixelRect rect, bool underpaint) {
   glEnable(GL_SCISSOR_TEST);
   glScissor(rect.x, rect.y, rect.width, rect.height);
   glStencilMask(0xff);
@@ -169,6 +152,25 @@ void BrushPainter::paint(const Image& reference, PixelRect rect, bool underpaint
   }
   glStencilFunc(GL_EQUAL, 1, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+}
+
+void BrushPainter::paint(const Image& reference, PixelRect rect, bool underpaint, int settle) {
+  if (!field_) throw Error("BrushPainter::paint(): no style set");
+  if (reference.empty() || rect.empty()) return;
+  const Matte matte = Matte::from_alpha(reference);
+  for (int i = 0; i < settle; ++i) field_->step(matte);
+  field_->step(matte);
+  field_->sample_colours(reference);
+  matte_.update(reference);
+
+  GLint viewport[4];
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glEnable(GL_BLEND);
+  // Alpha accumulates as "covered" so a transparent backdrop ends up opaque under paint.
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  lay_matte(reference, rect, underpaint);
 
   side_ = automatic_brush_side(matte, field_->last_step().visible, style_.coverage);
   const glm::vec2 origin(rect.x, rect.y), size(rect.width, rect.height);

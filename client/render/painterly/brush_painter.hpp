@@ -49,6 +49,10 @@ class BrushPainter {
   void choose_look(size_t index, const Brush& brush);
   float target_angle(size_t index, const Brush& brush, const Image& reference, const StrokeOrientation& orientation) const;
   void draw_underpaint(const Image& reference, PixelRect rect);
+  // Writes the matte into the stencil (1 on the object) as the base coat is laid, or alone
+  // without one, and leaves the stencil test passing only there: brushes then stay on the
+  // object without each fragment reading the matte.
+  void lay_matte(const Image& reference, PixelRect rect, bool underpaint);
 
   PaintStyle style_;
   uint64_t seed_ = 1;
