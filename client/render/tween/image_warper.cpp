@@ -86,9 +86,10 @@ void ImageWarper::blend(int mesh, const glm::vec3& position_weights, std::span<c
     const WarpSource& s = sources[k];
     source[int(k)] = std::clamp(s.position, 0, 2);
     weights[int(k)] = s.weight;
-    const std::string index = "[" + std::to_string(k) + "]";
-    program.set(("samples" + index).c_str(), int(k));
-    program.set(("sample_size" + index).c_str(), glm::vec2(s.image->width(), s.image->height()));
+    static constexpr const char* kSampler[] = {"samples[0]", "samples[1]", "samples[2]"};
+    static constexpr const char* kSize[] = {"sample_size[0]", "sample_size[1]", "sample_size[2]"};
+    program.set(kSampler[k], int(k));
+    program.set(kSize[k], glm::vec2(s.image->width(), s.image->height()));
     s.image->bind(GLuint(k));
   }
   program.set("position_weights", position_weights);
