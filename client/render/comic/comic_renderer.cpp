@@ -30,10 +30,6 @@ std::vector<float> parse_floats(const std::string& text) {
   return values;
 }
 
-}  // namespace
-
-namespace {
-
 Program fill_program(bool extended, bool textured) {
   std::vector<std::string> defines;
   if (extended) defines.push_back("EXTENDED 1");
