@@ -18,9 +18,17 @@ std::vector<Result> run_hatching_suite(Harness& harness) {
     std::vector<uint8_t> front;
     const double front_faces = double(classify_faces(object.object.mesh, object.object.topology, eye, front));
     double default_fps = 0.0;
-    for (const char* variant : {"", "threshold", "3d-texture", "multipass"}) {
-      const bool reference = *variant == '\0';
-      auto renderer = reference ? make_renderer("default") : make_renderer("hatching", {std::string("variant=") + variant});
+    // Rows: the default renderer; each variant; the threshold image turned off the pixel grid,
+    // where it is filtered (unturned, a texel is a pixel and the nearest texel is exact).
+    const std::vector<std::pair<std::string, std::vector<std::string>>> rows = {
+        {"", {}},
+        {"threshold", {"variant=threshold"}},
+        {"threshold,angle=30", {"variant=threshold", "angle=30"}},
+        {"3d-texture", {"variant=3d-texture"}},
+        {"multipass", {"variant=multipass"}}};
+    for (const auto& [variant, settings] : rows) {
+      const bool reference = variant.empty();
+      auto renderer = reference ? make_renderer("default") : make_renderer("hatching", settings);
       renderer->prepare(object.object);
       Result r = harness.time_frames(*renderer, object, frames);
       r.suite = "hatching";

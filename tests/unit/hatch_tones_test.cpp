@@ -25,7 +25,8 @@ TEST(HatchTonesTest, LighterLayersAreSubsetsOfDarkerOnes) {
 
 TEST(HatchTonesTest, BadSizesAreRefused) {
   EXPECT_THROW(make_hatch_tones(1, 64), Error);
-  EXPECT_THROW(make_hatch_tones(8, 100), Error);
+  EXPECT_THROW(make_hatch_tones(8, 8), Error);
+  EXPECT_THROW(make_hatch_tones(8, 2048), Error);
 }
 
 TEST(HatchTonesTest, ThresholdsReproduceEveryLayer) {

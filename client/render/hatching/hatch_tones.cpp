@@ -16,21 +16,22 @@ struct HatchStroke {
   float weight;      // ink opacity
 };
 
-// Draws a soft, slightly tapered line into `img` (alpha = ink, max-combined), wrapping at
-// the edges so the tile stays seamless.
-void draw_stroke(Image& img, const HatchStroke& s) {
+// Draws a soft, slightly tapered line of radius `pen` texels into `img` (alpha = ink,
+// max-combined), wrapping at the edges so the tile stays seamless.
+void draw_stroke(Image& img, const HatchStroke& s, float pen) {
   const int size = img.width;
+  const int reach = int(std::ceil(pen + 0.5f));
   const float dx = std::cos(s.angle), dy = std::sin(s.angle);
   const int steps = int(s.length * 3.0f);
   for (int i = 0; i <= steps; ++i) {
     const float t = float(i) / float(std::max(steps, 1));
     const float taper = std::min(1.0f, std::min(t, 1.0f - t) * 6.0f + 0.3f);
     const float cx = s.x + dx * s.length * t, cy = s.y + dy * s.length * t;
-    for (int oy = -1; oy <= 1; ++oy)
-      for (int ox = -1; ox <= 1; ++ox) {
+    for (int oy = -reach; oy <= reach; ++oy)
+      for (int ox = -reach; ox <= reach; ++ox) {
         const int px = int(std::floor(cx)) + ox, py = int(std::floor(cy)) + oy;
         const float d = std::hypot(float(px) + 0.5f - cx, float(py) + 0.5f - cy);
-        const float a = std::clamp(1.0f - d / 1.1f, 0.0f, 1.0f) * s.weight * taper;
+        const float a = std::clamp(1.0f - d / pen, 0.0f, 1.0f) * s.weight * taper;
         uint8_t* p = img.at(((px % size) + size) % size, ((py % size) + size) % size);
         p[3] = std::max(p[3], uint8_t(a * 255.0f));
       }
@@ -40,13 +41,15 @@ void draw_stroke(Image& img, const HatchStroke& s) {
 }  // namespace
 
 HatchTones make_hatch_tones(int layers, int size, uint32_t seed) {
-  if (layers < 2 || layers > 64 || size < 16 || size > 1024 || (size & (size - 1)))
-    throw Error("hatch tones: 2..64 layers of a power-of-two size 16..1024");
+  if (layers < 2 || layers > 64 || size < 16 || size > 1024) throw Error("hatch tones: 2..64 layers of a size 16..1024");
   // One ordered list of strokes; layer k holds its first n_k. Early strokes run one way,
-  // later ones cross them, as an artist darkens a tone.
+  // later ones cross them, as an artist darkens a tone. The strokes are laid out in the tile,
+  // not in texels: any size draws the same tile, sharper or coarser.
   StrokeRandom random(stroke_seed(seed, 5));
   std::vector<HatchStroke> strokes;
-  const int total = size * size / 20;
+  constexpr int kDesignSize = 128;  // the size the stroke count and pen were chosen at
+  const int total = kDesignSize * kDesignSize / 20;
+  const float pen = 1.1f * float(size) / float(kDesignSize);
   for (int i = 0; i < total; ++i) {
     const bool cross = i >= total / 2;
     const float angle = (cross ? -0.6f : 0.75f) + random.uniform(-0.08f, 0.08f);
@@ -60,7 +63,7 @@ HatchTones make_hatch_tones(int layers, int size, uint32_t seed) {
     const int n = int(std::round(float(total) * tone * tone));
     // Each layer is the one before plus its new strokes (ink combines by max: order is free).
     Image img = k == 0 ? Image(size, size, {40, 40, 46, 0}) : tones.layers.back();  // graphite, no ink yet
-    for (int i = k == 0 ? 0 : tones.strokes_in_layer.back(); i < n; ++i) draw_stroke(img, strokes[size_t(i)]);
+    for (int i = k == 0 ? 0 : tones.strokes_in_layer.back(); i < n; ++i) draw_stroke(img, strokes[size_t(i)], pen);
     tones.layers.push_back(std::move(img));
     tones.strokes_in_layer.push_back(n);
   }

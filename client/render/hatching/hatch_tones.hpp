@@ -13,7 +13,8 @@ struct HatchTones {
   std::vector<int> strokes_in_layer;  // how many strokes each layer holds
 };
 
-// `layers` tones of `size` x `size` texels (size a power of two). Deterministic per seed.
+// `layers` tones of one tile drawn at `size` x `size` texels (16..1024): the same strokes at
+// any size. Deterministic per seed.
 HatchTones make_hatch_tones(int layers = 8, int size = 128, uint32_t seed = 3);
 
 // The nested stack folded into one tileable image, so a tone costs one texture read (after

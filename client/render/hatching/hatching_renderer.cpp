@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/common.hpp>
+#include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
 
 #include "client/render/backdrop.hpp"
@@ -16,7 +18,8 @@ using namespace gl;
 namespace {
 
 constexpr glm::vec3 kGraphite(40.0f / 255.0f, 40.0f / 255.0f, 46.0f / 255.0f);  // as the tone layers are inked
-constexpr int kThresholdLayers = 64;  // layers folded into the threshold image: finer tone steps
+constexpr int kThresholdLayers = 64;     // layers folded into the threshold image: finer tone steps
+constexpr int kMaxThresholdSize = 256;  // larger tiles magnify it (64 layers of it are drawn to fold)
 constexpr float kToneGamma = 0.8f;    // tones darken a little faster than N.L falls
 
 // The shade lookup (S7): paper above N.L = `lightness`, darkening to full tone facing away from
@@ -64,20 +67,32 @@ void HatchingRenderer::configure(const StyleParams& p) {
   tone_layers_ = tones;
   passes_wanted_ = passes;
   lightness_ = lightness;
-  angle_ = glm::radians(p.get_float("angle"));
-  scale_px_ = p.get_float("scale");
+  const float angle = glm::radians(p.get_float("angle")), scale = p.get_float("scale");
+  if (variant_ == "threshold" && (scale != scale_px_ || angle != angle_)) tones_.reset();  // its size and filter follow them
+  angle_ = angle;
+  scale_px_ = scale;
   strength_ = p.get_float("strength");
 }
 
 void HatchingRenderer::prepare(const SceneObject& object) { mesh_ = std::make_unique<GpuMesh>(object); }
+
+int HatchingRenderer::threshold_size() const { return std::clamp(int(std::lround(scale_px_)), 16, kMaxThresholdSize); }
+
+bool HatchingRenderer::pixel_exact() const {
+  const float quarter_turns = angle_ / glm::half_pi<float>();
+  return float(threshold_size()) == scale_px_ && std::abs(quarter_turns - std::round(quarter_turns)) < 1e-5f;
+}
 
 void HatchingRenderer::build_textures() {
   // No mipmaps for the 3D texture and the thresholds: they would average tones. The multipass
   // layers are a separate, coarser set (bare paper plus one layer per pass), made from the same
   // stroke list, so they nest the same way.
   if (variant_ == "threshold") {
-    tones_ = std::make_unique<Texture>(Texture::from_image(in_n_dot_l(tone_thresholds(make_hatch_tones(kThresholdLayers)), lightness_),
-                                                           {.repeat = true, .mipmaps = false, .linear = true}));
+    // Drawn at the tile's size on screen: unturned (or turned by quarter turns), a texel is a
+    // pixel, so the nearest texel is what filtering would give, and costs a quarter of its reads.
+    tones_ = std::make_unique<Texture>(
+        Texture::from_image(in_n_dot_l(tone_thresholds(make_hatch_tones(kThresholdLayers, threshold_size())), lightness_),
+                            {.repeat = true, .mipmaps = false, .linear = !pixel_exact()}));
   } else if (variant_ == "3d-texture") {
     tones_ = std::make_unique<Texture>(
         Texture::stack_from_images(make_hatch_tones(tone_layers_).layers, GL_TEXTURE_3D, {.repeat = true, .mipmaps = false, .linear = true}));
@@ -123,16 +138,21 @@ void HatchingRenderer::draw(const FrameState& frame) {
   }
   glEnable(GL_CULL_FACE);
   glCullFace(GL_BACK);
-  const float c = std::cos(angle_) / scale_px_, s = std::sin(angle_) / scale_px_;
+  glm::vec2 turn(std::cos(angle_), std::sin(angle_));
+  if (pixel_exact()) turn = glm::round(turn);  // quarter turns exactly, or texels drift off pixels
+  const float c = turn.x / scale_px_, s = turn.y / scale_px_;
   p.use();
   p.set("model_view_projection", mvp);
   p.set("light_object", frame.light_in_object_space());
   p.set("screen_to_tile", glm::mat2(c, s, -s, c));
+  p.set("viewport", glm::vec2(frame.viewport));
   p.set("strength", strength_);
-  p.set("tone_lookup", 1);
   p.set("tones", 0);
   tones_->bind(0);
-  tone_lookup_->bind(1);
+  if (variant_ != "threshold") {
+    p.set("tone_lookup", 1);
+    tone_lookup_->bind(1);
+  }
   if (opaque_) frame.backdrop->set_under(p, 2);
   mesh_->bind();
   if (multipass) {
@@ -145,7 +165,8 @@ void HatchingRenderer::draw(const FrameState& frame) {
   } else {
     if (variant_ == "threshold") {
       // A stroke fades in over 1/tones of the tone range: about that share of N.L's range.
-      p.set("softness", (lightness_ + 1.0f) / float(tone_layers_));
+      const float softness = (lightness_ + 1.0f) / float(tone_layers_);
+      p.set("threshold_scale", 2.0f / softness);
       p.set("ink_colour", kGraphite);
     }
     mesh_->draw_all();

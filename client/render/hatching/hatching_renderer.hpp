@@ -33,6 +33,8 @@ class HatchingRenderer final : public Renderer {
 
  private:
   void build_textures();
+  int threshold_size() const;  // texels of the threshold image: the tile's size on screen
+  bool pixel_exact() const;    // a threshold texel is a pixel
   const gl::Program& program(const std::string& under_define);
 
   std::map<std::string, gl::Program> programs_;  // by variant and backdrop define
