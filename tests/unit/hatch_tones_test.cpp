@@ -56,3 +56,13 @@ TEST(HatchTonesTest, ThresholdsReproduceEveryLayer) {
   }
   EXPECT_THROW(tone_thresholds(HatchTones{}), Error);
 }
+
+TEST(HatchTonesTest, AnySizeDrawsTheSameTile) {
+  // The threshold image is drawn at the tile's size on screen, so the tones must not depend on
+  // it: every layer's ink covers about the same share of the tile at 96 and 128 texels.
+  const HatchTones small = make_hatch_tones(8, 96), large = make_hatch_tones(8, 128);
+  for (size_t k = 1; k < small.layers.size(); ++k) {
+    EXPECT_EQ(small.strokes_in_layer[k], large.strokes_in_layer[k]) << "layer " << k;
+    EXPECT_NEAR(ink_coverage(small.layers[k]), ink_coverage(large.layers[k]), 0.03) << "layer " << k;
+  }
+}
