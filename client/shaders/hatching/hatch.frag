@@ -48,16 +48,13 @@ void main() {
   ink.a *= clamp(tone * (layer_count - 1.0) - layer + 1.0, 0.0, 1.0);
 #endif
 #endif
-  float a = ink.a * strength;
-#if defined(UNDER_PAPER) || defined(UNDER_COLOUR)
+  // What blending the ink over the backdrop would give, written opaque: under + (ink - under) * a.
 #if defined(UNDER_PAPER)
   vec4 under = vec4(texture(paper, gl_FragCoord.xy / paper_size).rgb, 1.0);
+  colour = mix(under, vec4(ink.rgb, 1.0), ink.a * strength);
+#elif defined(UNDER_COLOUR)
+  colour = under_colour + ((vec4(ink.rgb, 1.0) - under_colour) * strength) * ink.a;  // the bracket is the same for every pixel
 #else
-  vec4 under = under_colour;
-#endif
-  // What blending the ink over the backdrop would give, written opaque.
-  colour = mix(under, vec4(ink.rgb, 1.0), a);
-#else
-  colour = vec4(ink.rgb, a);
+  colour = vec4(ink.rgb, ink.a * strength);
 #endif
 }
