@@ -142,6 +142,12 @@ void Texture::sample_level(int level) const {
   glTexParameteri(target_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
 }
 
+void Texture::set_filter(bool linear) const {
+  glBindTexture(target_, id());
+  glTexParameteri(target_, GL_TEXTURE_MIN_FILTER, linear ? GL_LINEAR : GL_NEAREST);
+  glTexParameteri(target_, GL_TEXTURE_MAG_FILTER, linear ? GL_LINEAR : GL_NEAREST);
+}
+
 void Texture::bind(int unit) const {
   glActiveTexture(GLenum(GL_TEXTURE0 + unit));
   glBindTexture(target_, id());

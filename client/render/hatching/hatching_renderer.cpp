@@ -20,7 +20,7 @@ namespace {
 constexpr glm::vec3 kGraphite(40.0f / 255.0f, 40.0f / 255.0f, 46.0f / 255.0f);  // as the tone layers are inked
 constexpr int kThresholdLayers = 64;     // layers folded into the threshold image: finer tone steps
 constexpr int kMaxThresholdSize = 256;  // larger tiles magnify it (64 layers of it are drawn to fold)
-constexpr float kToneGamma = 0.8f;    // tones darken a little faster than N.L falls
+constexpr float kToneGamma = 0.8f;      // tones darken a little faster than N.L falls
 
 // The shade lookup (S7): paper above N.L = `lightness`, darkening to full tone facing away from
 // the light...
@@ -67,10 +67,10 @@ void HatchingRenderer::configure(const StyleParams& p) {
   tone_layers_ = tones;
   passes_wanted_ = passes;
   lightness_ = lightness;
-  const float angle = glm::radians(p.get_float("angle")), scale = p.get_float("scale");
-  if (variant_ == "threshold" && (scale != scale_px_ || angle != angle_)) tones_.reset();  // its size and filter follow them
-  angle_ = angle;
-  scale_px_ = scale;
+  angle_ = glm::radians(p.get_float("angle"));
+  const int size = threshold_size();
+  scale_px_ = p.get_float("scale");
+  if (variant_ == "threshold" && threshold_size() != size) tones_.reset();  // drawn at the tile's size
   strength_ = p.get_float("strength");
 }
 
@@ -88,11 +88,10 @@ void HatchingRenderer::build_textures() {
   // layers are a separate, coarser set (bare paper plus one layer per pass), made from the same
   // stroke list, so they nest the same way.
   if (variant_ == "threshold") {
-    // Drawn at the tile's size on screen: unturned (or turned by quarter turns), a texel is a
-    // pixel, so the nearest texel is what filtering would give, and costs a quarter of its reads.
+    // Drawn at the tile's size on screen (filtered or not as the frame's angle asks, in draw()).
     tones_ = std::make_unique<Texture>(
         Texture::from_image(in_n_dot_l(tone_thresholds(make_hatch_tones(kThresholdLayers, threshold_size())), lightness_),
-                            {.repeat = true, .mipmaps = false, .linear = !pixel_exact()}));
+                            {.repeat = true, .mipmaps = false, .linear = true}));
   } else if (variant_ == "3d-texture") {
     tones_ = std::make_unique<Texture>(
         Texture::stack_from_images(make_hatch_tones(tone_layers_).layers, GL_TEXTURE_3D, {.repeat = true, .mipmaps = false, .linear = true}));
@@ -100,6 +99,7 @@ void HatchingRenderer::build_textures() {
     tones_ = std::make_unique<Texture>(Texture::stack_from_images(make_hatch_tones(passes_wanted_ + 1).layers, GL_TEXTURE_2D_ARRAY,
                                                                   {.repeat = true, .mipmaps = true, .linear = true}));
   }
+  if (variant_ == "threshold") return;  // the lookup is folded into the thresholds
   std::vector<glm::u8vec4> lookup(256);
   for (size_t i = 0; i < lookup.size(); ++i) {
     const uint8_t v = uint8_t(tone_at(-1.0f + 2.0f * float(i) / float(lookup.size() - 1), lightness_) * 255.0f + 0.5f);
@@ -149,6 +149,9 @@ void HatchingRenderer::draw(const FrameState& frame) {
   p.set("strength", strength_);
   p.set("tones", 0);
   tones_->bind(0);
+  // Unturned (or turned by quarter turns) at its own size, a threshold texel is a pixel: the
+  // nearest texel is what filtering would give, and costs a quarter of its reads.
+  if (variant_ == "threshold") tones_->set_filter(!pixel_exact());
   if (variant_ != "threshold") {
     p.set("tone_lookup", 1);
     tone_lookup_->bind(1);
