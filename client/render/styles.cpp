@@ -1,5 +1,7 @@
 #include "client/render/styles.hpp"
 
+#include <algorithm>
+
 #include "client/render/comic/comic_renderer.hpp"
 #include "client/render/default_renderer.hpp"
 #include "client/render/hatching/hatching_renderer.hpp"
@@ -111,6 +113,14 @@ std::vector<StyleParams> style_params(const std::string& name, const std::vector
     if (!used) params.front().set(key, value);  // throws, naming the known keys
   }
   return params;
+}
+
+std::vector<ParamSpec> style_param_specs(const std::string& name) {
+  std::vector<ParamSpec> specs;
+  for (const std::string& part : split_parts(name))
+    for (ParamSpec& p : find_style(part).params())
+      if (std::none_of(specs.begin(), specs.end(), [&](const ParamSpec& s) { return s.name == p.name; })) specs.push_back(std::move(p));
+  return specs;
 }
 
 std::unique_ptr<Renderer> make_renderer(const std::string& name, const std::vector<std::string>& assignments) {

@@ -32,6 +32,11 @@ std::unique_ptr<Renderer> make_renderer(const std::string& name, const std::vect
 // what it would throw (unknown style, unknown key, bad value).
 std::vector<StyleParams> style_params(const std::string& name, const std::vector<std::string>& assignments = {});
 
+// Every parameter of a style, or of a joined style's parts ('a+b'; a name the parts share is
+// one parameter, set in all of them, described by the first). Throws inkwire::Error for an
+// unknown style.
+std::vector<ParamSpec> style_param_specs(const std::string& name);
+
 // The backdrop a style (or the first style of a combination) is drawn over by default.
 std::string default_backdrop(const std::string& name);
 

@@ -15,6 +15,7 @@
 
 #include "client/gl/context.hpp"
 #include "client/render/styles.hpp"
+#include "common/error.hpp"
 #include "client/viewer/session_sync.hpp"
 #include "client/viewer/viewer.hpp"
 
@@ -62,9 +63,9 @@ void install_orbit_callbacks(GLFWwindow* window) {
 }
 
 // Settings as a map over the style's defaults, so the panel shows every parameter's value.
-std::map<std::string, std::string> settings_of(const protocol::StyleChange& style, const StyleInfo& info) {
+std::map<std::string, std::string> settings_of(const protocol::StyleChange& style, const std::vector<ParamSpec>& specs) {
   std::map<std::string, std::string> values;
-  for (const ParamSpec& p : info.params()) values[p.name] = p.default_value;
+  for (const ParamSpec& p : specs) values[p.name] = p.default_value;
   for (const std::string& s : style.settings) {
     const size_t eq = s.find('=');
     values[s.substr(0, eq)] = s.substr(eq + 1);
@@ -73,9 +74,9 @@ std::map<std::string, std::string> settings_of(const protocol::StyleChange& styl
 }
 
 // One widget per parameter; true when the user changed one.
-bool parameter_panel(const StyleInfo& info, std::map<std::string, std::string>& values) {
+bool parameter_panel(const std::vector<ParamSpec>& specs, std::map<std::string, std::string>& values) {
   bool changed = false;
-  for (const ParamSpec& p : info.params()) {
+  for (const ParamSpec& p : specs) {
     std::string& v = values[p.name];
     ImGui::PushID(p.name.c_str());
     switch (p.type) {
@@ -137,6 +138,8 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
   const auto& all = styles();
   uint32_t sequence = 1;
   long frame = 0;
+  std::string specs_style;        // the style whose parameters `specs` lists
+  std::vector<ParamSpec> specs;
   const double start = glfwGetTime();
   while (!context->should_close() && client.connected()) {
     if (sync.poll() && !orbit.dragging) orbit.from(sync.state().camera);
@@ -165,7 +168,7 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
     ImGui::NewFrame();
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.8f);
-    ImGui::Begin("Session");
+    ImGui::Begin("Session", nullptr, ImGuiWindowFlags_AlwaysAutoResize);  // fits each style's parameters
     ImGui::Text("%s  revision %u  sent %llu B  received %llu B", sync.state().session.c_str(), sync.view().revision(),
                 (unsigned long long)client.bytes_sent(), (unsigned long long)client.bytes_received());
     if (ImGui::BeginCombo("style", current.c_str())) {
@@ -173,9 +176,18 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
         if (ImGui::Selectable(s.name.c_str(), s.name == current)) client.send(protocol::StyleChange{.renderer = s.name, .settings = {}});
       ImGui::EndCombo();
     }
-    if (it != all.end()) {
-      auto values = settings_of(sync.state().style, *it);
-      if (parameter_panel(*it, values)) client.send(style_change(current, values));
+    if (current != specs_style) {  // joined styles ('hatching+sketch-pencil') too; none for an unknown name
+      specs_style = current;
+      try {
+        specs = style_param_specs(current);
+      } catch (const Error&) {
+        specs.clear();
+      }
+    }
+    // Folded at first, so the picture is not hidden behind a long list.
+    if (!specs.empty() && ImGui::CollapsingHeader("parameters")) {
+      auto values = settings_of(sync.state().style, specs);
+      if (parameter_panel(specs, values)) client.send(style_change(current, values));
     }
     if (!sync.view().error().empty()) ImGui::TextColored(ImVec4(0.8f, 0.1f, 0.1f, 1), "%s", sync.view().error().c_str());
     ImGui::End();

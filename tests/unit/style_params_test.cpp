@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <gtest/gtest.h>
 
 #include "client/render/styles.hpp"
@@ -54,4 +55,18 @@ TEST(StyleParamsTest, StyleChecksWithoutARendererRefuseWhatMakeRendererWould) {
   EXPECT_EQ(test::error_of([] { style_params("no-such-style"); }).find("unknown style 'no-such-style'"), 0u);
   EXPECT_NE(test::error_of([] { style_params("painterly", {"no_such_key=1"}); }), "");
   EXPECT_NE(test::error_of([] { style_params("comic", {"outline_width=-4"}); }), "");
+}
+
+TEST(StyleParamsTest, AJoinedStyleListsEveryPartsParametersOnce) {
+  // What the windowed client's parameter panel shows for a session's style.
+  auto names_of = [](const std::vector<ParamSpec>& specs) {
+    std::vector<std::string> names;
+    for (const ParamSpec& p : specs) names.push_back(p.name);
+    return names;
+  };
+  const auto hatching = names_of(style_param_specs("hatching")), pencil = names_of(style_param_specs("sketch-pencil"));
+  const auto joined = names_of(style_param_specs("hatching+sketch-pencil"));
+  for (const auto* part : {&hatching, &pencil})
+    for (const std::string& name : *part) EXPECT_EQ(std::count(joined.begin(), joined.end(), name), 1) << name;
+  EXPECT_EQ(test::error_of([] { style_param_specs("hatching+no-such-style"); }).find("unknown style 'no-such-style'"), 0u);
 }
