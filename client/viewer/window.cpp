@@ -15,9 +15,9 @@
 
 #include "client/gl/context.hpp"
 #include "client/render/styles.hpp"
-#include "common/error.hpp"
 #include "client/viewer/session_sync.hpp"
 #include "client/viewer/viewer.hpp"
+#include "common/error.hpp"
 
 namespace inkwire {
 namespace {
