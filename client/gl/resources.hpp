@@ -104,8 +104,8 @@ class Texture : public Handle<delete_texture> {
   // without trilinear filtering's cost per pixel. Textures made without mipmaps stay at 0.
   // Binds the texture to the active unit.
   void sample_level(int level) const;
-  // Filters linearly or takes the nearest texel, from now on (a no-op when unchanged). Binds
-  // the texture to the active unit.
+  // Filters linearly or takes the nearest texel, from now on. Binds the texture to the active
+  // unit.
   void set_filter(bool linear) const;
   GLenum target() const { return target_; }
   int width() const { return width_; }

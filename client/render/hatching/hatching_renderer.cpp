@@ -151,8 +151,9 @@ void HatchingRenderer::draw(const FrameState& frame) {
   tones_->bind(0);
   // Unturned (or turned by quarter turns) at its own size, a threshold texel is a pixel: the
   // nearest texel is what filtering would give, and costs a quarter of its reads.
-  if (variant_ == "threshold") tones_->set_filter(!pixel_exact());
-  if (variant_ != "threshold") {
+  if (variant_ == "threshold") {
+    tones_->set_filter(!pixel_exact());
+  } else {
     p.set("tone_lookup", 1);
     tone_lookup_->bind(1);
   }
