@@ -88,14 +88,8 @@ void SegmentSketcher::prepare(const SceneObject& object) {
   unit_lines_ = make_unit_lines(diagonal, ink_.perturb_for(diagonal));
   unit_buffer_ = Buffer::create(unit_lines_.data);
   by_bin_.assign(unit_lines_.points.size(), {});
-  instances_ = Buffer::create(0, nullptr, GL_STREAM_DRAW);
-  vao_ = VertexArray::create();
-  vao_.attribute(0, instances_, 3, sizeof(Instance), offsetof(Instance, start));
-  vao_.attribute(1, instances_, 3, sizeof(Instance), offsetof(Instance, end));
-  vao_.attribute(2, instances_, 4, sizeof(Instance), offsetof(Instance, side_and_line));
-  vao_.attribute(3, instances_, 1, sizeof(Instance), offsetof(Instance, opacity));
-  for (GLuint i = 0; i < 4; ++i) glVertexAttribDivisor(i, 1);  // one edge per instance
-  glBindVertexArray(0);
+  edge_buffer_ = Buffer::create(0, nullptr, GL_STREAM_DRAW);
+  vao_ = VertexArray::create();  // no attributes: the shader pulls everything from buffers
 }
 
 void SegmentSketcher::draw(const FrameState& frame) {
@@ -112,7 +106,7 @@ void SegmentSketcher::draw(const FrameState& frame) {
     if (l <= 1e-12f) continue;
     // A pseudo-random line of the edge's bin, changing with time.
     const float line = float(stroke_seed(d.edge, uint64_t(step), 91) % uint64_t(unit_lines_.lines));
-    by_bin_[size_t(unit_lines_.bin_of(e.length))].push_back({a, b, glm::vec4(side / l, line), d.opacity});
+    by_bin_[size_t(unit_lines_.bin_of(e.length))].push_back({glm::vec4(a, d.opacity), glm::vec4(b, line), glm::vec4(side / l, 0.0f)});
   }
   packed_.clear();
   std::vector<size_t> base(by_bin_.size());
@@ -120,7 +114,7 @@ void SegmentSketcher::draw(const FrameState& frame) {
     base[bin] = packed_.size();
     packed_.insert(packed_.end(), by_bin_[bin].begin(), by_bin_[bin].end());
   }
-  instances_.upload(packed_.size() * sizeof(Instance), packed_.data());
+  edge_buffer_.upload(packed_.size() * sizeof(EdgeTransform), packed_.data());
 
   const glm::mat4 mvp = frame.model_view_projection();
   hlr_.lay_depth(*mesh_, mvp);
@@ -130,6 +124,7 @@ void SegmentSketcher::draw(const FrameState& frame) {
   program_.set("depth_bias", depth_bias_);
   program_.set("ink", ink_.ink);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, unit_buffer_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, edge_buffer_.id());
   glLineWidth(ink_.line_width);
   vao_.bind();
   for (size_t bin = 0; bin < by_bin_.size(); ++bin) {
@@ -137,7 +132,8 @@ void SegmentSketcher::draw(const FrameState& frame) {
     const int points = unit_lines_.points[bin];
     program_.set("points_per_line", points);
     program_.set("first_point", unit_lines_.first[bin]);
-    glDrawArraysInstancedBaseInstance(GL_LINES, 0, GLsizei(2 * (points - 1)), GLsizei(by_bin_[bin].size()), GLuint(base[bin]));
+    program_.set("first_edge", int(base[bin]));
+    glDrawArrays(GL_LINES, 0, GLsizei(2 * (points - 1) * by_bin_[bin].size()));
   }
   glLineWidth(1.0f);
   HiddenLineRemoval::end_lines();

@@ -3,8 +3,9 @@
 // at load time: for each of a few edge-length bins, a set of perturbed lines of unit length is
 // made (with wiggle scaled so short and long edges wobble alike per unit of length). Each
 // frame, every drawn edge picks one line of its bin by a pseudo-random index that changes with
-// time, and the GPU draws it through the edge's transform (instanced). No perturbation work per
-// frame, so frame time stays constant and nothing stalls when the randomisation changes.
+// time, and the GPU draws it through the edge's transform (one draw per bin, the vertex shader
+// pulling edge and line from buffers). No perturbation work per frame, so frame time stays
+// constant and nothing stalls when the randomisation changes.
 #include <array>
 #include <memory>
 #include <vector>
@@ -47,16 +48,14 @@ class SegmentSketcher final : public Renderer {
   const SceneObject* object_ = nullptr;
   std::unique_ptr<GpuMesh> mesh_;
   UnitLines unit_lines_;
-  gl::Buffer unit_buffer_, instances_;
+  gl::Buffer unit_buffer_, edge_buffer_;
   gl::VertexArray vao_;
 
-  struct Instance {
-    glm::vec3 start, end;
-    glm::vec4 side_and_line;
-    float opacity;
+  struct EdgeTransform {  // std430 layout of segments.vert's Edge
+    glm::vec4 start_and_opacity, end_and_line, side;
   };
-  std::vector<std::vector<Instance>> by_bin_;
-  std::vector<Instance> packed_;
+  std::vector<std::vector<EdgeTransform>> by_bin_;
+  std::vector<EdgeTransform> packed_;
 
   InkLineStyle ink_;
   float depth_bias_ = 0.002f;
