@@ -89,8 +89,10 @@ Image generate_canvas(int size, uint32_t seed) {
 Backdrop::Backdrop(const BackdropSpec& spec) : spec_(spec) {
   if (spec_.kind != BackdropSpec::Kind::Paper) return;
   const Image paper = !spec_.paper_file.empty() ? load_image(spec_.paper_file) : spec_.canvas ? generate_canvas(512) : generate_paper(512);
-  paper_size_ = paper.width;
-  paper_ = Texture::from_image(paper, {.repeat = true, .mipmaps = false, .linear = true});
+  paper_size_ = {float(paper.width), float(paper.height)};
+  // Read at one texel per pixel, at texel centres: the nearest texel is exactly what linear
+  // filtering would give, for a quarter of its reads.
+  paper_ = Texture::from_image(paper, {.repeat = true, .mipmaps = false, .linear = false});
   program_ = Program::from_files({"backdrop/fullscreen.vert", "backdrop/paper.frag"});
   empty_vao_ = VertexArray::create();
 }
@@ -121,7 +123,7 @@ void Backdrop::draw() const {
   program_->use();
   paper_->bind(0);
   program_->set("paper", 0);
-  program_->set("paper_size", float(paper_size_));
+  program_->set("paper_size", paper_size_);
   empty_vao_.bind();
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
@@ -135,7 +137,7 @@ void Backdrop::set_under(const gl::Program& program, GLuint unit) const {
   }
   paper_->bind(unit);
   program.set("paper", int(unit));
-  program.set("paper_size", float(paper_size_));
+  program.set("paper_size", paper_size_);
 }
 
 }  // namespace inkwire

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "client/gl/resources.hpp"
@@ -49,7 +50,7 @@ class Backdrop {
   std::optional<gl::Texture> paper_;
   std::optional<gl::Program> program_;
   gl::VertexArray empty_vao_;  // core profile needs a bound VAO even for attribute-less draws
-  int paper_size_ = 0;
+  glm::vec2 paper_size_{0.0f};  // texels
 };
 
 }  // namespace inkwire

@@ -26,7 +26,7 @@ uniform float layer_count;
 #endif
 #if defined(UNDER_PAPER)
 uniform sampler2D paper;        // as the backdrop draws it
-uniform float paper_size;
+uniform vec2 paper_size;
 #elif defined(UNDER_COLOUR)
 uniform vec4 under_colour;
 #endif
