@@ -1,5 +1,6 @@
 // Paper backdrop (SPEC G6) and hidden-line removal that preserves it (SPEC G7).
 #include <algorithm>
+#include <filesystem>
 #include <set>
 
 #include <gtest/gtest.h>
@@ -26,6 +27,36 @@ TEST(BackdropTest, PaperTilesSeamlessly) {
   std::set<int> tones;
   for (size_t i = 0; i < paper.pixels.size(); i += 4) tones.insert(paper.pixels[i]);
   EXPECT_GE(tones.size(), 6u) << "paper should have grain, not a flat colour";
+}
+
+TEST(BackdropGLTest, PaperFileLiesOneTexelPerPixelWhateverItsShape) {
+  test::offscreen_context();
+  // A 6 x 4 paper whose every texel has its own colour.
+  Image paper(6, 4);
+  std::set<uint32_t> texels;
+  for (int y = 0; y < paper.height; ++y)
+    for (int x = 0; x < paper.width; ++x) {
+      uint8_t* p = paper.at(x, y);
+      p[0] = uint8_t(40 * x), p[1] = uint8_t(60 * y), p[2] = 99, p[3] = 255;
+      texels.insert(uint32_t(p[0]) << 8 | p[1]);
+    }
+  const std::filesystem::path file = std::filesystem::temp_directory_path() / "inkwire-paper-6x4.png";
+  save_image(paper, file);
+  Canvas canvas(48, 32);
+  canvas.bind();
+  Backdrop(BackdropSpec::parse("paper:" + file.string())).draw();
+  const Image drawn = canvas.read();
+  std::filesystem::remove(file);
+  size_t not_a_texel = 0, off_period = 0;
+  for (int y = 0; y < drawn.height; ++y)
+    for (int x = 0; x < drawn.width; ++x) {
+      const uint8_t* p = drawn.at(x, y);
+      not_a_texel += !texels.count(uint32_t(p[0]) << 8 | p[1]);
+      off_period += (x + 6 < drawn.width && drawn.rgba(x, y) != drawn.rgba(x + 6, y)) ||
+                    (y + 4 < drawn.height && drawn.rgba(x, y) != drawn.rgba(x, y + 4));
+    }
+  EXPECT_EQ(not_a_texel, 0u) << "pixels blended between texels";
+  EXPECT_EQ(off_period, 0u) << "the paper does not repeat every 6 x 4 pixels: stretched";
 }
 
 TEST(BackdropTest, ParseRefusesUnknownSpecs) {
