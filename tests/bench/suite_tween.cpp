@@ -1,11 +1,12 @@
-// Suites "tween" and "landmarks" (SPEC T10, T7) at 256x256 on a textured product rendered into a
-// ring (and a sphere) of samples: fps of each synthesis method beside the default renderer
+// Suites "tween" and "landmarks" (SPEC T10, T7) at 256x256 on a textured product (landmarks also
+// on Spot, when ../shared/data is there) rendered into a ring (and a sphere) of samples: fps of each synthesis method beside the default renderer
 // drawing the mesh itself, tween bytes per pair, and automatic landmarks against the exact
 // correspondences the mesh gives (seconds, wrong fraction, mean error).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include <glm/geometric.hpp>
 #include <opencv2/imgproc.hpp>
@@ -15,6 +16,7 @@
 #include "client/render/tween/mesh_samples.hpp"
 #include "client/render/tween/tween_renderer.hpp"
 #include "common/error.hpp"
+#include "common/mesh_import.hpp"
 #include "common/tween/view_sphere.hpp"
 #include "server/tween/landmarks.hpp"
 
@@ -89,10 +91,13 @@ std::vector<Result> run_tween_suite(Harness& harness) {
   return results;
 }
 
-std::vector<Result> run_landmarks_suite(Harness& harness) {
-  BenchObject object = product(harness);
+namespace {
+
+// Automatic landmarks between every pair of neighbours of a 24-sample ring rendered from
+// `object`, checked against the exact correspondence its mesh gives.
+Result measure_landmark_ring(const SceneObject& object, const std::string& name) {
   const int samples = 24;
-  const MeshSamples set = render_mesh_samples(object.object, ring_directions(samples), kSize, kDistance);
+  const MeshSamples set = render_mesh_samples(object, ring_directions(samples), kSize, kDistance);
   LandmarkOptions options;  // 65 landmarks, the study's count
   std::vector<double> seconds;
   double error_sum = 0.0;
@@ -105,12 +110,12 @@ std::vector<Result> run_landmarks_suite(Harness& harness) {
     const auto start = std::chrono::steady_clock::now();
     LandmarkStats stats;
     const std::vector<Landmark> landmarks = find_landmarks(a, b, options, &stats);
-    for (const auto& [name, count] : std::initializer_list<std::pair<const char*, int>>{
+    for (const auto& [rule, count] : std::initializer_list<std::pair<const char*, int>>{
              {"candidates", stats.candidates}, {"rejected_border", stats.near_border}, {"rejected_spacing", stats.too_close},
              {"rejected_weak", stats.weak}, {"rejected_self_similar", stats.not_distinctive}, {"rejected_no_match", stats.no_match},
              {"rejected_not_unique", stats.not_unique}, {"rejected_not_found_back", stats.not_found_back},
              {"rejected_inconsistent", stats.inconsistent}})
-      rejected[name] += double(count) / samples;
+      rejected[rule] += double(count) / samples;
     seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     for (const Landmark& l : landmarks) {
       ++found;
@@ -140,8 +145,8 @@ std::vector<Result> run_landmarks_suite(Harness& harness) {
   r.suite = "landmarks";
   r.renderer = "landmarks";
   r.variant = "ring24,256x256";
-  r.object = object.name;
-  r.faces = object.object.mesh.face_count();
+  r.object = name;
+  r.faces = object.mesh.face_count();
   r.frames = samples;
   r.counters["landmarks"] = double(found) / samples;
   r.counters["seconds"] = seconds[seconds.size() / 2];
@@ -151,7 +156,30 @@ std::vector<Result> run_landmarks_suite(Harness& harness) {
   r.counters["mean_error_px"] = checked > wrong ? error_sum / double(checked - wrong) : 0.0;
   r.counters["unverifiable_fraction"] = found ? double(unverifiable) / found : 0.0;
   r.counters.insert(rejected.begin(), rejected.end());
-  std::vector<Result> results = {r};
+  return r;
+}
+
+// Spot, the textured cow of ../shared/data (an OBJ whose texture sits beside it, no material
+// file), when present: a second textured object, a smooth animal with painted patches.
+std::optional<SceneObject> spot() {
+  const std::filesystem::path dir = std::filesystem::path(INKWIRE_SHARED_DATA_DIR) / "spot";
+  if (!std::filesystem::exists(dir / "spot_triangulated.obj") || !std::filesystem::exists(dir / "spot_texture.png")) {
+    std::fprintf(stderr, "inkwire-bench: %s is absent: skipping the landmarks row on Spot\n", dir.c_str());
+    return std::nullopt;
+  }
+  Mesh mesh = load_mesh(dir / "spot_triangulated.obj");
+  if (mesh.materials.size() != 1 || !mesh.has_uvs()) throw Error("spot: expected one material and texture coordinates");
+  mesh.materials[0].texture_file = dir / "spot_texture.png";
+  normalise(mesh, 10.0f);
+  return make_scene_object(std::move(mesh));
+}
+
+}  // namespace
+
+std::vector<Result> run_landmarks_suite(Harness& harness) {
+  BenchObject object = product(harness);
+  std::vector<Result> results = {measure_landmark_ring(object.object, object.name)};
+  if (const std::optional<SceneObject> cow = spot()) results.push_back(measure_landmark_ring(*cow, "spot"));
 
   // Real photos (richer texture than any packaged model), when ../shared/data is beside the
   // checkout: two ring neighbours 15 degrees apart, the centre square scaled to 256x256. No
@@ -173,7 +201,7 @@ std::vector<Result> run_landmarks_suite(Harness& harness) {
   size_t count = 0;
   for (int repeat = 0; repeat < 5; ++repeat) {
     const auto start = std::chrono::steady_clock::now();
-    count = find_landmarks(a, b, options).size();
+    count = find_landmarks(a, b, LandmarkOptions{}).size();
     photo_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   std::sort(photo_seconds.begin(), photo_seconds.end());
