@@ -1,7 +1,8 @@
-// Suites "tween" and "landmarks" (SPEC T10, T7) at 256x256 on a textured product (landmarks also
-// on Spot, when ../shared/data is there) rendered into a ring (and a sphere) of samples: fps of each synthesis method beside the default renderer
-// drawing the mesh itself, tween bytes per pair, and automatic landmarks against the exact
-// correspondences the mesh gives (seconds, wrong fraction, mean error).
+// Suites "tween" and "landmarks" (SPEC T10, T7) at 256x256 on a textured product (landmarks
+// also on Spot, when ../shared/data is there) rendered into a ring (and a sphere) of samples:
+// fps of each synthesis method beside the default renderer drawing the mesh itself, tween bytes
+// per pair, and automatic landmarks against the exact correspondences the mesh gives (seconds,
+// wrong fraction, mean error).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
