@@ -173,3 +173,78 @@ TEST(SketchTest, UnitLinesWobbleAlikePerUnitLengthInEveryBin) {
     }
   }
 }
+
+TEST(SketchTest, ClosedOrientedSurfaceNeedsEveryEdgePairedFrontToBack) {
+  Mesh tetrahedron;
+  tetrahedron.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  tetrahedron.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};  // counter-clockwise from outside
+  EXPECT_TRUE(is_closed_oriented_surface(tetrahedron));
+  Mesh open = tetrahedron;
+  open.triangles.pop_back();
+  EXPECT_FALSE(is_closed_oriented_surface(open)) << "a hole";
+  Mesh flipped = tetrahedron;
+  std::swap(flipped.triangles[3][1], flipped.triangles[3][2]);
+  EXPECT_FALSE(is_closed_oriented_surface(flipped)) << "one face turned inside out";
+}
+
+namespace {
+
+// Whether the segment from `from` to `to` passes through a triangle of `mesh` (other than the
+// faces in `skip`) before reaching `to` (Moller-Trumbore).
+bool blocked(const Mesh& mesh, const glm::vec3& from, const glm::vec3& to, uint32_t skip0, uint32_t skip1) {
+  const glm::vec3 d = to - from;
+  for (uint32_t f = 0; f < mesh.triangles.size(); ++f) {
+    if (f == skip0 || f == skip1) continue;
+    const glm::vec3 a = mesh.positions[mesh.triangles[f][0]], b = mesh.positions[mesh.triangles[f][1]],
+                    c = mesh.positions[mesh.triangles[f][2]];
+    const glm::vec3 e1 = b - a, e2 = c - a, p = glm::cross(d, e2);
+    const float det = glm::dot(e1, p);
+    if (std::abs(det) < 1e-12f) continue;
+    const glm::vec3 s = from - a;
+    const float u = glm::dot(s, p) / det;
+    if (u < 0.0f || u > 1.0f) continue;
+    const glm::vec3 q = glm::cross(s, e1);
+    const float v = glm::dot(d, q) / det;
+    if (v < 0.0f || u + v > 1.0f) continue;
+    const float t = glm::dot(e2, q) / det;
+    if (t > 0.0f && t < 1.0f - 1e-5f) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+TEST(SketchTest, ValleySilhouettesOfAClosedMeshAreHiddenAndLeftOut) {
+  // Cast a ray from the eye to the middle of every silhouette edge of a closed mesh: each one
+  // on a valley meets the surface first; many on ridges do not (so the ray cast can tell).
+  const auto file = cgal_mesh("cow.off");
+  INKWIRE_REQUIRE_FILE(file);
+  const Mesh cow = load_mesh(file);
+  const Topology topo = build_topology(cow);
+  ASSERT_TRUE(is_closed_oriented_surface(cow));
+  const std::vector<uint8_t> valleys = valley_edges_of_closed_mesh(cow, topo);
+  ASSERT_EQ(valleys.size(), topo.edges.size());
+  std::vector<uint32_t> all(topo.edges.size());
+  for (uint32_t i = 0; i < all.size(); ++i) all[i] = i;
+  size_t valley_silhouettes = 0, valleys_seen = 0, ridge_silhouettes = 0, ridges_seen = 0;
+  for (float degrees : {0.0f, 60.0f, 135.0f, 200.0f, 290.0f}) {
+    const glm::vec3 eye = topo.bounds.centre() +
+                          topo.bounds.diagonal() * glm::vec3(std::sin(glm::radians(degrees)), 0.35f, std::cos(glm::radians(degrees)));
+    for (uint32_t i = 0; i < topo.edges.size(); ++i) {
+      const Edge& e = topo.edges[i];
+      const glm::vec3 mid = 0.5f * (cow.positions[e.v0] + cow.positions[e.v1]);
+      if (glm::dot(topo.face_normals[e.f0], eye - mid) * glm::dot(topo.face_normals[e.f1], eye - mid) >= 0.0f) continue;
+      const bool seen = !blocked(cow, eye, mid, e.f0, e.f1);
+      if (valleys[i]) ++valley_silhouettes, valleys_seen += seen;
+      else ++ridge_silhouettes, ridges_seen += seen;
+    }
+    std::vector<DrawnEdge> with, without;
+    choose_sketch_edges(cow, topo, all, eye, 10.0f /* no creases */, {}, with, valleys);
+    choose_sketch_edges(cow, topo, all, eye, 10.0f, {}, without);
+    for (const DrawnEdge& d : with) EXPECT_FALSE(valleys[d.edge]) << "a valley silhouette was drawn";
+    EXPECT_LT(with.size(), without.size());
+  }
+  EXPECT_GT(valley_silhouettes, 100u);
+  EXPECT_EQ(valleys_seen, 0u) << "of " << valley_silhouettes << " valley silhouettes";
+  EXPECT_GT(ridges_seen, ridge_silhouettes / 4) << "the ray cast finds everything hidden: it proves nothing";
+}

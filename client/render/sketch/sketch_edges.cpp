@@ -1,12 +1,56 @@
 #include "client/render/sketch/sketch_edges.hpp"
 
+#include <algorithm>
+
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
+#include <glm/vector_relational.hpp>
 
 namespace inkwire {
+namespace {
+
+const std::vector<uint8_t> kNoValleys;
+constexpr float kWidestValleyRadians = 1.5707964f;
+
+}  // namespace
+
+bool is_closed_oriented_surface(const Mesh& mesh) {
+  // Every directed edge a -> b of a triangle is matched by a b -> a of another: no holes, and
+  // where more than two triangles meet at an edge they still pair up front to back.
+  std::vector<uint64_t> forward, backward;
+  forward.reserve(mesh.triangles.size() * 3);
+  backward.reserve(mesh.triangles.size() * 3);
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const uint64_t a = t[size_t(k)], b = t[size_t((k + 1) % 3)];
+      forward.push_back(a << 32 | b);
+      backward.push_back(b << 32 | a);
+    }
+  std::sort(forward.begin(), forward.end());
+  std::sort(backward.begin(), backward.end());
+  return forward == backward;
+}
+
+std::vector<uint8_t> valley_edges_of_closed_mesh(const Mesh& mesh, const Topology& topology) {
+  if (!is_closed_oriented_surface(mesh)) return {};
+  std::vector<uint8_t> valleys(topology.edges.size(), 0);
+  for (size_t i = 0; i < topology.edges.size(); ++i) {
+    const Edge& e = topology.edges[i];
+    // Which two faces make the valley is not clear at a non-manifold edge. Faces folded nearly
+    // flat onto each other are where real meshes turn inside out locally (a fold-over), and
+    // there a "valley" can face the viewer: only valleys opening wider than a right angle count.
+    if (e.non_manifold || e.dihedral > kWidestValleyRadians) continue;
+    uint32_t far = 0;
+    for (uint32_t v : mesh.triangles[e.f1])
+      if (v != e.v0 && v != e.v1) far = v;
+    valleys[i] = glm::dot(topology.face_normals[e.f0], mesh.positions[far] - mesh.positions[e.v0]) > 0.0f;
+  }
+  return valleys;
+}
 
 void choose_sketch_edges(const Mesh& mesh, const Topology& topology, const std::vector<uint32_t>& candidates,
-                         const glm::vec3& eye, float crease_radians, const FadeOptions& fade, std::vector<DrawnEdge>& out) {
+                         const glm::vec3& eye, float crease_radians, const FadeOptions& fade, std::vector<DrawnEdge>& out,
+                         const std::vector<uint8_t>& valleys) {
   out.clear();
   for (uint32_t i : candidates) {
     const Edge& e = topology.edges[i];
@@ -18,6 +62,7 @@ void choose_sketch_edges(const Mesh& mesh, const Topology& topology, const std::
       continue;
     }
     const float d2 = glm::dot(topology.face_normals[e.f1], to_eye);
+    if (d1 * d2 < 0.0f && !valleys.empty() && valleys[i]) continue;
     if (e.dihedral > crease_radians && (d1 > 0.0f || d2 > 0.0f)) {
       out.push_back({i, 1.0f});
       continue;
@@ -53,6 +98,7 @@ void SketchEdgeSource::prepare(const SceneObject& object) {
   const std::vector<uint32_t> flagged =
       flagged_file_.empty() ? std::vector<uint32_t>{} : load_flagged_edges(flagged_file_, object.topology, object.mesh.positions.size());
   candidates_ = important_edges(object.topology, importance, flagged);
+  valleys_ = valley_edges_of_closed_mesh(object.mesh, object.topology);
 }
 
 std::map<std::string, double> SketchEdgeSource::counters() const {
@@ -63,7 +109,11 @@ std::map<std::string, double> SketchEdgeSource::counters() const {
 }
 
 const std::vector<DrawnEdge>& SketchEdgeSource::choose(const glm::vec3& eye) {
-  choose_sketch_edges(object_->mesh, object_->topology, candidates_, eye, crease_radians_, fade_, drawn_);
+  // Valleys are hidden only to an eye outside the solid; outside the bounds it surely is.
+  const Bounds& b = object_->topology.bounds;
+  const bool outside = glm::any(glm::lessThan(eye, b.min)) || glm::any(glm::greaterThan(eye, b.max));
+  choose_sketch_edges(object_->mesh, object_->topology, candidates_, eye, crease_radians_, fade_, drawn_,
+                      outside ? valleys_ : kNoValleys);
   return drawn_;
 }
 

@@ -42,11 +42,27 @@ struct DrawnEdge {
   float opacity;  // 0..1
 };
 
+// True when every directed edge a -> b of a triangle is matched by a b -> a of another: a
+// closed surface, oriented consistently, the boundary of a solid.
+bool is_closed_oriented_surface(const Mesh& mesh);
+
+// On a closed oriented surface seen from outside, a silhouette edge in a valley (concave: the
+// far corner of one face lies above the other face's plane) is always hidden. Just before the
+// sight line reaches it, it is behind the back-facing face's plane, which near a valley is
+// inside the solid; so it entered the solid through a nearer front face, which the depth
+// test finds. Per edge of `topology`: 1 for valleys (manifold edges whose faces turn by less
+// than a right angle: sharper folds are where real meshes turn inside out); empty when the
+// mesh is not such a surface, where the argument fails.
+std::vector<uint8_t> valley_edges_of_closed_mesh(const Mesh& mesh, const Topology& topology);
+
 // From the candidate edges (importance.hpp), those drawn this frame: silhouettes (faded when
 // fading is on), open edges, and creases sharper than `crease_radians` with a face toward
-// the viewer. `eye` is in the mesh's own coordinates.
+// the viewer. `eye` is in the mesh's own coordinates. Silhouettes on `valleys` (see
+// valley_edges_of_closed_mesh; may be empty) are left out: a hidden line costs as much to
+// draw as a visible one, and a wobbling one pokes out from behind its occluder.
 void choose_sketch_edges(const Mesh& mesh, const Topology& topology, const std::vector<uint32_t>& candidates,
-                         const glm::vec3& eye, float crease_radians, const FadeOptions& fade, std::vector<DrawnEdge>& out);
+                         const glm::vec3& eye, float crease_radians, const FadeOptions& fade, std::vector<DrawnEdge>& out,
+                         const std::vector<uint8_t>& valleys = {});
 
 // What every sketcher shares: the importance thresholds (relative to the object's size), the
 // flagged-edges file, creases and fading, as style parameters, and the per-frame edge choice.
@@ -69,6 +85,7 @@ class SketchEdgeSource {
   std::string flagged_file_;
   FadeOptions fade_;
   std::vector<uint32_t> candidates_;
+  std::vector<uint8_t> valleys_;
   std::vector<DrawnEdge> drawn_;
 };
 
