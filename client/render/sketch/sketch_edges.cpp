@@ -54,20 +54,23 @@ void choose_sketch_edges(const Mesh& mesh, const Topology& topology, const std::
   out.clear();
   for (uint32_t i : candidates) {
     const Edge& e = topology.edges[i];
-    const glm::vec3 mid = 0.5f * (mesh.positions[e.v0] + mesh.positions[e.v1]);
-    const glm::vec3 to_eye = glm::normalize(eye - mid);
-    const float d1 = glm::dot(topology.face_normals[e.f0], to_eye);
     if (e.boundary) {
       out.push_back({i, 1.0f});
       continue;
     }
+    // Which side of each face's plane the eye is on needs no unit vector; only fading does.
+    const glm::vec3 to_eye = eye - 0.5f * (mesh.positions[e.v0] + mesh.positions[e.v1]);
+    const float d1 = glm::dot(topology.face_normals[e.f0], to_eye);
     const float d2 = glm::dot(topology.face_normals[e.f1], to_eye);
-    if (d1 * d2 < 0.0f && !valleys.empty() && valleys[i]) continue;
-    if (e.dihedral > crease_radians && (d1 > 0.0f || d2 > 0.0f)) {
+    const bool silhouette = d1 * d2 < 0.0f;
+    if (silhouette && !valleys.empty() && valleys[i]) continue;
+    if (silhouette || (e.dihedral > crease_radians && (d1 > 0.0f || d2 > 0.0f))) {
       out.push_back({i, 1.0f});
       continue;
     }
-    const float opacity = fade_opacity(d1, d2, fade);
+    if (!fade.enabled) continue;
+    const float to_unit = 1.0f / glm::length(to_eye);
+    const float opacity = fade_opacity(d1 * to_unit, d2 * to_unit, fade);
     if (opacity > 0.0f) out.push_back({i, opacity});
   }
 }
