@@ -248,3 +248,26 @@ TEST(SketchTest, ValleySilhouettesOfAClosedMeshAreHiddenAndLeftOut) {
   EXPECT_EQ(valleys_seen, 0u) << "of " << valley_silhouettes << " valley silhouettes";
   EXPECT_GT(ridges_seen, ridge_silhouettes / 4) << "the ray cast finds everything hidden: it proves nothing";
 }
+
+TEST(SketchTest, ValleysStayWhenTheEyeIsInsideTheBounds) {
+  // Inside the object the argument fails (the eye may be inside the solid): every silhouette
+  // is drawn; outside, the valley ones are left out.
+  const auto file = cgal_mesh("cow.off");
+  INKWIRE_REQUIRE_FILE(file);
+  const SceneObject cow = make_scene_object(load_mesh(file));
+  SketchEdgeSource source;
+  source.configure(StyleParams(SketchEdgeSource::params(false)));
+  source.prepare(cow);
+  const Bounds& b = cow.topology.bounds;
+  for (const glm::vec3& eye : {b.centre(), b.centre() + glm::vec3(0.0f, 0.2f, 1.5f) * b.diagonal()}) {
+    const size_t drawn = source.choose(eye).size();
+    // The same choice with no valleys known, from the same candidates.
+    std::vector<DrawnEdge> every;
+    std::vector<uint32_t> candidates;
+    for (uint32_t i = 0; i < cow.topology.edges.size(); ++i)
+      if (statically_important(cow.topology.edges[i], {0.01f * b.diagonal(), glm::radians(12.0f)})) candidates.push_back(i);
+    choose_sketch_edges(cow.mesh, cow.topology, candidates, eye, glm::radians(50.0f), {}, every);
+    if (eye == b.centre()) EXPECT_EQ(drawn, every.size()) << "eye inside the bounds";
+    else EXPECT_LT(drawn, every.size()) << "eye outside the bounds";
+  }
+}
