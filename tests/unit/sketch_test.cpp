@@ -1,4 +1,4 @@
-// Sketch logic without GL: importance (S1), perturbation (S2), fading (S6).
+// Sketch logic without GL: importance (S1), perturbation (S2), fading (S6), hidden valleys.
 #include <cmath>
 #include <random>
 
@@ -259,13 +259,13 @@ TEST(SketchTest, ValleysStayWhenTheEyeIsInsideTheBounds) {
   source.configure(StyleParams(SketchEdgeSource::params(false)));
   source.prepare(cow);
   const Bounds& b = cow.topology.bounds;
+  // The source's candidates under its default thresholds, for the same choice with no valleys.
+  std::vector<uint32_t> candidates;
+  for (uint32_t i = 0; i < cow.topology.edges.size(); ++i)
+    if (statically_important(cow.topology.edges[i], {0.01f * b.diagonal(), glm::radians(12.0f)})) candidates.push_back(i);
   for (const glm::vec3& eye : {b.centre(), b.centre() + glm::vec3(0.0f, 0.2f, 1.5f) * b.diagonal()}) {
     const size_t drawn = source.choose(eye).size();
-    // The same choice with no valleys known, from the same candidates.
     std::vector<DrawnEdge> every;
-    std::vector<uint32_t> candidates;
-    for (uint32_t i = 0; i < cow.topology.edges.size(); ++i)
-      if (statically_important(cow.topology.edges[i], {0.01f * b.diagonal(), glm::radians(12.0f)})) candidates.push_back(i);
     choose_sketch_edges(cow.mesh, cow.topology, candidates, eye, glm::radians(50.0f), {}, every);
     if (eye == b.centre()) EXPECT_EQ(drawn, every.size()) << "eye inside the bounds";
     else EXPECT_LT(drawn, every.size()) << "eye outside the bounds";
