@@ -107,6 +107,27 @@ INSTANTIATE_TEST_SUITE_P(EveryVariant, HatchingGLTest, ::testing::Values("thresh
   return n;
 });
 
+TEST(HatchingGLTest, TurningAfterDrawingDrawsWhatAFreshRendererDraws) {
+  // A new angle switches how the threshold image is read (nearest texel on the pixel grid,
+  // filtered off it) without redrawing it: the switch must happen for an image already made.
+  test::offscreen_context();
+  Canvas canvas(160, 160);
+  const SceneObject sphere = make_scene_object(test::make_sphere(48, 24));
+  const FrameState frame = test::view_of(sphere, canvas, 0, 0, 1.2f);
+  auto draw_fresh = [&](const std::string& angle) {
+    auto r = make_renderer("hatching", {"variant=threshold", "angle=" + angle});
+    r->prepare(sphere);
+    return test::render_frame(*r, frame, canvas);
+  };
+  auto turned = make_renderer("hatching", {"variant=threshold", "angle=0"});
+  turned->prepare(sphere);
+  EXPECT_EQ(test::render_frame(*turned, frame, canvas).pixels, draw_fresh("0").pixels);
+  for (const std::string angle : {"30", "90", "0"}) {
+    turned->configure(style_params("hatching", {"variant=threshold", "angle=" + angle}).front());
+    EXPECT_EQ(test::render_frame(*turned, frame, canvas).pixels, draw_fresh(angle).pixels) << "turned to " << angle;
+  }
+}
+
 TEST(CombinedStylesGLTest, ShareSettingsAndRefuseUnknownOnes) {
   test::offscreen_context();
   EXPECT_NO_THROW(make_renderer("hatching+sketch-charcoal", {"variant=multipass", "fade=false"}));

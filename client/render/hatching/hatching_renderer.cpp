@@ -71,6 +71,8 @@ void HatchingRenderer::configure(const StyleParams& p) {
   const int size = threshold_size();
   scale_px_ = p.get_float("scale");
   if (variant_ == "threshold" && threshold_size() != size) tones_.reset();  // drawn at the tile's size
+  // A new angle only changes how the threshold image is read, not the image.
+  if (tones_ && variant_ == "threshold") tones_->set_filter(!pixel_exact());
   strength_ = p.get_float("strength");
 }
 
@@ -88,10 +90,11 @@ void HatchingRenderer::build_textures() {
   // layers are a separate, coarser set (bare paper plus one layer per pass), made from the same
   // stroke list, so they nest the same way.
   if (variant_ == "threshold") {
-    // Drawn at the tile's size on screen (filtered or not as the frame's angle asks, in draw()).
+    // Drawn at the tile's size on screen. Unturned (or turned by quarter turns) at that size, a
+    // texel is a pixel: the nearest texel is what filtering would give, for a quarter of the reads.
     tones_ = std::make_unique<Texture>(
         Texture::from_image(in_n_dot_l(tone_thresholds(make_hatch_tones(kThresholdLayers, threshold_size())), lightness_),
-                            {.repeat = true, .mipmaps = false, .linear = true}));
+                            {.repeat = true, .mipmaps = false, .linear = !pixel_exact()}));
   } else if (variant_ == "3d-texture") {
     tones_ = std::make_unique<Texture>(
         Texture::stack_from_images(make_hatch_tones(tone_layers_).layers, GL_TEXTURE_3D, {.repeat = true, .mipmaps = false, .linear = true}));
@@ -149,11 +152,7 @@ void HatchingRenderer::draw(const FrameState& frame) {
   p.set("strength", strength_);
   p.set("tones", 0);
   tones_->bind(0);
-  // Unturned (or turned by quarter turns) at its own size, a threshold texel is a pixel: the
-  // nearest texel is what filtering would give, and costs a quarter of its reads.
-  if (variant_ == "threshold") {
-    tones_->set_filter(!pixel_exact());
-  } else {
+  if (variant_ != "threshold") {  // the threshold variant has the lookup folded into its image
     p.set("tone_lookup", 1);
     tone_lookup_->bind(1);
   }
