@@ -1,5 +1,6 @@
 #include "common/mesh_import.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -96,8 +97,17 @@ class MeshBuilder {
       return;  // uncompressed embedded texels are rare; such materials render untextured
     }
     if (ref.empty() || ref[0] == '*') return;
-    std::filesystem::path path = file_.parent_path() / ref;
-    if (std::filesystem::is_regular_file(path)) mat.texture_file = path;
+    // Files written on Windows name textures with backslashes (".\jeep1.jpg"), some with the
+    // author's own folders ("C:\models\tex.png"): read the name as written, else the file of
+    // that name beside the model (the model's folder is where its texture travels with it).
+    std::string portable = ref;
+    std::replace(portable.begin(), portable.end(), '\\', '/');
+    const std::filesystem::path folder = file_.parent_path();
+    for (const std::filesystem::path& path : {folder / portable, folder / std::filesystem::path(portable).filename()})
+      if (std::filesystem::is_regular_file(path)) {
+        mat.texture_file = path.lexically_normal();
+        return;
+      }
   }
 
   uint32_t weld(const glm::vec3& p) {

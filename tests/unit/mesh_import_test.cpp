@@ -102,3 +102,15 @@ TEST(MeshImportTest, GltfTextureAndUvsAreKept) {
   for (const Material& m : mesh.materials) textured = textured || m.textured();
   EXPECT_TRUE(textured);
 }
+
+TEST(MeshImportTest, TexturesNamedWithWindowsSeparatorsAreFoundBesideTheModel) {
+  // jeep1.ms3d names its texture ".\\jeep1.jpg", which on this system is one odd file name.
+  const auto file = kAssimpModels / "MS3D/jeep1.ms3d";
+  INKWIRE_REQUIRE_FILE(file);
+  INKWIRE_REQUIRE_FILE(kAssimpModels / "MS3D/jeep1.jpg");
+  const Mesh mesh = load_mesh(file);
+  EXPECT_TRUE(mesh.has_uvs());
+  bool textured = false;
+  for (const Material& m : mesh.materials) textured = textured || m.texture_file == kAssimpModels / "MS3D/jeep1.jpg";
+  EXPECT_TRUE(textured);
+}
