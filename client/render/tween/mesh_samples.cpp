@@ -64,18 +64,26 @@ glm::vec3 MeshSamples::project(int index, const glm::vec3& point) const {
   return {(ndc.x * 0.5f + 0.5f) * float(size), (0.5f - ndc.y * 0.5f) * float(size), ndc.z * 0.5f + 0.5f};
 }
 
-std::optional<glm::vec2> MeshSamples::visible_position(int index, const glm::vec3& point) const {
+std::optional<glm::vec2> MeshSamples::position_in_front(int index, const glm::vec3& point, int reach) const {
   const glm::vec3 p = project(index, point);
   if (!(p.x >= 0.0f && p.y >= 0.0f && p.x < float(size) && p.y < float(size) && p.z > 0.0f && p.z < 1.0f)) return std::nullopt;
   const Camera& c = cameras[size_t(index)];
   const std::vector<float>& depth = depths[size_t(index)];
   const int px = int(p.x), py = int(p.y);
   float nearest = std::numeric_limits<float>::max();
-  for (int y = std::max(0, py - 1); y <= std::min(size - 1, py + 1); ++y)
-    for (int x = std::max(0, px - 1); x <= std::min(size - 1, px + 1); ++x)
+  for (int y = std::max(0, py - reach); y <= std::min(size - 1, py + reach); ++y)
+    for (int x = std::max(0, px - reach); x <= std::min(size - 1, px + reach); ++x)
       nearest = std::min(nearest, eye_depth(c, depth[size_t(y) * size + x]));
   if (eye_depth(c, p.z) > nearest + kVisibilitySlack * bounds.diagonal()) return std::nullopt;
   return glm::vec2(p);
+}
+
+std::optional<glm::vec2> MeshSamples::visible_position(int index, const glm::vec3& point) const {
+  return position_in_front(index, point, 1);
+}
+
+std::optional<glm::vec2> MeshSamples::seen_position(int index, const glm::vec3& point) const {
+  return position_in_front(index, point, 0);
 }
 
 bool MeshSamples::near_background(int index, const glm::vec2& pixel) const {
@@ -100,7 +108,7 @@ std::optional<glm::vec3> MeshSamples::surface_point(int from, const glm::vec2& p
 std::optional<glm::vec2> MeshSamples::true_position(int from, const glm::vec2& pixel, int to) const {
   const auto p = surface_point(from, pixel);
   if (!p) return std::nullopt;
-  return visible_position(to, *p);
+  return seen_position(to, *p);
 }
 
 MeshSamples render_mesh_samples(const SceneObject& object, const std::vector<glm::vec3>& directions, int size,

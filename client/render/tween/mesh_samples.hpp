@@ -27,14 +27,22 @@ struct MeshSamples {
 
   // Where `point` (object space) lands in sample `index`, in pixels, and its window depth.
   glm::vec3 project(int index, const glm::vec3& point) const;
-  // The pixel when `point` is inside the image and not hidden by the object itself.
+  // The pixel when `point` is inside the image and nothing nearer lies within a pixel of it: a
+  // cautious test, for control points (a vertex beside an occluding edge would drag it along).
   std::optional<glm::vec2> visible_position(int index, const glm::vec3& point) const;
+  // The pixel when `point` is inside the image and is what the pixel it falls in shows: the exact
+  // test, for checking a correspondence (a point beside an occluding edge is still seen).
+  std::optional<glm::vec2> seen_position(int index, const glm::vec3& point) const;
   // True when background (nothing drawn) lies within 2 pixels of `pixel`: an outline point.
   bool near_background(int index, const glm::vec2& pixel) const;
   // The surface point seen at `pixel` of sample `from`, when there is one.
   std::optional<glm::vec3> surface_point(int from, const glm::vec2& pixel) const;
-  // Where the surface seen at `pixel` of `from` appears in `to`, when it is visible there.
+  // Where the surface seen at `pixel` of `from` appears in `to`, when it is seen there.
   std::optional<glm::vec2> true_position(int from, const glm::vec2& pixel, int to) const;
+
+ private:
+  // The pixel when no depth within `reach` pixels of where `point` falls is nearer than it.
+  std::optional<glm::vec2> position_in_front(int index, const glm::vec3& point, int reach) const;
 };
 
 // Needs a current GL context. `style` is any registered style (default: the default renderer).
