@@ -29,7 +29,7 @@ struct LandmarkOptions {
   float min_spacing = 8.0f;     // rule 2, pixels
   float min_structure = 0.005f; // rule 3, fraction of the image's strongest structure
   float max_self_match = 0.85f; // rule 4, NCC with the patch shifted 3..window/2+3 pixels
-  float min_match = 0.8f;       // rule 5, NCC of the best match
+  float min_match = 0.85f;      // rule 5, NCC of the best match (at 0.8: 4.2% wrong over five objects, not 2.8%)
   float min_peak_gap = 0.08f;   // rule 5, best minus runner-up (3+ pixels from the best)
   glm::ivec2 search{40, 12};    // how far a landmark may move (x, y), pixels
   bool verify_both_ways = true; // rule 6
