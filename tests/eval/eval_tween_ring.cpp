@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <utility>
 
 #include "client/gl/context.hpp"
 #include "client/render/tween/pair_tween.hpp"
@@ -11,6 +12,9 @@
 #include "server/tween/photo_ring.hpp"
 
 namespace inkwire::eval {
+
+constexpr float kWrongPixels = 3.0f;  // as for landmarks checked against a mesh
+
 nlohmann::json run_tween_ring(const TweenRingOptions& o) {
   const PhotoRing ring = load_photo_ring(o.dataset);
   std::vector<RingTriple> triples = ring_triples(ring);
@@ -27,7 +31,7 @@ nlohmann::json run_tween_ring(const TweenRingOptions& o) {
   landmark_options.search = {64, 16};  // about 15 degrees of turn across a 480-pixel photo
 
   const char* methods[3] = {"nearest", "crossfade", "tween"};
-  double psnr_sum[3] = {0, 0, 0}, ssim_sum[3] = {0, 0, 0}, seconds = 0.0, landmark_sum = 0.0, bytes_sum = 0.0;
+  double psnr_sum[3] = {0, 0, 0}, ssim_sum[3] = {0, 0, 0}, seconds = 0.0, landmark_sum = 0.0, bytes_sum = 0.0, off_line_sum = 0.0;
   nlohmann::json per_triple = nlohmann::json::array();
   for (const RingTriple& tri : triples) {
     const Image before = load_image(ring.folder / ring.names[size_t(tri.before)]);
@@ -49,9 +53,25 @@ nlohmann::json run_tween_ring(const TweenRingOptions& o) {
     data = decode_tween(bytes);
     seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
+    // No exact correspondences on a real ring, but its calibration says where each landmark can
+    // be: on its epipolar line. Landmarks farther off it are certainly wrong (a lower bound).
+    const RingCamera& from = ring.cameras[size_t(tri.before)];
+    const RingCamera& to = ring.cameras[size_t(tri.after)];
+    // templeRing's photos are stored turned from their calibration, those up to 31 one way and
+    // those from 32 the other: the landmarks themselves tell which way, pair by pair.
+    const glm::ivec2 size(first.width, first.height);
+    std::vector<std::pair<glm::vec2, glm::vec2>> matches;
+    for (const Landmark& l : landmarks) matches.push_back({l.source, l.target});
+    const int turns = stored_quarter_turns(from, to, matches, size);
+    const glm::mat3 f = fundamental_matrix(from, to);
+    int off_line = 0;
+    for (const auto& [a, b] : matches)
+      off_line += epipolar_distance(f, calibrated_pixel(a, size, turns), calibrated_pixel(b, size, turns)) > kWrongPixels;
+
     PairTween pair(before, after, data.cells[0]);
     const std::vector<Image> views = {tri.t < 0.5f ? before : after, pair.crossfade(tri.t), pair.tween(tri.t)};
     nlohmann::json row = {{"middle", ring.names[size_t(tri.middle)]}, {"t", tri.t}, {"landmarks", landmarks.size()},
+                          {"off_epipolar", off_line}, {"photo_quarter_turns", turns},
                           {"bytes", bytes.size()}};
     for (int m = 0; m < 3; ++m) {
       const double p = psnr(views[size_t(m)], truth), s = ssim(views[size_t(m)], truth);
@@ -61,6 +81,7 @@ nlohmann::json run_tween_ring(const TweenRingOptions& o) {
       row["ssim"][methods[m]] = s;
     }
     landmark_sum += double(landmarks.size());
+    off_line_sum += double(off_line);
     bytes_sum += double(bytes.size());
     per_triple.push_back(row);
     std::fprintf(stderr, "inkwire-eval: %s from its neighbours: %zu landmarks, PSNR nearest %.2f, cross-fade %.2f, tween %.2f dB\n",
@@ -77,6 +98,7 @@ nlohmann::json run_tween_ring(const TweenRingOptions& o) {
                         {"landmarks_per_pair", landmark_sum / n},
                         {"bytes_per_pair", bytes_sum / n},
                         {"wrong_fraction", nullptr},  // a real ring has no exact correspondences
+                        {"off_epipolar_fraction", landmark_sum > 0.0 ? off_line_sum / landmark_sum : 0.0},
                         {"triples", per_triple}};
   for (int m = 0; m < 3; ++m) {
     out["psnr"][methods[m]] = psnr_sum[m] / n;

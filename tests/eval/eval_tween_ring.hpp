@@ -1,7 +1,8 @@
 #pragma once
 // `inkwire-eval tween-ring`: every photo of a real ring synthesised from its two neighbours by
 // nearest sample, cross-fade and tween (automatic landmarks + warp), each compared with the
-// real photo (PSNR, SSIM). CONTRACTS.md fixes the JSON shape.
+// real photo (PSNR, SSIM), and the share of landmarks off their epipolar line (certainly wrong).
+// CONTRACTS.md fixes the JSON shape.
 #include <filesystem>
 #include <string>
 
