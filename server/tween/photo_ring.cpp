@@ -97,6 +97,16 @@ int stored_quarter_turns(const RingCamera& from, const RingCamera& to, const std
   return best;
 }
 
+EpipolarCheck check_epipolar(const RingCamera& from, const RingCamera& to, const std::vector<std::pair<glm::vec2, glm::vec2>>& matches,
+                             const glm::ivec2& size, float tolerance) {
+  EpipolarCheck check;
+  check.quarter_turns = stored_quarter_turns(from, to, matches, size);
+  const glm::mat3 f = fundamental_matrix(from, to);
+  for (const auto& [a, b] : matches)
+    check.off_line += epipolar_distance(f, calibrated_pixel(a, size, check.quarter_turns), calibrated_pixel(b, size, check.quarter_turns)) > tolerance;
+  return check;
+}
+
 std::vector<RingTriple> ring_triples(const PhotoRing& ring, float max_step_degrees) {
   std::vector<RingTriple> out;
   for (int i = 0; i + 2 < int(ring.names.size()); ++i) {

@@ -45,8 +45,18 @@ glm::vec2 calibrated_pixel(const glm::vec2& stored, const glm::ivec2& size, int 
 int stored_quarter_turns(const RingCamera& from, const RingCamera& to, const std::vector<std::pair<glm::vec2, glm::vec2>>& matches,
                          const glm::ivec2& size);
 
+// How many of `matches` (pixels of stored photos of `size`) lie more than `tolerance` pixels off
+// their epipolar line (certainly wrong), under the stored turn the matches themselves point to.
+struct EpipolarCheck {
+  int off_line = 0;
+  int quarter_turns = 0;
+};
+EpipolarCheck check_epipolar(const RingCamera& from, const RingCamera& to, const std::vector<std::pair<glm::vec2, glm::vec2>>& matches,
+                             const glm::ivec2& size, float tolerance);
+
 // Throws inkwire::Error with a one-line reason when there is no calibration file, a line is
-// malformed, a rotation is not a rotation, or a named image is missing.
+// malformed, intrinsics are not a camera's, a rotation is not a rotation, or a named image is
+// missing.
 PhotoRing load_photo_ring(const std::filesystem::path& folder);
 
 // Three photos i, j, k in ring order whose neighbours are both at most `max_step_degrees` apart:

@@ -28,6 +28,7 @@ namespace {
 
 constexpr int kSize = 256;
 constexpr float kDistance = 1.4f;  // bounding-box diagonals, as the tween style samples
+constexpr float kWrongPixels = 3.0f;  // a landmark farther than this from the truth is wrong
 const std::filesystem::path kAssimpModels = "/usr/share/assimp/models";
 const std::filesystem::path kProduct = kAssimpModels / "glTF/CesiumMilkTruck/CesiumMilkTruck.gltf";
 
@@ -120,7 +121,6 @@ Result measure_landmark_ring(const SceneObject& object, const std::string& name)
   double error_sum = 0.0;
   int found = 0, checked = 0, wrong = 0, unverifiable = 0, hidden = 0, wrong_position = 0, beside_occluder = 0, off_line = 0;
   std::map<std::string, double> rejected;  // per pair, by rule
-  constexpr float kWrongPixels = 3.0f;
   for (int i = 0; i < samples; ++i) {
     const int j = (i + 1) % samples;
     const cv::Mat a = grey_of(set.images[size_t(i)]), b = grey_of(set.images[size_t(j)]);
@@ -229,7 +229,7 @@ std::vector<Result> run_landmarks_suite(Harness& harness) {
   }
   const PhotoRing ring = load_photo_ring(folder);
   const int first = 1, second = 3;  // templeR0002 and templeR0004
-  const Image photo = load_image(folder / ring.names[first]);
+  const Image photo = load_image(folder / ring.names[size_t(first)]);
   const glm::ivec2 photo_size(photo.width, photo.height);
   const int side = std::min(photo.width, photo.height);
   const glm::vec2 corner(float(photo.width - side) / 2.0f, float(photo.height - side) / 2.0f);
@@ -253,13 +253,7 @@ std::vector<Result> run_landmarks_suite(Harness& harness) {
   std::vector<std::pair<glm::vec2, glm::vec2>> matches;
   auto in_photo = [&](const glm::vec2& p) { return corner + (p + 0.5f) * scale - 0.5f; };
   for (const Landmark& l : landmarks) matches.push_back({in_photo(l.source), in_photo(l.target)});
-  const RingCamera& from = ring.cameras[size_t(first)];
-  const RingCamera& to = ring.cameras[size_t(second)];
-  const int turns = stored_quarter_turns(from, to, matches, photo_size);
-  const glm::mat3 f = fundamental_matrix(from, to);
-  int off_line = 0;
-  for (const auto& [p, q] : matches)
-    off_line += epipolar_distance(f, calibrated_pixel(p, photo_size, turns), calibrated_pixel(q, photo_size, turns)) / scale > 3.0f;
+  const EpipolarCheck epipolar = check_epipolar(ring.cameras[size_t(first)], ring.cameras[size_t(second)], matches, photo_size, kWrongPixels * scale);
   Result row;
   row.suite = "landmarks";
   row.renderer = "landmarks";
@@ -268,7 +262,7 @@ std::vector<Result> run_landmarks_suite(Harness& harness) {
   row.frames = 5;
   row.counters["landmarks"] = double(landmarks.size());
   row.counters["seconds"] = photo_seconds[photo_seconds.size() / 2];
-  row.counters["off_epipolar_fraction"] = landmarks.empty() ? 0.0 : double(off_line) / double(landmarks.size());
+  row.counters["off_epipolar_fraction"] = landmarks.empty() ? 0.0 : double(epipolar.off_line) / double(landmarks.size());
   results.push_back(row);
   return results;
 }

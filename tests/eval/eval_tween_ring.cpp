@@ -55,23 +55,17 @@ nlohmann::json run_tween_ring(const TweenRingOptions& o) {
 
     // No exact correspondences on a real ring, but its calibration says where each landmark can
     // be: on its epipolar line. Landmarks farther off it are certainly wrong (a lower bound).
-    const RingCamera& from = ring.cameras[size_t(tri.before)];
-    const RingCamera& to = ring.cameras[size_t(tri.after)];
-    // templeRing's photos are stored turned from their calibration, those up to 31 one way and
-    // those from 32 the other: the landmarks themselves tell which way, pair by pair.
-    const glm::ivec2 size(first.width, first.height);
+    // (templeRing's photos are stored turned from their calibration, those up to 31 one way and
+    // those from 32 the other: the check finds the turn pair by pair.)
     std::vector<std::pair<glm::vec2, glm::vec2>> matches;
     for (const Landmark& l : landmarks) matches.push_back({l.source, l.target});
-    const int turns = stored_quarter_turns(from, to, matches, size);
-    const glm::mat3 f = fundamental_matrix(from, to);
-    int off_line = 0;
-    for (const auto& [a, b] : matches)
-      off_line += epipolar_distance(f, calibrated_pixel(a, size, turns), calibrated_pixel(b, size, turns)) > kWrongPixels;
+    const EpipolarCheck epipolar = check_epipolar(ring.cameras[size_t(tri.before)], ring.cameras[size_t(tri.after)], matches,
+                                                  {first.width, first.height}, kWrongPixels);
 
     PairTween pair(before, after, data.cells[0]);
     const std::vector<Image> views = {tri.t < 0.5f ? before : after, pair.crossfade(tri.t), pair.tween(tri.t)};
     nlohmann::json row = {{"middle", ring.names[size_t(tri.middle)]}, {"t", tri.t}, {"landmarks", landmarks.size()},
-                          {"off_epipolar", off_line}, {"photo_quarter_turns", turns},
+                          {"off_epipolar", epipolar.off_line}, {"photo_quarter_turns", epipolar.quarter_turns},
                           {"bytes", bytes.size()}};
     for (int m = 0; m < 3; ++m) {
       const double p = psnr(views[size_t(m)], truth), s = ssim(views[size_t(m)], truth);
@@ -81,7 +75,7 @@ nlohmann::json run_tween_ring(const TweenRingOptions& o) {
       row["ssim"][methods[m]] = s;
     }
     landmark_sum += double(landmarks.size());
-    off_line_sum += double(off_line);
+    off_line_sum += double(epipolar.off_line);
     bytes_sum += double(bytes.size());
     per_triple.push_back(row);
     std::fprintf(stderr, "inkwire-eval: %s from its neighbours: %zu landmarks, PSNR nearest %.2f, cross-fade %.2f, tween %.2f dB\n",
