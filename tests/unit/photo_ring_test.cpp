@@ -121,6 +121,12 @@ TEST(PhotoRingTest, PhotosStoredTurnedFromTheirCalibrationAreFoundOut) {
     EXPECT_LT(glm::length(calibrated_pixel(turned[i].first, stored_size, 1) - upright[i].first), 1e-3f);
     EXPECT_LT(glm::length(calibrated_pixel(turned[i].second, stored_size, 1) - upright[i].second), 1e-3f);
   }
+  // Three matches moved 6 stored pixels sideways (up or down in the calibrated frame, across
+  // the mostly level lines of a turn about the vertical) are counted off their lines.
+  for (size_t i : {3u, 11u, 20u}) turned[i].second.x += 6.0f;
+  const EpipolarCheck check = check_epipolar(a, b, turned, stored_size, 3.0f);
+  EXPECT_EQ(check.quarter_turns, 1);
+  EXPECT_EQ(check.off_line, 3);
 }
 
 TEST(PhotoRingTest, MalformedCalibrationIsRefusedWithAReason) {
