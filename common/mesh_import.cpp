@@ -1,10 +1,12 @@
 #include "common/mesh_import.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <fstream>
 #include <sstream>
 #include <mutex>
+#include <optional>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -97,17 +99,34 @@ class MeshBuilder {
       return;  // uncompressed embedded texels are rare; such materials render untextured
     }
     if (ref.empty() || ref[0] == '*') return;
-    // Files written on Windows name textures with backslashes (".\jeep1.jpg"), some with the
-    // author's own folders ("C:\models\tex.png"): read the name as written, else the file of
-    // that name beside the model (the model's folder is where its texture travels with it).
+    // Files written on Windows name textures with backslashes (".\jeep1.jpg"), from a root
+    // that means the model's own folder ("\..\LWO\earth.jpg"), in any letter case, or with the
+    // author's own folders ("C:\models\tex.png"): read the name as written, relative to the
+    // model, else the file of that name beside the model (where its texture travels with it).
     std::string portable = ref;
     std::replace(portable.begin(), portable.end(), '\\', '/');
+    portable.erase(0, portable.find_first_not_of('/'));
     const std::filesystem::path folder = file_.parent_path();
     for (const std::filesystem::path& path : {folder / portable, folder / std::filesystem::path(portable).filename()})
-      if (std::filesystem::is_regular_file(path)) {
-        mat.texture_file = path.lexically_normal();
+      if (const std::optional<std::filesystem::path> found = existing_file_any_case(path.lexically_normal())) {
+        mat.texture_file = *found;
         return;
       }
+  }
+
+  // `path` itself, else the file in its folder whose name differs only in letter case.
+  static std::optional<std::filesystem::path> existing_file_any_case(const std::filesystem::path& path) {
+    if (std::filesystem::is_regular_file(path)) return path;
+    std::error_code error;
+    const std::string wanted = lower_case(path.filename().string());
+    for (const auto& entry : std::filesystem::directory_iterator(path.parent_path(), error))
+      if (entry.is_regular_file(error) && lower_case(entry.path().filename().string()) == wanted) return entry.path();
+    return std::nullopt;
+  }
+
+  static std::string lower_case(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return text;
   }
 
   uint32_t weld(const glm::vec3& p) {

@@ -103,14 +103,20 @@ TEST(MeshImportTest, GltfTextureAndUvsAreKept) {
   EXPECT_TRUE(textured);
 }
 
-TEST(MeshImportTest, TexturesNamedWithWindowsSeparatorsAreFoundBesideTheModel) {
-  // jeep1.ms3d names its texture ".\\jeep1.jpg", which on this system is one odd file name.
-  const auto file = kAssimpModels / "MS3D/jeep1.ms3d";
-  INKWIRE_REQUIRE_FILE(file);
+TEST(MeshImportTest, TexturesNamedTheWindowsWayAreFound) {
+  // jeep1.ms3d names its texture ".\jeep1.jpg", which on this system is one odd file name.
+  const auto jeep = kAssimpModels / "MS3D/jeep1.ms3d";
+  INKWIRE_REQUIRE_FILE(jeep);
   INKWIRE_REQUIRE_FILE(kAssimpModels / "MS3D/jeep1.jpg");
-  const Mesh mesh = load_mesh(file);
+  const Mesh mesh = load_mesh(jeep);
   EXPECT_TRUE(mesh.has_uvs());
+  EXPECT_EQ(mesh.materials.at(0).texture_file, kAssimpModels / "MS3D/jeep1.jpg");
+  // earthCylindrical.DAE names "\..\LWO\LWO2\MappingModes\EarthCylindric.jpg": from a root
+  // meaning its own folder, and with a capital E the file does not have.
+  const auto earth = kAssimpModels / "Collada/earthCylindrical.DAE";
+  INKWIRE_REQUIRE_FILE(earth);
   bool textured = false;
-  for (const Material& m : mesh.materials) textured = textured || m.texture_file == kAssimpModels / "MS3D/jeep1.jpg";
+  for (const Material& m : load_mesh(earth).materials)
+    textured = textured || m.texture_file == kAssimpModels / "LWO/LWO2/MappingModes/earthCylindric.jpg";
   EXPECT_TRUE(textured);
 }
