@@ -207,9 +207,10 @@ std::vector<Result> run_landmarks_suite(Harness& harness) {
   if (const std::optional<SceneObject> cow = spot()) results.push_back(measure_landmark_ring(*cow, "spot"));
   // The other textured objects assimp-testmodels carries, so that the rules are judged on more
   // than the object they were measured on: painted camouflage on a jeep with a roll bar, a
-  // spider whose thin legs cross in front of one another, a character in a T-pose.
+  // spider whose thin legs cross in front of one another, a character in a T-pose, and a globe
+  // whose painted grid of 15-degree cells turns in step with the ring.
   for (const auto& [name, file] : std::initializer_list<std::pair<const char*, const char*>>{
-           {"jeep", "MS3D/jeep1.ms3d"}, {"spider", "OBJ/spider.obj"}, {"mrfixit", "IQM/mrfixit.iqm"}}) {
+           {"jeep", "MS3D/jeep1.ms3d"}, {"spider", "OBJ/spider.obj"}, {"mrfixit", "IQM/mrfixit.iqm"}, {"earth", "Collada/earthCylindrical.DAE"}}) {
     const std::filesystem::path path = kAssimpModels / file;
     if (!std::filesystem::exists(path)) {
       std::fprintf(stderr, "inkwire-bench: %s is missing (assimp-testmodels): skipping its landmarks row\n", path.c_str());
