@@ -136,26 +136,26 @@ Result measure_landmark_ring(const SceneObject& object, const std::string& name)
     seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     // What the epipolar check of the real photos would catch here (pixel centres at +0.5).
     const glm::mat3 f = fundamental_matrix(pixel_camera(set.cameras[size_t(i)], kSize), pixel_camera(set.cameras[size_t(j)], kSize));
-    for (const Landmark& l : landmarks) off_line += epipolar_distance(f, l.source + 0.5f, l.target + 0.5f) > kWrongPixels;
     for (const Landmark& l : landmarks) {
       ++found;
+      off_line += epipolar_distance(f, l.source + 0.5f, l.target + 0.5f) > kWrongPixels;
       // The truth: the surface under the landmark, projected into the other sample. A landmark
       // on the background side of the outline has no surface point: it cannot be checked.
-      if (!set.surface_point(i, l.source)) {
+      const std::optional<glm::vec3> point = set.surface_point(i, l.source);
+      if (!point) {
         ++unverifiable;
         continue;
       }
       ++checked;
-      const glm::vec3 point = *set.surface_point(i, l.source);
-      const auto truth = set.true_position(i, l.source, j);
+      const auto truth = set.seen_position(j, *point);
       const float error = truth ? glm::length(*truth - l.target) : 1e9f;
       // Where the surface point projects whether or not the other sample shows it.
-      const glm::vec2 projected(set.project(j, point));
+      const glm::vec2 projected(set.project(j, *point));
       hidden += !truth;
       wrong_position += glm::length(projected - l.target) > kWrongPixels;
       // Seen, but a nearer surface lies within a pixel: corners where one part passes in front
       // of another (the cautious test that picks exact control points refuses these).
-      beside_occluder += truth && !set.visible_position(j, point);
+      beside_occluder += truth && !set.visible_position(j, *point);
       if (error > kWrongPixels) {
         ++wrong;
       } else {
@@ -230,18 +230,18 @@ std::vector<Result> run_landmarks_suite(Harness& harness) {
   }
   const PhotoRing ring = load_photo_ring(folder);
   const int first = 1, second = 3;  // templeR0002 and templeR0004
-  const Image photo = load_image(folder / ring.names[size_t(first)]);
-  const glm::ivec2 photo_size(photo.width, photo.height);
-  const int side = std::min(photo.width, photo.height);
-  const glm::vec2 corner(float(photo.width - side) / 2.0f, float(photo.height - side) / 2.0f);
+  const cv::Mat photo_a = grey_of(load_image(folder / ring.names[size_t(first)]));
+  const cv::Mat photo_b = grey_of(load_image(folder / ring.names[size_t(second)]));
+  const glm::ivec2 photo_size(photo_a.cols, photo_a.rows);
+  const int side = std::min(photo_a.cols, photo_a.rows);
+  const glm::vec2 corner(float(photo_a.cols - side) / 2.0f, float(photo_a.rows - side) / 2.0f);
   const float scale = float(side) / float(kSize);  // photo pixels per pixel of the square
-  auto square = [&](int index) {
-    const cv::Mat grey = grey_of(load_image(folder / ring.names[size_t(index)]));
+  auto square = [&](const cv::Mat& grey) {
     cv::Mat out;
     cv::resize(grey(cv::Rect(int(corner.x), int(corner.y), side, side)), out, cv::Size(kSize, kSize), 0, 0, cv::INTER_AREA);
     return out;
   };
-  const cv::Mat a = square(first), b = square(second);
+  const cv::Mat a = square(photo_a), b = square(photo_b);
   std::vector<double> photo_seconds;
   std::vector<Landmark> landmarks;
   for (int repeat = 0; repeat < 5; ++repeat) {

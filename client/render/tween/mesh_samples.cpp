@@ -105,12 +105,6 @@ std::optional<glm::vec3> MeshSamples::surface_point(int from, const glm::vec2& p
   return glm::vec3(world) / world.w;
 }
 
-std::optional<glm::vec2> MeshSamples::true_position(int from, const glm::vec2& pixel, int to) const {
-  const auto p = surface_point(from, pixel);
-  if (!p) return std::nullopt;
-  return seen_position(to, *p);
-}
-
 MeshSamples render_mesh_samples(const SceneObject& object, const std::vector<glm::vec3>& directions, int size,
                                 float distance_diagonals, const std::string& style) {
   MeshSamples s;

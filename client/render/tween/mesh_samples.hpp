@@ -37,8 +37,6 @@ struct MeshSamples {
   bool near_background(int index, const glm::vec2& pixel) const;
   // The surface point seen at `pixel` of sample `from`, when there is one.
   std::optional<glm::vec3> surface_point(int from, const glm::vec2& pixel) const;
-  // Where the surface seen at `pixel` of `from` appears in `to`, when it is seen there.
-  std::optional<glm::vec2> true_position(int from, const glm::vec2& pixel, int to) const;
 
  private:
   // The pixel when no depth within `reach` pixels of where `point` falls is nearer than it.
