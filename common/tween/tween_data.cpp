@@ -171,6 +171,76 @@ Quantised unpredict(const std::array<int32_t, kStreams>& s, bool pair) {
   return q;
 }
 
+void write_cell(Writer& w, const TweenCell& c, int image_width, int image_height) {
+  w.u8(uint32_t(c.samples.size()));
+  for (uint16_t s : c.samples) w.u16(s);
+  w.u16(uint32_t(c.points.size()));
+  if (c.points.empty()) return;
+  std::vector<std::array<int32_t, kStreams>> values;
+  for (const ControlPoint& p : c.points) {
+    Quantised q{};
+    for (int k = 0; k < 3; ++k) {
+      q.x[k] = quantise(p[k].x, image_width);
+      q.y[k] = quantise(p[k].y, image_height);
+    }
+    values.push_back(predict(q, c.is_pair()));
+  }
+  std::array<int32_t, kStreams> lo{}, width{};
+  for (int s = 0; s < kStreams; ++s) {
+    int32_t mn = values[0][s], mx = values[0][s];
+    for (const auto& v : values) {
+      mn = std::min(mn, v[s]);
+      mx = std::max(mx, v[s]);
+    }
+    lo[s] = mn;
+    width[s] = bits_for(uint32_t(mx - mn));
+    w.varint(mn);
+    w.u8(uint32_t(width[s]));
+  }
+  for (int s = 0; s < kStreams; ++s)
+    for (const auto& v : values) w.bits(uint32_t(v[s] - lo[s]), width[s]);
+  w.end_bits();
+}
+
+TweenCell read_cell(Reader& r, uint32_t ci, int image_width, int image_height) {
+  const int max_q[2] = {image_width << kTweenFractionBits, image_height << kTweenFractionBits};
+  TweenCell c;
+  const uint32_t arity = r.u8("a cell header");
+  if (arity != 2 && arity != 3) throw Error("tween data: cell " + std::to_string(ci) + " has arity " + std::to_string(arity) + " (2 or 3)");
+  for (uint32_t k = 0; k < arity; ++k) c.samples.push_back(uint16_t(r.u16("a cell header")));
+  const uint32_t count = r.u16("a cell header");
+  if (count > uint32_t(kMaxTweenPointsPerCell))
+    throw Error("tween data: cell " + std::to_string(ci) + " has " + std::to_string(count) + " points (at most " +
+                std::to_string(kMaxTweenPointsPerCell) + ")");
+  if (count == 0) return c;
+  std::array<int32_t, kStreams> lo{}, width{};
+  size_t total_bits = 0;
+  for (int s = 0; s < kStreams; ++s) {
+    lo[s] = r.varint("a stream header");
+    width[s] = int32_t(r.u8("a stream header"));
+    if (lo[s] < -65535 || lo[s] > 65535 || width[s] > kMaxBits)
+      throw Error("tween data: cell " + std::to_string(ci) + " has a malformed stream header");
+    total_bits += size_t(width[s]) * count;
+  }
+  r.need((total_bits + 7) / 8, "point data");
+  std::vector<std::array<int32_t, kStreams>> values(count);
+  for (int s = 0; s < kStreams; ++s)
+    for (auto& v : values) v[s] = lo[s] + int32_t(r.bits(width[s]));
+  r.end_bits();
+  c.points.reserve(count);
+  for (const auto& v : values) {
+    const Quantised q = unpredict(v, arity == 2);
+    ControlPoint p;
+    for (int k = 0; k < 3; ++k) {
+      if (q.x[k] < 0 || q.y[k] < 0 || q.x[k] > max_q[0] || q.y[k] > max_q[1])
+        throw Error("tween data: cell " + std::to_string(ci) + " has a point outside the image");
+      p[k] = {dequantise(q.x[k]), dequantise(q.y[k])};
+    }
+    c.points.push_back(p);
+  }
+  return c;
+}
+
 }  // namespace
 
 glm::vec3 path_weights(float t) {
@@ -205,38 +275,34 @@ std::vector<uint8_t> encode_tween(const TweenData& data) {
   w.u16(uint32_t(data.cells.size()));
   for (const glm::vec3& v : data.directions)
     for (int k = 0; k < 3; ++k) w.u16(uint16_t(quantise_direction(v[k])));
-  for (const TweenCell& c : data.cells) {
-    w.u8(uint32_t(c.samples.size()));
-    for (uint16_t s : c.samples) w.u16(s);
-    w.u16(uint32_t(c.points.size()));
-    if (c.points.empty()) continue;
-    std::vector<std::array<int32_t, kStreams>> values;
-    for (const ControlPoint& p : c.points) {
-      Quantised q{};
-      for (int k = 0; k < 3; ++k) {
-        q.x[k] = quantise(p[k].x, data.width);
-        q.y[k] = quantise(p[k].y, data.height);
-      }
-      values.push_back(predict(q, c.is_pair()));
-    }
-    std::array<int32_t, kStreams> lo{}, width{};
-    for (int s = 0; s < kStreams; ++s) {
-      int32_t mn = values[0][s], mx = values[0][s];
-      for (const auto& v : values) {
-        mn = std::min(mn, v[s]);
-        mx = std::max(mx, v[s]);
-      }
-      lo[s] = mn;
-      width[s] = bits_for(uint32_t(mx - mn));
-      w.varint(mn);
-      w.u8(uint32_t(width[s]));
-    }
-    for (int s = 0; s < kStreams; ++s)
-      for (const auto& v : values) w.bits(uint32_t(v[s] - lo[s]), width[s]);
-    w.end_bits();
-  }
+  for (const TweenCell& c : data.cells) write_cell(w, c, data.width, data.height);
   if (w.bytes.size() > kMaxTweenBytes) throw Error("tween data: encoding is " + std::to_string(w.bytes.size()) + " bytes, over the limit");
   return std::move(w.bytes);
+}
+
+std::vector<uint8_t> encode_tween_cell(const TweenCell& cell, int width, int height, int samples) {
+  TweenData header;
+  header.width = width;
+  header.height = height;
+  header.directions.assign(size_t(std::max(samples, 0)), glm::vec3(0, 0, 1));
+  header.cells = {cell};
+  check_limits(header);
+  Writer w;
+  write_cell(w, cell, width, height);
+  return std::move(w.bytes);
+}
+
+TweenCell decode_tween_cell(std::span<const uint8_t> bytes, int width, int height, int samples) {
+  if (bytes.size() > kMaxTweenCellBytes) throw Error("tween data: a cell of " + std::to_string(bytes.size()) + " bytes is over the limit");
+  Reader r(bytes);
+  TweenData d;
+  d.width = width;
+  d.height = height;
+  d.directions.assign(size_t(std::max(samples, 0)), glm::vec3(0, 0, 1));
+  d.cells.push_back(read_cell(r, 0, width, height));
+  if (r.remaining() != 0) throw Error("tween data: " + std::to_string(r.remaining()) + " bytes after the cell");
+  check_limits(d);
+  return std::move(d.cells[0]);
 }
 
 TweenData decode_tween(std::span<const uint8_t> bytes) {
@@ -267,45 +333,7 @@ TweenData decode_tween(std::span<const uint8_t> bytes) {
   // Every cell takes at least 5 bytes: refuse a count the input cannot hold before reserving.
   if (size_t(cells) * 5 > r.remaining()) throw Error("tween data: truncated (" + std::to_string(cells) + " cells announced)");
   d.cells.reserve(cells);
-  const int max_q[2] = {d.width << kTweenFractionBits, d.height << kTweenFractionBits};
-  for (uint32_t ci = 0; ci < cells; ++ci) {
-    TweenCell c;
-    const uint32_t arity = r.u8("a cell header");
-    if (arity != 2 && arity != 3) throw Error("tween data: cell " + std::to_string(ci) + " has arity " + std::to_string(arity) + " (2 or 3)");
-    for (uint32_t k = 0; k < arity; ++k) c.samples.push_back(uint16_t(r.u16("a cell header")));
-    const uint32_t count = r.u16("a cell header");
-    if (count > uint32_t(kMaxTweenPointsPerCell))
-      throw Error("tween data: cell " + std::to_string(ci) + " has " + std::to_string(count) + " points (at most " +
-                  std::to_string(kMaxTweenPointsPerCell) + ")");
-    if (count > 0) {
-      std::array<int32_t, kStreams> lo{}, width{};
-      size_t total_bits = 0;
-      for (int s = 0; s < kStreams; ++s) {
-        lo[s] = r.varint("a stream header");
-        width[s] = int32_t(r.u8("a stream header"));
-        if (lo[s] < -65535 || lo[s] > 65535 || width[s] > kMaxBits)
-          throw Error("tween data: cell " + std::to_string(ci) + " has a malformed stream header");
-        total_bits += size_t(width[s]) * count;
-      }
-      r.need((total_bits + 7) / 8, "point data");
-      std::vector<std::array<int32_t, kStreams>> values(count);
-      for (int s = 0; s < kStreams; ++s)
-        for (auto& v : values) v[s] = lo[s] + int32_t(r.bits(width[s]));
-      r.end_bits();
-      c.points.reserve(count);
-      for (const auto& v : values) {
-        const Quantised q = unpredict(v, arity == 2);
-        ControlPoint p;
-        for (int k = 0; k < 3; ++k) {
-          if (q.x[k] < 0 || q.y[k] < 0 || q.x[k] > max_q[0] || q.y[k] > max_q[1])
-            throw Error("tween data: cell " + std::to_string(ci) + " has a point outside the image");
-          p[k] = {dequantise(q.x[k]), dequantise(q.y[k])};
-        }
-        c.points.push_back(p);
-      }
-    }
-    d.cells.push_back(std::move(c));
-  }
+  for (uint32_t ci = 0; ci < cells; ++ci) d.cells.push_back(read_cell(r, ci, d.width, d.height));
   if (r.remaining() != 0) throw Error("tween data: " + std::to_string(r.remaining()) + " bytes after the last cell");
   check_limits(d);
   return d;

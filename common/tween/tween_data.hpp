@@ -61,6 +61,13 @@ std::vector<uint8_t> encode_tween(const TweenData& data);
 // trailing bytes).
 TweenData decode_tween(std::span<const uint8_t> bytes);
 
+// One cell alone, as a `tween-data` message carries it (protocol/SPEC.md): the cell layout of
+// the full form, read against the product's image size and sample count, which travel apart.
+// Lossless with respect to quantised(). Both throw inkwire::Error as the full form does.
+inline constexpr size_t kMaxTweenCellBytes = 16 * 1024;
+std::vector<uint8_t> encode_tween_cell(const TweenCell& cell, int width, int height, int samples);
+TweenCell decode_tween_cell(std::span<const uint8_t> bytes, int width, int height, int samples);
+
 // Where a pair's control point is at t in [0, 1] (0 = sample a, 1 = sample b): the quadratic
 // Bézier through the halfway position at t = 0.5. Written as weights of the three stored
 // positions, so a shader can evaluate it as one weighted sum.

@@ -193,3 +193,24 @@ TEST(TweenDataTest, TheWarpMeshCoversTheImageWithoutFolds) {
   }
   EXPECT_NEAR(area, 200.0 * 100.0, 1e-2);
 }
+
+// One cell alone, as a tween-data message carries it.
+TEST(TweenDataTest, ACellAloneRoundTripsAndIsCheckedAgainstItsProduct) {
+  const TweenData d = turntable_like(24, 65, 20.0f, 11);
+  const TweenData q = quantised(d);
+  for (size_t i = 3; i < d.cells.size(); i += 5) {
+    const std::vector<uint8_t> bytes = encode_tween_cell(d.cells[i], d.width, d.height, d.sample_count());
+    EXPECT_LE(bytes.size(), 520u);
+    EXPECT_EQ(decode_tween_cell(bytes, d.width, d.height, d.sample_count()), q.cells[i]);
+    // Against a product it does not belong to: a sample index past its samples, points
+    // outside its smaller images.
+    EXPECT_NE(test::error_of([&] { decode_tween_cell(bytes, d.width, d.height, 2); }).find("out of range"), std::string::npos);
+    EXPECT_NE(test::error_of([&] { decode_tween_cell(bytes, 64, 64, d.sample_count()); }).find("outside the image"), std::string::npos);
+    for (size_t cut = 0; cut < bytes.size(); ++cut)
+      EXPECT_THROW(decode_tween_cell(std::span(bytes.data(), cut), d.width, d.height, d.sample_count()), Error) << cut;
+    std::vector<uint8_t> longer = bytes;
+    longer.push_back(0);
+    EXPECT_THROW(decode_tween_cell(longer, d.width, d.height, d.sample_count()), Error);
+  }
+  EXPECT_THROW(decode_tween_cell(std::vector<uint8_t>(kMaxTweenCellBytes + 1, 0), 256, 256, 24), Error);
+}
