@@ -1,6 +1,7 @@
 // One serialise function per message: reads (with validation), writes and measures.
 #include "protocol/messages.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstring>
@@ -144,7 +145,7 @@ template <class Stream>
 void serialise(Stream& s, AssetAnnounce& m) {
   s.hash(m.hash);
   s.u64(m.size);
-  enumeration(s, m.kind, 1, 5, "asset kind");
+  enumeration(s, m.kind, 1, 6, "asset kind");
   s.text(m.name, kMaxName);
   if constexpr (Stream::reading) {
     check(m.size <= kMaxAssetBytes, "asset larger than 1 GiB");
@@ -169,6 +170,36 @@ void serialise(Stream& s, AssetChunk& m) {
 }
 
 template <class Stream>
+void serialise(Stream& s, Product& m) {
+  s.u16(m.width);
+  s.u16(m.height);
+  const size_t n = s.count(m.directions.size(), kMaxProductSamples, "product samples");
+  if constexpr (Stream::reading) m.directions.resize(n);
+  for (glm::vec3& d : m.directions) {
+    // Unit vectors as 3 x i16 (component x 32767), as in the tween data's header.
+    std::array<uint16_t, 3> q{};
+    if constexpr (!Stream::reading)
+      for (int k = 0; k < 3; ++k) q[size_t(k)] = uint16_t(int16_t(std::lround(std::clamp(d[k], -1.0f, 1.0f) * 32767.0f)));
+    for (uint16_t& v : q) s.u16(v);
+    if constexpr (Stream::reading) {
+      for (int k = 0; k < 3; ++k) d[k] = float(int16_t(q[size_t(k)])) / 32767.0f;
+      check(std::abs(glm::length(d) - 1.0f) < 0.01f, "product sample direction is not a unit vector");
+    }
+  }
+  s.u16(m.cells);
+  s.f32(m.distance_diagonals);
+  s.f32(m.fov_y_degrees);
+  if constexpr (Stream::reading) {
+    const bool empty = m.directions.empty();
+    check(empty ? m.width == 0 && m.height == 0 && m.cells == 0 : m.directions.size() >= 2, "product with fewer than 2 samples");
+    check(empty || (m.width >= 1 && m.height >= 1 && m.width <= 4095 && m.height <= 4095), "product image size outside 1..4095");
+    check(m.cells <= 4 * kMaxProductSamples, "product has too many tween cells");
+    check(m.distance_diagonals > 0.01f && m.distance_diagonals < 1000.0f, "product camera distance outside 0.01..1000 diagonals");
+    check(m.fov_y_degrees >= 1.0f && m.fov_y_degrees <= 170.0f, "product field of view outside 1..170 degrees");
+  }
+}
+
+template <class Stream>
 void serialise(Stream& s, Snapshot& m) {
   s.text(m.session, kMaxName);
   enumeration(s, m.kind, 1, 3, "session kind");
@@ -180,6 +211,7 @@ void serialise(Stream& s, Snapshot& m) {
   serialise(s, m.camera);
   serialise(s, m.object);
   serialise(s, m.expression);
+  serialise(s, m.product);
 }
 
 // Runs a message's serialise function over a writing or measuring stream. The streams take
@@ -215,8 +247,8 @@ SessionKind session_kind_from_string(const std::string& name) {
 }
 
 std::string to_string(AssetKind kind) {
-  static const char* names[] = {"mesh", "image", "samples", "tween", "landmarks"};
-  return unsigned(kind) >= 1 && unsigned(kind) <= 5 ? names[unsigned(kind) - 1] : "unknown";
+  static const char* names[] = {"mesh", "image", "samples", "tween", "landmarks", "matte"};
+  return unsigned(kind) >= 1 && unsigned(kind) <= 6 ? names[unsigned(kind) - 1] : "unknown";
 }
 
 MessageType type_of(const Message& m) { return MessageType(m.index() + 1); }

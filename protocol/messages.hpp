@@ -18,7 +18,7 @@
 namespace inkwire::protocol {
 
 inline constexpr uint32_t kMagic = 0x574B4E49;  // the bytes "INKW" read as a little-endian u32
-inline constexpr uint16_t kVersion = 1;
+inline constexpr uint16_t kVersion = 2;  // 2: snapshots describe a turntable's product
 
 inline constexpr size_t kMaxName = 64;           // session, client and server names
 inline constexpr size_t kMaxToken = 128;
@@ -26,9 +26,10 @@ inline constexpr size_t kMaxReason = 512;
 inline constexpr size_t kMaxRenderer = 128;      // "hatching+sketch-charcoal"
 inline constexpr size_t kMaxSetting = 300;       // one KEY=VALUE
 inline constexpr size_t kMaxSettings = 64;
-inline constexpr size_t kMaxAssets = 32;         // per session
+inline constexpr size_t kMaxAssets = 1024;       // per session: a 360-photo product with mattes, plus its tween data
+inline constexpr size_t kMaxProductSamples = 360; // sample photos of one product (one per degree)
 inline constexpr size_t kMaxChunk = 64 * 1024;   // asset bytes per chunk
-inline constexpr size_t kMaxTween = 16 * 1024;   // one pair's tween data
+inline constexpr size_t kMaxTween = 16 * 1024;   // one cell's tween data
 inline constexpr uint64_t kMaxAssetBytes = uint64_t(1) << 30;
 
 enum class MessageType : uint16_t {
@@ -38,7 +39,8 @@ enum class MessageType : uint16_t {
 inline constexpr uint16_t kMessageTypes = 16;
 
 enum class SessionKind : uint8_t { Scene = 1, Turntable = 2, Conference = 3 };
-enum class AssetKind : uint8_t { Mesh = 1, Image = 2, Samples = 3, Tween = 4, Landmarks = 5 };
+// Samples: a product's sample photos in sample order; Matte: their mattes, in the same order.
+enum class AssetKind : uint8_t { Mesh = 1, Image = 2, Samples = 3, Tween = 4, Landmarks = 5, Matte = 6 };
 enum class ErrorCode : uint16_t {
   BadVersion = 1, Malformed = 2, NoSession = 3, BadToken = 4, NotJoined = 5, NoAsset = 6,
   TooSlow = 7, ShuttingDown = 8, Refused = 9
@@ -129,11 +131,13 @@ struct ExpressionCode {
   std::array<int8_t, 4> params{};
 };
 
-// Encoded tween data (control-point paths) for one pair of sample views.
+// One cell of a product's tween data (control-point paths between two or three samples), in
+// the cell layout of common/tween/tween_data.hpp: sent after the snapshot to members of a
+// turntable session, one message per cell.
 struct TweenData {
   static constexpr MessageType type = MessageType::TweenData;
   bool operator==(const TweenData&) const = default;
-  uint16_t pair = 0;
+  uint16_t pair = 0;  // the cell's index, 0 .. Product::cells - 1
   Bytes data;
 };
 
@@ -162,6 +166,19 @@ struct AssetChunk {
   Bytes data;
 };
 
+// What a turntable session shows (SPEC T11): sample photos of `width` x `height` taken from
+// `directions` (unit, from the object toward the camera, azimuth about +Y from +Z), by a camera
+// `distance_diagonals` bounding-box diagonals away with a `fov_y_degrees` field of view; the
+// photos are the session's Samples assets in sample order (and its Matte assets, if any), and
+// `cells` tween-data messages follow the snapshot. Empty (no directions) in other sessions.
+struct Product {
+  bool operator==(const Product&) const = default;
+  uint16_t width = 0, height = 0;
+  std::vector<glm::vec3> directions;
+  uint16_t cells = 0;
+  float distance_diagonals = 1.4f, fov_y_degrees = 45.0f;
+};
+
 // Everything a client needs to draw a session: sent on join and whenever a client asks again.
 struct Snapshot {
   static constexpr MessageType type = MessageType::Snapshot;
@@ -174,6 +191,7 @@ struct Snapshot {
   CameraPose camera;
   ObjectPose object;
   ExpressionCode expression;
+  Product product;
 };
 
 // Alternatives in MessageType order: index + 1 == type code.

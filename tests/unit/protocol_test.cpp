@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/vec3.hpp>
+
 #include "protocol/framing.hpp"
 
 using namespace inkwire::protocol;
@@ -30,7 +32,9 @@ std::vector<Message> every_message() {
           Join{.session = "demo", .token = "s3cret"},
           Leave{},
           Snapshot{.session = "demo", .kind = SessionKind::Turntable, .revision = 17, .assets = {asset, asset},
-                   .style = style, .camera = camera, .object = object, .expression = expression},
+                   .style = style, .camera = camera, .object = object, .expression = expression,
+                   .product = {.width = 512, .height = 384, .directions = {{0, 0, 1}, {1, 0, 0}, {0, 0, -1}, {-1, 0, 0}},
+                               .cells = 4, .distance_diagonals = 1.4f, .fov_y_degrees = 45}},
           style,
           camera,
           object,
@@ -152,6 +156,17 @@ TEST(ProtocolTest, ValuesOutOfRangeAreRejected) {
   reject(Join{.session = "demo\n", .token = ""});
   reject(AssetAnnounce{.hash = {}, .size = 1, .kind = AssetKind::Mesh, .name = "../passwd"});
   reject(AssetRequest{.hash = {}, .offset = 0, .length = 0});
+  auto product = [](Product p) {
+    return Snapshot{.session = "shop", .kind = SessionKind::Turntable, .revision = 0, .assets = {}, .style = {}, .camera = {},
+                    .object = {}, .expression = {}, .product = std::move(p)};
+  };
+  const std::vector<glm::vec3> ring = {{0, 0, 1}, {1, 0, 0}, {0, 0, -1}};
+  reject(product({.width = 0, .height = 0, .directions = ring, .cells = 3}));                                   // no size
+  reject(product({.width = 64, .height = 64, .directions = {{0, 0, 1}}, .cells = 0}));                         // one sample
+  reject(product({.width = 64, .height = 64, .directions = {{0, 0, 1}, {0, 0, 0.5f}}, .cells = 1}));           // not unit
+  reject(product({.width = 5000, .height = 64, .directions = ring, .cells = 3}));                              // too large
+  reject(product({.width = 0, .height = 0, .directions = {}, .cells = 3}));                                    // cells of nothing
+  reject(product({.width = 64, .height = 64, .directions = ring, .cells = 3, .distance_diagonals = 0}));      // no distance
   Bytes bad_kind = encode(AssetAnnounce{.hash = {}, .size = 1, .kind = AssetKind::Mesh, .name = "a.off"});
   bad_kind[kHeaderBytes + 32 + 8] = 9;
   EXPECT_THROW(decode(MessageType::AssetAnnounce, bad_kind.data() + kHeaderBytes, bad_kind.size() - kHeaderBytes), ProtocolError);
