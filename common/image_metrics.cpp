@@ -1,5 +1,6 @@
 #include "common/image_metrics.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -64,6 +65,52 @@ double ssim(const Image& a, const Image& b) {
   cv::Mat map;
   cv::divide(numerator, denominator, map);
   return cv::mean(map)[0];
+}
+
+double matte_iou(const Image& a, const Image& b) {
+  check_sizes(a, b);
+  size_t both = 0, either = 0;
+  for (size_t i = 3; i < a.pixels.size(); i += 4) {
+    const bool in_a = a.pixels[i] >= 128, in_b = b.pixels[i] >= 128;
+    both += in_a && in_b;
+    either += in_a || in_b;
+  }
+  return either == 0 ? 1.0 : double(both) / double(either);
+}
+
+double ghost_fraction(const Image& image) {
+  const int w = image.width, h = image.height;
+  auto alpha = [&](int x, int y) { return image.at(std::clamp(x, 0, w - 1), std::clamp(y, 0, h - 1))[3]; };
+  size_t object = 0, ghost = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const int a = alpha(x, y);
+      if (a <= 25) continue;
+      ++object;
+      if (a >= 230) continue;
+      // An antialiased edge pixel has a fully covered and an empty pixel within one step.
+      bool full = false, empty = false;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          full = full || alpha(x + dx, y + dy) >= 230;
+          empty = empty || alpha(x + dx, y + dy) <= 25;
+        }
+      if (!(full && empty)) ++ghost;
+    }
+  return object == 0 ? 0.0 : double(ghost) / double(object);
+}
+
+Image over_colour(const Image& image, glm::u8vec3 colour, bool premultiplied) {
+  Image out = image;
+  for (size_t i = 0; i < out.pixels.size(); i += 4) {
+    const int a = image.pixels[i + 3];
+    for (int c = 0; c < 3; ++c) {
+      const int src = premultiplied ? image.pixels[i + size_t(c)] : (image.pixels[i + size_t(c)] * a + 127) / 255;
+      out.pixels[i + size_t(c)] = uint8_t(std::min(255, src + (colour[c] * (255 - a) + 127) / 255));
+    }
+    out.pixels[i + 3] = 255;
+  }
+  return out;
 }
 
 }  // namespace inkwire
