@@ -170,6 +170,7 @@ TEST(TweenGLTest, OnePassViewsMatchPerSamplePassesInTheFrame) {
       StyleParams params(TweenRenderer::params());
       params.set("method", method);
       params.set("passes", k == 0 ? "one" : "per-sample");
+      params.set("compose", "sum");  // the study's way in both: per-sample passes only add up
       tween.configure(params);
       tween.prepare(cow);
       // Off the samples and nearer than they were taken, so the view is warped and zoomed.

@@ -1,7 +1,10 @@
 #include "client/render/tween/image_warper.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
+
+#include <opencv2/imgproc.hpp>
 
 #include "common/error.hpp"
 
@@ -24,6 +27,43 @@ gl::Texture make_sample_texture(const Image& image) {
   return gl::Texture::from_image(premultiplied, {.repeat = false, .mipmaps = false, .linear = true});
 }
 
+Image matte_sample(const Image& image) {
+  const int w = image.width, h = image.height;
+  cv::Mat inside(h, w, CV_8U), outside(h, w, CV_8U);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const bool in = image.at(x, y)[3] >= 128;
+      inside.at<uint8_t>(y, x) = in ? 255 : 0;
+      outside.at<uint8_t>(y, x) = in ? 0 : 255;
+    }
+  // Distances to the nearest pixel of the other side; labels say which pixel, for bleeding colour.
+  cv::Mat to_object, to_background, nearest_object;
+  cv::distanceTransform(outside, to_object, nearest_object, cv::DIST_L2, cv::DIST_MASK_5, cv::DIST_LABEL_PIXEL);
+  cv::distanceTransform(inside, to_background, cv::DIST_L2, cv::DIST_MASK_5);
+  std::vector<cv::Point> object_pixel_of_label(size_t(w) * h + 1, cv::Point(-1, -1));
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (inside.at<uint8_t>(y, x)) object_pixel_of_label[size_t(nearest_object.at<int>(y, x))] = {x, y};
+  Image out = image;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const bool in = inside.at<uint8_t>(y, x) != 0;
+      // The outline lies half a pixel beyond the last pixel of either side.
+      const float d = in ? to_background.at<float>(y, x) - 0.5f : 0.5f - to_object.at<float>(y, x);
+      uint8_t* p = out.at(x, y);
+      if (!in) {
+        const cv::Point src = object_pixel_of_label[size_t(nearest_object.at<int>(y, x))];
+        if (src.x >= 0) std::copy_n(image.at(src.x, src.y), 3, p);
+      }
+      p[3] = uint8_t(std::lround(std::clamp(0.5f + d / (2.0f * kMatteRange), 0.0f, 1.0f) * 255.0f));
+    }
+  return out;
+}
+
+gl::Texture make_matte_texture(const Image& image) {
+  return gl::Texture::from_image(matte_sample(image), {.repeat = false, .mipmaps = false, .linear = true});
+}
+
 ImageWarper::ImageWarper(int width, int height)
     : width_(width),
       height_(height),
@@ -38,8 +78,11 @@ ImageWarper::ImageWarper(int width, int height)
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target_.id(), 0);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
   fbo_.check_complete("ImageWarper target");
-  for (int n = 1; n <= 3; ++n)
+  for (int n = 1; n <= 3; ++n) {
     blend_.push_back(gl::Program::from_files({"tween/blend.vert", "tween/blend.frag"}, {"SAMPLES " + std::to_string(n)}));
+    blend_matte_.push_back(gl::Program::from_files({"tween/blend.vert", "tween/blend.frag"},
+                                                   {"SAMPLES " + std::to_string(n), "MATTE", "MATTE_RANGE " + std::to_string(kMatteRange)}));
+  }
 }
 
 namespace {
@@ -78,7 +121,7 @@ void ImageWarper::blend(int mesh, const glm::vec3& position_weights, std::span<c
                         const glm::vec4& to_clip) const {
   if (sources.empty() || sources.size() > 3) throw Error("ImageWarper: a view is made of 1 to 3 samples");
   const Mesh& m = meshes_.at(size_t(mesh));
-  const gl::Program& program = blend_[sources.size() - 1];
+  const gl::Program& program = (matte_ ? blend_matte_ : blend_)[sources.size() - 1];
   program.use();
   glm::ivec3 source(0);
   glm::vec3 weights(0.0f);

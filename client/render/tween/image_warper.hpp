@@ -36,10 +36,21 @@ struct WarpSource {
 // A sample image as the warper reads it: premultiplied alpha, linear filtering, no wrap.
 gl::Texture make_sample_texture(const Image& image);
 
+// A sample with a matte (its alpha) as the warper reads it when composing by mattes: colour
+// bled outward past the outline, alpha the signed distance to the outline (0.5 on it, +-1 at
+// kMatteRange pixels inside / outside), so it interpolates under a warp and a blend.
+inline constexpr float kMatteRange = 16.0f;
+Image matte_sample(const Image& image);
+gl::Texture make_matte_texture(const Image& image);
+
 class ImageWarper {
  public:
   // The target (and every sample image) is `width` x `height` pixels.
   ImageWarper(int width, int height);
+
+  // Compose one-pass views by mattes (sources made by make_matte_texture): one outline, no
+  // ghost of either sample's edge. Off: the plain weighted sum (premultiplied sources).
+  void set_matte(bool matte) { matte_ = matte; }
 
   // Uploads a mesh once; returns its handle for pass().
   int add_mesh(const WarpMesh& mesh);
@@ -80,7 +91,8 @@ class ImageWarper {
   void blend(int mesh, const glm::vec3& position_weights, std::span<const WarpSource> sources, const glm::vec4& to_clip) const;
   int width_, height_;
   gl::Program warp_, composite_;
-  std::vector<gl::Program> blend_;  // one program per number of sources (1-3)
+  std::vector<gl::Program> blend_, blend_matte_;  // one program per number of sources (1-3)
+  bool matte_ = false;
   gl::Texture target_;
   gl::Renderbuffer depth_;
   gl::Framebuffer fbo_;

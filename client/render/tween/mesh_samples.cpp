@@ -148,13 +148,24 @@ TweenCell exact_cell(const MeshSamples& samples, const SceneObject& object, cons
   std::vector<bool> on_outline;
   for (const glm::vec3& v : object.mesh.positions) {
     ControlPoint p;
-    bool visible = true;
-    for (size_t k = 0; k < cell.size() && visible; ++k) {
+    // Visible in every sample of the cell; or on the outline of one sample and hidden in the
+    // others, where it goes to its projection behind what hides it: that moves the outline of
+    // a part that turns into or out of sight (a leg, the far flank) to where it truly goes,
+    // and the other samples' mattes are "inside" there too, so the outlines still agree.
+    int seen = 0;
+    bool seen_on_outline = false, inside_image = true;
+    for (size_t k = 0; k < cell.size(); ++k) {
+      const glm::vec3 projected = samples.project(cell[k], v);
+      inside_image = inside_image && projected.x >= 0.0f && projected.y >= 0.0f && projected.x < float(samples.size) &&
+                     projected.y < float(samples.size);
       const auto at = samples.visible_position(cell[k], v);
-      visible = at.has_value();
-      if (visible) p[pair ? 2 * k : k] = *at;
+      p[pair ? 2 * k : k] = at ? *at : glm::vec2(projected);
+      if (at) {
+        ++seen;
+        seen_on_outline = seen_on_outline || samples.near_background(cell[k], *at);
+      }
     }
-    if (!visible) continue;
+    if (!inside_image || !(seen == int(cell.size()) || (seen > 0 && seen_on_outline))) continue;
     if (pair) {
       const glm::vec4 clip = halfway_vp * glm::vec4(v, 1.0f);
       p[1] = {(clip.x / clip.w * 0.5f + 0.5f) * float(samples.size), (0.5f - clip.y / clip.w * 0.5f) * float(samples.size)};

@@ -11,15 +11,17 @@
 
 namespace inkwire {
 
-void validate(const TweenModel& m) {
-  if (m.images.size() != size_t(m.data.sample_count()))
+void validate(const TweenModel& m, bool partial) {
+  if (m.images.size() != size_t(m.data.sample_count()) && !(partial && m.images.empty()))
     throw Error("tween model: " + std::to_string(m.images.size()) + " images for " + std::to_string(m.data.sample_count()) + " samples");
+  if (m.data.width < 1 || m.data.height < 1 || m.data.width > kMaxTweenImageSide || m.data.height > kMaxTweenImageSide)
+    throw Error("tween model: image size " + std::to_string(m.data.width) + "x" + std::to_string(m.data.height) + " is not allowed");
   for (size_t i = 0; i < m.images.size(); ++i)
-    if (m.images[i].width != m.data.width || m.images[i].height != m.data.height)
+    if (!(partial && m.images[i].empty()) && (m.images[i].width != m.data.width || m.images[i].height != m.data.height))
       throw Error("tween model: sample " + std::to_string(i) + " is " + std::to_string(m.images[i].width) + "x" +
                   std::to_string(m.images[i].height) + ", the tween data says " + std::to_string(m.data.width) + "x" +
                   std::to_string(m.data.height));
-  if (m.data.cells.empty()) throw Error("tween model: no cells");
+  if (m.data.cells.empty() && !partial) throw Error("tween model: no cells");
 }
 
 std::vector<ParamSpec> TweenRenderer::params() {
@@ -37,6 +39,8 @@ std::vector<ParamSpec> TweenRenderer::params() {
       int_param("points", "65", 3, 2000, "control points per sample pair or triangle"),
       int_param("sample_size", "256", 32, 2048, "sample images are this many pixels square"),
       text_param("sample_style", "default", "the style the samples are rendered in"),
+      choice_param("compose", "matte", {"matte", "sum"},
+                   "matte: one outline where the warped samples' mattes agree (no ghosted edge); sum: the plain weighted sum"),
   };
 }
 
@@ -50,6 +54,11 @@ void TweenRenderer::configure(const StyleParams& p) {
   points_ = p.get_int("points");
   sample_size_ = p.get_int("sample_size");
   sample_style_ = p.get_text("sample_style");
+  // Per-sample passes are the study's additive sum; composing by mattes reads every sample at once.
+  matte_ = p.get_text("compose") == "matte" && one_pass_;
+  if (warper_) warper_->set_matte(matte_);
+  if (warper_ && !model_.images.empty() && textures_.size() == model_.images.size())
+    for (size_t i = 0; i < model_.images.size(); ++i) set_sample(int(i), model_.images[i]);  // textures follow the compose mode
   if (sample_style_ == "tween") throw Error("sample_style cannot be tween itself");
 }
 
@@ -93,28 +102,96 @@ void TweenRenderer::use_model(TweenModel model) {
   upload();
 }
 
+void TweenRenderer::begin_model(TweenModel model) {
+  validate(model, true);
+  if (model.images.empty()) model.images.resize(size_t(model.data.sample_count()));
+  model_ = std::move(model);
+  object_ = nullptr;
+  built_for_.clear();
+  upload();
+}
+
+void TweenRenderer::set_sample(int index, const Image& image) {
+  if (index < 0 || index >= model_.data.sample_count()) throw Error("tween: sample " + std::to_string(index) + " is not in the model");
+  if (image.width != model_.data.width || image.height != model_.data.height)
+    throw Error("tween: sample " + std::to_string(index) + " is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                ", not " + std::to_string(model_.data.width) + "x" + std::to_string(model_.data.height));
+  if (&model_.images[size_t(index)] != &image) model_.images[size_t(index)] = image;
+  last_view_ = {};  // it may point at the texture about to go
+  textures_[size_t(index)] = std::make_unique<gl::Texture>(matte_ ? make_matte_texture(image) : make_sample_texture(image));
+}
+
+void TweenRenderer::add_cell(TweenCell cell) {
+  for (uint16_t s : cell.samples)
+    if (s >= model_.data.sample_count()) throw Error("tween: a cell names sample " + std::to_string(s) + " of " + std::to_string(model_.data.sample_count()));
+  add_cell_mesh(cell);
+  model_.data.cells.push_back(std::move(cell));
+  bytes_per_cell_ = model_.data.sample_count() >= 2 ? double(encode_tween(model_.data).size()) / double(model_.data.cells.size()) : 0.0;
+}
+
+int TweenRenderer::samples_loaded() const {
+  return int(std::count_if(textures_.begin(), textures_.end(), [](const auto& t) { return t != nullptr; }));
+}
+
+void TweenRenderer::add_cell_mesh(const TweenCell& cell) {
+  meshes_.push_back(warper_->add_mesh(build_warp_mesh(cell, model_.data.width, model_.data.height)));
+}
+
 void TweenRenderer::upload() {
   last_view_ = {};  // it points into the textures about to go
   warper_ = std::make_unique<ImageWarper>(model_.data.width, model_.data.height);
+  warper_->set_matte(matte_);
   textures_.clear();
-  for (const Image& image : model_.images) textures_.push_back(make_sample_texture(image));
-  bytes_per_cell_ = double(encode_tween(model_.data).size()) / double(model_.data.cells.size());
+  textures_.resize(model_.images.size());
+  for (size_t i = 0; i < model_.images.size(); ++i)
+    if (!model_.images[i].empty()) set_sample(int(i), model_.images[i]);
+  bytes_per_cell_ = model_.data.cells.empty() ? 0.0 : double(encode_tween(model_.data).size()) / double(model_.data.cells.size());
   meshes_.clear();
-  for (const TweenCell& cell : model_.data.cells)
-    meshes_.push_back(warper_->add_mesh(build_warp_mesh(cell, model_.data.width, model_.data.height)));
+  for (const TweenCell& cell : model_.data.cells) add_cell_mesh(cell);
+  plain_mesh_ = warper_->add_mesh(build_warp_mesh(TweenCell{.samples = {0, 1}, .points = {}}, model_.data.width, model_.data.height));
+}
+
+TweenRenderer::View TweenRenderer::nearest_loaded(const glm::vec3& direction) {
+  View view;
+  const glm::vec3 d = glm::normalize(direction);
+  float best = -2.0f;
+  for (int i = 0; i < model_.data.sample_count(); ++i) {
+    if (!textures_[size_t(i)]) continue;
+    const float c = glm::dot(glm::normalize(model_.data.directions[size_t(i)]), d);
+    if (c > best) {
+      best = c;
+      view.mesh = plain_mesh_;
+      view.positions = {1.0f, 0.0f, 0.0f};
+      view.sources = {WarpSource{textures_[size_t(i)].get(), 0, 1.0f}};
+    }
+  }
+  return view;
 }
 
 TweenRenderer::View TweenRenderer::plan(const FrameState& frame) {
-  const CellLocation at = locate_view(model_.data, frame.eye_in_object_space() - model_.bounds.centre());
+  const glm::vec3 direction = frame.eye_in_object_space() - model_.bounds.centre();
+  const CellLocation at = locate_view(model_.data, direction);
   last_cell_ = at.cell;
-  if (at.cell < 0) return {};
+  const View fallback = nearest_loaded(direction);
+  if (at.cell < 0) return fallback;
   const TweenCell& cell = model_.data.cells[size_t(at.cell)];
   const bool pair = cell.is_pair();
   const int n = int(cell.samples.size());
+  // Until every sample of the view's cell is there (and the cell holds the nearest of those that
+  // are), the nearest sample that is there shows.
+  bool whole = true, holds_nearest = false;
+  for (uint16_t s : cell.samples) {
+    whole = whole && textures_[s] != nullptr;
+    holds_nearest = holds_nearest || (!fallback.sources.empty() && textures_[s].get() == fallback.sources[0].image);
+  }
+  if (!whole || !holds_nearest) {
+    last_cell_ = -1;
+    return fallback;
+  }
   // Which stored position of a point belongs to the cell's k-th sample, and where the view puts it.
   auto slot = [&](int k) { return pair ? 2 * k : k; };
   auto source = [&](int k, int position, float weight) {
-    return WarpSource{&textures_[cell.samples[size_t(k)]], position, weight};
+    return WarpSource{textures_[cell.samples[size_t(k)]].get(), position, weight};
   };
   auto own_positions = [&](int k) {
     glm::vec3 w(0.0f);
@@ -178,9 +255,10 @@ void TweenRenderer::draw(const FrameState& frame) {
 
 std::map<std::string, double> TweenRenderer::counters() const {
   std::map<std::string, double> c;
-  if (last_cell_ >= 0) c["triangles"] = double(warper_->triangles(meshes_[size_t(last_cell_)]));
+  if (last_cell_ >= 0 && warper_) c["triangles"] = double(warper_->triangles(meshes_[size_t(last_cell_)]));
   c["passes"] = last_passes_;
   c["cell"] = last_cell_;
+  c["samples_loaded"] = samples_loaded();
   if (warper_) c["bytes_per_cell"] = bytes_per_cell_;
   return c;
 }

@@ -33,7 +33,8 @@ struct TweenModel {
 };
 
 // Checks that images and data agree (count, sizes). Throws inkwire::Error naming the mismatch.
-void validate(const TweenModel& model);
+// With `partial`, images may be empty (not there yet) and cells may be missing.
+void validate(const TweenModel& model, bool partial = false);
 
 class TweenRenderer final : public Renderer {
  public:
@@ -43,6 +44,14 @@ class TweenRenderer final : public Renderer {
   void prepare(const SceneObject& object) override;
   // Uses samples from outside instead (photos + tween data); replaces any prepared mesh.
   void use_model(TweenModel model);
+  // The same, arriving piece by piece (a product over the network, SPEC T12): `model` names the
+  // samples' directions and size, its images may be empty and its cells few or none; the rest
+  // comes through set_sample() and add_cell(). Until a view's cell and both its samples are
+  // there, the nearest sample that is shows.
+  void begin_model(TweenModel model);
+  void set_sample(int index, const Image& image);
+  void add_cell(TweenCell cell);
+  int samples_loaded() const;
   const TweenModel& model() const { return model_; }
   void draw(const FrameState& frame) override;
   std::map<std::string, double> counters() const override;
@@ -60,6 +69,8 @@ class TweenRenderer final : public Renderer {
   void build_from_mesh();
   void upload();
   View plan(const FrameState& frame);
+  View nearest_loaded(const glm::vec3& direction);
+  void add_cell_mesh(const TweenCell& cell);
   std::string method_ = "bilinear", layout_ = "auto";
   bool one_pass_ = true;
   OverlapMode overlap_ = OverlapMode::Layered;
@@ -69,8 +80,10 @@ class TweenRenderer final : public Renderer {
   const SceneObject* object_ = nullptr;
   TweenModel model_;
   std::unique_ptr<ImageWarper> warper_;
-  std::vector<gl::Texture> textures_;
+  std::vector<std::unique_ptr<gl::Texture>> textures_;  // per sample; null until its image is there
   std::vector<int> meshes_;  // per cell
+  int plain_mesh_ = -1;      // the border alone: a sample drawn as it is
+  bool matte_ = true;
   View last_view_;
   int last_cell_ = -1, last_passes_ = 0;
   double bytes_per_cell_ = 0.0;  // the model's tween data as the codec writes it
