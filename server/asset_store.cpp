@@ -6,6 +6,7 @@
 
 #include "common/content_hash.hpp"
 #include "common/error.hpp"
+#include "common/log.hpp"
 #include "protocol/framing.hpp"
 
 namespace inkwire::server {
@@ -58,6 +59,16 @@ class Statement {
   sqlite3_stmt* stmt_ = nullptr;
 };
 
+// A state is a snapshot frame: read back through the same validating decoder as the wire.
+protocol::Snapshot decode_state(const protocol::Bytes& frame) {
+  if (frame.size() < protocol::kHeaderBytes) throw Error("no state stored");
+  const auto header = protocol::parse_header(frame.data());
+  auto message = protocol::decode(header.type, frame.data() + protocol::kHeaderBytes, frame.size() - protocol::kHeaderBytes);
+  auto* snapshot = std::get_if<protocol::Snapshot>(&message);
+  if (!snapshot) throw Error("stored state is not a snapshot");
+  return std::move(*snapshot);
+}
+
 }  // namespace
 
 AssetStore::AssetStore(const fs::path& dir) : dir_(dir) {
@@ -75,6 +86,8 @@ AssetStore::AssetStore(const fs::path& dir) : dir_(dir) {
   exec("PRAGMA synchronous=NORMAL");
   exec("CREATE TABLE IF NOT EXISTS assets (hash TEXT PRIMARY KEY, size INTEGER NOT NULL, kind INTEGER NOT NULL, "
        "name TEXT NOT NULL, added TEXT NOT NULL DEFAULT CURRENT_TIMESTAMP)");
+  exec("CREATE TABLE IF NOT EXISTS products (key TEXT PRIMARY KEY, state BLOB NOT NULL, "
+       "added TEXT NOT NULL DEFAULT CURRENT_TIMESTAMP)");
   exec("CREATE TABLE IF NOT EXISTS sessions (name TEXT PRIMARY KEY, kind TEXT NOT NULL, token TEXT NOT NULL, "
        "state BLOB NOT NULL, updated TEXT NOT NULL DEFAULT CURRENT_TIMESTAMP)");
 }
@@ -112,6 +125,40 @@ AssetAnnounce AssetStore::add_file(const fs::path& source, protocol::AssetKind k
   return announce;
 }
 
+AssetAnnounce AssetStore::add_bytes(const protocol::Bytes& bytes, protocol::AssetKind kind, const std::string& name) {
+  if (bytes.size() > protocol::kMaxAssetBytes) throw Error("asset '" + name + "' is larger than 1 GiB");
+  AssetAnnounce announce{.hash = content_hash(bytes.data(), bytes.size()), .size = bytes.size(), .kind = kind, .name = name};
+  const fs::path target = asset_path(announce.hash);
+  if (!fs::exists(target)) {
+    const fs::path partial = target.string() + ".partial";
+    {
+      std::ofstream out(partial, std::ios::binary | std::ios::trunc);
+      out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+      if (!out) throw Error("cannot store asset '" + name + "': write failed");
+    }
+    std::error_code ec;
+    fs::rename(partial, target, ec);
+    if (ec) throw Error("cannot store asset '" + name + "': " + ec.message());
+  }
+  Statement(db_, "INSERT OR REPLACE INTO assets (hash, size, kind, name) VALUES (?, ?, ?, ?)")
+      .bind(1, to_hex(announce.hash)).bind(2, int64_t(bytes.size())).bind(3, int64_t(kind)).bind(4, name).step();
+  return announce;
+}
+
+protocol::Bytes AssetStore::read_verified(const protocol::Hash& hash) const {
+  const auto announce = find(hash);
+  if (!announce) throw Error("no asset " + to_hex(hash));
+  std::ifstream in(asset_path(hash), std::ios::binary);
+  if (!in) throw Error("asset file of " + announce->name + " is missing from the store");
+  protocol::Bytes bytes(size_t(announce->size));
+  in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(bytes.size()));
+  if (size_t(in.gcount()) != bytes.size() || in.peek() != EOF)
+    throw Error("asset file of " + announce->name + " is not the size catalogued");
+  if (content_hash(bytes.data(), bytes.size()) != hash)
+    throw Error("asset file of " + announce->name + " does not match its hash (corrupted)");
+  return bytes;
+}
+
 std::optional<AssetAnnounce> AssetStore::find(const protocol::Hash& hash) const {
   Statement q(db_, "SELECT size, kind, name FROM assets WHERE hash = ?");
   q.bind(1, to_hex(hash));
@@ -136,16 +183,28 @@ std::vector<StoredSession> AssetStore::sessions() const {
   std::vector<StoredSession> out;
   Statement q(db_, "SELECT name, token, state FROM sessions ORDER BY name");
   while (q.step()) {
-    const protocol::Bytes frame = q.blob(2);
-    // The state is a snapshot frame: read back through the same validating decoder as the wire.
-    if (frame.size() < protocol::kHeaderBytes) throw Error("catalogue: session " + q.text(0) + " has no state");
-    const auto header = protocol::parse_header(frame.data());
-    auto message = protocol::decode(header.type, frame.data() + protocol::kHeaderBytes, frame.size() - protocol::kHeaderBytes);
-    auto* snapshot = std::get_if<protocol::Snapshot>(&message);
-    if (!snapshot) throw Error("catalogue: session " + q.text(0) + " state is not a snapshot");
-    out.push_back({q.text(1), std::move(*snapshot)});
+    try {
+      out.push_back({q.text(1), decode_state(q.blob(2))});
+    } catch (const Error& e) {
+      log_warn("session-state-unreadable", {{"session", q.text(0)}, {"reason", e.what()}});
+    }
   }
   return out;
+}
+
+void AssetStore::save_product(const std::string& key, const protocol::Snapshot& state) {
+  Statement(db_, "INSERT OR REPLACE INTO products (key, state) VALUES (?, ?)").bind(1, key).bind_blob(2, protocol::encode(state)).step();
+}
+
+std::optional<protocol::Snapshot> AssetStore::find_product(const std::string& key) const {
+  Statement q(db_, "SELECT state FROM products WHERE key = ?");
+  q.bind(1, key);
+  if (!q.step()) return std::nullopt;
+  try {
+    return decode_state(q.blob(0));
+  } catch (const Error&) {
+    return std::nullopt;  // from an older version: made again
+  }
 }
 
 void AssetStore::save_session(const StoredSession& session) {

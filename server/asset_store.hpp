@@ -31,13 +31,24 @@ class AssetStore {
   // Copies a file into the store (once per content) and catalogues it under `name` (default:
   // the file's name). Throws inkwire::Error if it cannot be read or is over the size limit.
   protocol::AssetAnnounce add_file(const std::filesystem::path& source, protocol::AssetKind kind, std::string name = "");
+  // The same for bytes in memory.
+  protocol::AssetAnnounce add_bytes(const protocol::Bytes& bytes, protocol::AssetKind kind, const std::string& name);
   std::optional<protocol::AssetAnnounce> find(const protocol::Hash& hash) const;
+  // The whole asset, read back and checked against its hash. Throws inkwire::Error if it is
+  // unknown, missing, or its bytes are no longer what was stored (a corrupted file).
+  protocol::Bytes read_verified(const protocol::Hash& hash) const;
   // Up to `length` bytes at `offset` (fewer at the end). Throws inkwire::Error if the asset is
   // unknown, its file is missing, or the offset is past its end.
   protocol::Bytes read(const protocol::Hash& hash, uint64_t offset, uint32_t length) const;
 
+  // Sessions whose stored state this version cannot read (an older protocol) are left out and
+  // logged, so the configured defaults take their place.
   std::vector<StoredSession> sessions() const;
   void save_session(const StoredSession& session);
+
+  // Products by key (product_store.hpp): the state of a session that shows the product.
+  void save_product(const std::string& key, const protocol::Snapshot& state);
+  std::optional<protocol::Snapshot> find_product(const std::string& key) const;
 
   const std::filesystem::path& dir() const { return dir_; }
 

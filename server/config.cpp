@@ -33,6 +33,21 @@ FaceSourceConfig face_source_from_json(const SessionConfig& session, const nlohm
   return face;
 }
 
+ProductSource product_from_json(const SessionConfig& session, const nlohmann::json& j) {
+  if (session.kind != SessionKind::Turntable) throw Error("session '" + session.name + "': only turntable sessions take a product");
+  ProductSource p;
+  p.photos = j.value("photos", "");
+  p.mesh = j.value("mesh", "");
+  if (p.photos.empty() == p.mesh.empty()) throw Error("session '" + session.name + "': a product is made from \"photos\" or a \"mesh\", one of the two");
+  p.photo_options.step_degrees = j.value("step", 0.0f);
+  p.photo_options.arc_degrees = j.value("arc", 0.0f);
+  p.photo_options.max_side = j.value("max_side", 512);
+  p.photo_options.matte = j.value("matte", "auto");
+  p.mesh_options.samples = j.value("samples", 24);
+  p.mesh_options.size = j.value("size", 512);
+  return p;
+}
+
 }  // namespace
 
 void parse_listen(const std::string& text, ServerConfig& config) {
@@ -49,7 +64,7 @@ ServerConfig ServerConfig::embedded_default() {
   ServerConfig c;
   // Debian-packaged models: libcgal-demo's meshes (extracted at build time) and assimp-testmodels.
   const fs::path cgal = INKWIRE_MESH_DIR;
-  const fs::path engine = "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
+  const fs::path truck = "/usr/share/assimp/models/glTF/CesiumMilkTruck/CesiumMilkTruck.gltf";
   auto session = [&](std::string name, SessionKind kind, const fs::path& model, std::string style) {
     SessionConfig s{.name = std::move(name), .kind = kind, .token = "", .assets = {}, .style = std::move(style), .settings = {}, .face = {}};
     if (!model.empty() && fs::exists(model)) s.assets.push_back({model, AssetKind::Mesh});
@@ -57,7 +72,13 @@ ServerConfig ServerConfig::embedded_default() {
   };
   session("demo", SessionKind::Scene, cgal / "cow.off", "comic-extended");
   session("sketchbook", SessionKind::Scene, cgal / "bull.off", "sketch-pencil");
-  session("turntable", SessionKind::Turntable, engine, "default");
+  // The turntable's product: the textured truck rendered into 24 photos on the server.
+  if (fs::exists(truck)) {
+    SessionConfig t{.name = "turntable", .kind = SessionKind::Turntable, .token = "", .assets = {}, .style = "tween", .settings = {},
+                    .face = {}, .product = ProductSource{}};
+    t.product->mesh = truck;
+    c.sessions.push_back(std::move(t));
+  }
   session("conference", SessionKind::Conference, {}, "default");
   return c;
 }
@@ -84,6 +105,7 @@ ServerConfig ServerConfig::load(const fs::path& file) {
         for (const auto& a : s.value("assets", nlohmann::json::array()))
           session.assets.push_back({a.at("path").get<std::string>(), asset_kind_from_string(a.value("kind", "mesh"))});
         if (s.contains("face")) session.face = face_source_from_json(session, s.at("face"));
+        if (s.contains("product")) session.product = product_from_json(session, s.at("product"));
         c.sessions.push_back(std::move(session));
       }
     }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "protocol/messages.hpp"
+#include "server/products/product_store.hpp"
 
 namespace inkwire::server {
 
@@ -35,6 +36,7 @@ struct SessionConfig {
   std::string style = "default";
   std::vector<std::string> settings;  // KEY=VALUE
   std::optional<FaceSourceConfig> face;  // conference sessions only
+  std::optional<ProductSource> product;  // turntable sessions: made (once) when the catalogue lacks the session
 };
 
 struct ServerConfig {

@@ -186,11 +186,16 @@ void Connection::join(const Join& join) {
     send(ErrorMessage{.code = ErrorCode::BadToken, .reason = "wrong token for session '" + join.session + "'"});
     return;
   }
+  if (!session->unavailable().empty()) {
+    send(ErrorMessage{.code = ErrorCode::NoAsset, .reason = "session '" + join.session + "' cannot be shown: " + session->unavailable()});
+    return;
+  }
   leave_session();
   session_ = session;
   session_->join(shared_from_this());
   log_info("join", {{"client", id_}, {"name", client_name_}, {"session", join.session}, {"members", session_->members()}});
   send(session_->state());
+  for (const auto& frame : session_->tween_frames()) send_frame(frame, MessageType::TweenData);
 }
 
 void Connection::leave_session() {

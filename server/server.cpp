@@ -8,6 +8,7 @@
 #include "common/log.hpp"
 #include "server/connection.hpp"
 #include "server/face/face_feed.hpp"
+#include "server/products/product_store.hpp"
 
 namespace inkwire::server {
 namespace fs = std::filesystem;
@@ -47,6 +48,16 @@ void Server::create_sessions() {
   for (const SessionConfig& c : config_.sessions) {
     if (sessions_.count(c.name)) continue;
     StoredSession stored{.token = c.token, .state = {}};
+    if (c.product) {
+      try {
+        stored.state = find_or_make_product(store_, *c.product, c.name, [&](int done, int total, const std::string& line) {
+          log_info("product-pair", {{"session", c.name}, {"done", done}, {"total", total}, {"pair", line}});
+        });
+      } catch (const Error& e) {
+        log(LogLevel::Error, "product-failed", {{"session", c.name}, {"source", c.product->describe()}, {"reason", e.what()}});
+        continue;
+      }
+    }
     stored.state.session = c.name;
     stored.state.kind = c.kind;
     stored.state.style = {.renderer = c.style, .settings = c.settings};
@@ -56,6 +67,18 @@ void Server::create_sessions() {
     store_.save_session(stored);
     log_info("session-created", {{"session", c.name}, {"kind", protocol::to_string(c.kind)}, {"assets", stored.state.assets.size()}});
     sessions_[c.name] = std::make_shared<Session>(std::move(stored));
+  }
+  // Products are checked (every file against its hash) and their tween data readied once.
+  for (auto& [name, session] : sessions_) {
+    if (session->state().kind != protocol::SessionKind::Turntable || session->state().product.directions.empty()) continue;
+    try {
+      session->set_product(product_tween_messages(store_, session->state()));
+      log_info("product-loaded", {{"session", name}, {"samples", session->state().product.directions.size()},
+                                  {"cells", session->state().product.cells}});
+    } catch (const Error& e) {
+      session->set_unavailable(e.what());
+      log(LogLevel::Error, "product-unavailable", {{"session", name}, {"reason", e.what()}});
+    }
   }
 }
 

@@ -22,6 +22,12 @@ void Session::set_face_assets(const protocol::AssetAnnounce& photo, const protoc
   dirty = true;
 }
 
+void Session::set_product(std::vector<protocol::TweenData> cells) {
+  tween_frames_.clear();
+  for (const protocol::TweenData& cell : cells) tween_frames_.push_back(std::make_shared<const protocol::Bytes>(protocol::encode(cell)));
+  unavailable_.clear();
+}
+
 void Session::join(const std::shared_ptr<Connection>& member) { members_.push_back(member); }
 
 void Session::leave(const Connection* member) {

@@ -34,12 +34,21 @@ class Session {
   // and landmark assets. Called before clients are served.
   void set_face_assets(const protocol::AssetAnnounce& photo, const protocol::AssetAnnounce& landmarks);
 
+  // A turntable's tween data, sent to each member after the snapshot (one message per cell),
+  // or why the product cannot be served (then joining is refused with that reason).
+  void set_product(std::vector<protocol::TweenData> cells);
+  void set_unavailable(std::string reason) { unavailable_ = std::move(reason); }
+  const std::string& unavailable() const { return unavailable_; }
+  const std::vector<std::shared_ptr<const protocol::Bytes>>& tween_frames() const { return tween_frames_; }
+
   // Set by apply(); cleared by whoever persists the state.
   bool dirty = false;
 
  private:
   StoredSession stored_;
   std::vector<std::weak_ptr<Connection>> members_;
+  std::vector<std::shared_ptr<const protocol::Bytes>> tween_frames_;
+  std::string unavailable_;
 };
 
 }  // namespace inkwire::server

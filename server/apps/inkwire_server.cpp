@@ -1,14 +1,51 @@
 // inkwire-server: sessions, assets and control messages for thin clients (CONTRACTS.md).
 #include <csignal>
+#include <cstdio>
 #include <iostream>
+
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 
 #include "common/error.hpp"
 #include "common/log.hpp"
+#include "server/products/product_store.hpp"
 #include "server/server.hpp"
 
 using namespace inkwire;
+
+namespace {
+
+// `inkwire-server add-product`: a turntable session NAME in the data folder, from a folder of
+// photos or a mesh, made once (the same inputs and settings again find the stored product).
+int add_product(const std::string& name, const server::ProductSource& source, const std::string& data) {
+  if (name.empty() || name.size() > protocol::kMaxName ||
+      name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_.") != std::string::npos)
+    throw Error("product name '" + name + "' must be 1-64 letters, digits, - _ .");
+  server::AssetStore store(data.empty() ? "inkwire-data" : data);
+  const bool terminal = isatty(fileno(stdout));
+  bool made = false;
+  protocol::Snapshot state = server::find_or_make_product(store, source, name, [&](int done, int total, const std::string& line) {
+    // One line per pair, with a bar on a terminal.
+    std::string bar;
+    if (terminal && total > 0) bar = "[" + std::string(size_t(20 * done / total), '#') + std::string(size_t(20 - 20 * done / total), '.') + "] ";
+    std::printf("%spair %d/%d %s\n", bar.c_str(), done, total, line.c_str());
+    std::fflush(stdout);
+  }, &made);
+  // Re-adding under a name keeps nothing of the old session but its token.
+  std::string token;
+  for (const auto& s : store.sessions())
+    if (s.state.session == name) token = s.token;
+  store.save_session({.token = token, .state = state});
+  uint64_t bytes = 0;
+  for (const auto& a : state.assets) bytes += a.size;
+  std::printf("%s product '%s': %zu photos %dx%d, %u tween cells, %llu bytes in %s\n", made ? "stored" : "already stored:",
+              name.c_str(), state.product.directions.size(), state.product.width, state.product.height, unsigned(state.product.cells),
+              static_cast<unsigned long long>(bytes), store.dir().c_str());
+  return 0;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   std::string listen, data, config_file;
@@ -18,10 +55,36 @@ int main(int argc, char** argv) {
   app.add_option("--data", data, "data folder: asset files and the SQLite catalogue (default ./inkwire-data)");
   app.add_option("--config", config_file, "JSON config: listen, data, name, queue_bytes, sessions (see README)");
   app.add_flag("--quiet", quiet, "log warnings and errors only");
+
+  std::string product_name, product_data;
+  server::ProductSource source;
+  CLI::App* add = app.add_subcommand("add-product", "make a turntable session NAME from a folder of photos or a mesh, once");
+  add->add_option("name", product_name, "the session's name, as clients and pages ask for it")->required();
+  auto* photos = add->add_option("--photos", source.photos, "folder of photos taken around the object, in file-name order");
+  auto* mesh = add->add_option("--mesh", source.mesh, "a mesh rendered into samples on a ring instead");
+  photos->excludes(mesh);
+  add->add_option("--step", source.photo_options.step_degrees, "degrees between consecutive photos (default: a full turn)")->needs(photos);
+  add->add_option("--arc", source.photo_options.arc_degrees, "degrees from the first photo to the last (default: a full turn)")->needs(photos);
+  add->add_option("--max-side", source.photo_options.max_side, "photos are scaled to at most this many pixels a side")->needs(photos);
+  add->add_option("--matte", source.photo_options.matte, "auto: key a plain backdrop when there is one; key: refuse if not; none")
+      ->needs(photos);
+  add->add_option("--samples", source.mesh_options.samples, "samples on the ring (default 24)")->needs(mesh);
+  add->add_option("--size", source.mesh_options.size, "sample images are this many pixels square (default 512)")->needs(mesh);
+  add->add_option("--data", product_data, "data folder (default ./inkwire-data)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
+  }
+  if (add->parsed()) {
+    try {
+      if (source.photos.empty() && source.mesh.empty()) throw Error("add-product needs --photos DIR or --mesh FILE");
+      if (quiet) set_log_level(LogLevel::Warn);
+      return add_product(product_name, source, product_data);
+    } catch (const std::exception& e) {
+      std::cerr << "inkwire-server add-product: " << e.what() << "\n";
+      return 1;
+    }
   }
   try {
     if (quiet) set_log_level(LogLevel::Warn);

@@ -1,0 +1,24 @@
+#pragma once
+// Mattes for photos taken against a plain studio background (SPEC T14): where the object is, as
+// an alpha channel, so views between samples can show one outline. The background's colour is
+// read off the photo's border; a border that is not one plain colour cannot be keyed.
+#include <optional>
+#include <string>
+
+#include "common/image.hpp"
+
+namespace inkwire {
+
+struct MatteResult {
+  bool keyed = false;
+  std::string reason;        // why not, when not keyed
+  double object_fraction = 0;  // share of the image the object covers
+};
+
+// Sets `photo`'s alpha to the object's matte (255 inside, 0 on the background, a pixel of soft
+// edge between). Holes enclosed by the object are filled: a matte says where the object's
+// outline is, and a hole the colour of the backdrop inside it is far more often paint than air.
+// Leaves `photo` untouched and says why when the border is not plain or nothing stands out.
+MatteResult key_plain_background(Image& photo);
+
+}  // namespace inkwire

@@ -1,0 +1,92 @@
+#include "server/products/product.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "client/gl/context.hpp"
+#include "client/render/scene_object.hpp"
+#include "client/render/tween/mesh_samples.hpp"
+#include "common/error.hpp"
+#include "common/tween/view_sphere.hpp"
+#include "server/products/matte.hpp"
+#include "server/products/photo_folder.hpp"
+#include "server/tween/landmarks.hpp"
+
+namespace inkwire {
+namespace fs = std::filesystem;
+
+Product product_from_photos(const fs::path& folder, const PhotoProductOptions& o, const PairProgress& progress) {
+  if (o.matte != "auto" && o.matte != "key" && o.matte != "none") throw Error("--matte must be auto, key or none");
+  if (o.max_side < 32 || o.max_side > kMaxTweenImageSide) throw Error("--max-side must be 32.." + std::to_string(kMaxTweenImageSide));
+  PhotoFolder photos = read_photo_folder(folder, o.step_degrees, o.arc_degrees, o.max_side);
+  Product product;
+  product.data.width = photos.photos[0].width;
+  product.data.height = photos.photos[0].height;
+  product.data.directions = photos.directions;
+
+  // Mattes: every photo keyed, or none (a product whose samples disagree on having an outline
+  // would show one only some of the way round).
+  if (o.matte != "none") {
+    std::vector<Image> keyed = photos.photos;
+    std::string refusal;
+    for (size_t i = 0; i < keyed.size() && refusal.empty(); ++i) {
+      const MatteResult r = key_plain_background(keyed[i]);
+      if (!r.keyed) refusal = (folder / photos.names[i]).string() + " cannot be keyed: " + r.reason;
+    }
+    if (refusal.empty()) {
+      photos.photos = std::move(keyed);
+      product.matted = true;
+    } else if (o.matte == "key") {
+      throw Error(refusal);
+    } else if (progress) {
+      progress(0, int(photos.pairs.size()), "no mattes: " + refusal + " (the photos are shown whole)");
+    }
+  }
+
+  // Landmarks (SPEC T7) per neighbouring pair. How far a point can move between neighbours
+  // grows with the turn between them: a point half the image's width off the axis moves
+  // width/2 * sin(step).
+  LandmarkOptions landmark_options;
+  landmark_options.count = o.landmarks;
+  const int total = int(photos.pairs.size());
+  for (int i = 0; i < total; ++i) {
+    const auto& pair = photos.pairs[size_t(i)];
+    const float step = std::acos(std::clamp(glm::dot(photos.directions[pair[0]], photos.directions[pair[1]]), -1.0f, 1.0f));
+    landmark_options.search = {std::clamp(int(0.5f * float(product.data.width) * std::sin(step) * 1.3f) + 8, 12, product.data.width / 3),
+                               std::max(8, product.data.height / 40)};
+    const std::vector<Landmark> landmarks =
+        find_landmarks(grey_of(photos.photos[pair[0]]), grey_of(photos.photos[pair[1]]), landmark_options);
+    product.data.cells.push_back(cell_from_landmarks(landmarks, pair[0], pair[1]));
+    if (progress)
+      progress(i + 1, total, photos.names[pair[0]] + " -> " + photos.names[pair[1]] + ": " + std::to_string(landmarks.size()) + " landmarks");
+  }
+  product.images = std::move(photos.photos);
+  // Photos say nothing of the camera's distance; a view at the samples' own distance shows them
+  // at their own scale, which is all zooming needs.
+  return product;
+}
+
+Product product_from_mesh(const fs::path& mesh, const MeshProductOptions& o, const PairProgress& progress) {
+  if (o.samples < 3 || o.samples > 360) throw Error("--samples must be 3..360");
+  if (o.size < 32 || o.size > 2048) throw Error("--size must be 32..2048");
+  auto context = create_offscreen_context(64, 64);
+  const SceneObject object = load_scene_object(mesh, 0, kSceneDiagonal);
+  Product product;
+  const std::vector<glm::vec3> directions = ring_directions(o.samples);
+  const MeshSamples samples = render_mesh_samples(object, directions, o.size, product.distance_diagonals, o.style);
+  product.data.width = product.data.height = o.size;
+  product.data.directions = directions;
+  const auto cells = ring_cells(o.samples);
+  for (size_t i = 0; i < cells.size(); ++i) {
+    product.data.cells.push_back(exact_cell(samples, object, cells[i], o.points));
+    if (progress)
+      progress(int(i + 1), int(cells.size()),
+               "samples " + std::to_string(cells[i][0]) + " -> " + std::to_string(cells[i][1]) + ": " +
+                   std::to_string(product.data.cells.back().points.size()) + " control points");
+  }
+  product.images = samples.images;
+  product.matted = true;
+  return product;
+}
+
+}  // namespace inkwire

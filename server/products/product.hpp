@@ -1,0 +1,51 @@
+#pragma once
+// Products (SPEC T11): what a turntable session shows. N sample photos of one object with their
+// view directions and mattes, and the tween data between neighbouring samples, made once at
+// ingest from a folder of photos (landmarks by NCC) or from a mesh rendered on a ring (exact
+// control points). A shop owner makes one with `inkwire-server add-product`.
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "common/image.hpp"
+#include "common/tween/tween_data.hpp"
+
+namespace inkwire {
+
+struct Product {
+  TweenData data;             // image size, sample directions, one cell per neighbouring pair
+  std::vector<Image> images;  // RGBA, data.width x data.height; alpha is the matte
+  bool matted = false;        // false: the photos could not be keyed and are shown whole
+  float distance_diagonals = 1.4f, fov_y_degrees = 45.0f;  // the samples' camera, for zooming
+};
+
+// Called once per pair as it is done: e.g. "pair 3/24 (photo_03.jpg -> photo_04.jpg): 61 landmarks".
+using PairProgress = std::function<void(int done, int total, const std::string& line)>;
+
+struct PhotoProductOptions {
+  float step_degrees = 0;  // the turn between consecutive photos; 0: from --arc or a full turn
+  float arc_degrees = 0;   // the turn from the first photo to the last; 0: a full turn
+  int max_side = 512;      // photos are scaled down to at most this many pixels a side
+  std::string matte = "auto";  // auto: key a plain backdrop when there is one; key: refuse if not; none
+  int landmarks = 65;
+};
+
+// Reads a folder of photos taken around an object, in file-name order (see photo_folder.hpp),
+// and finds landmarks between every neighbouring pair. Throws inkwire::Error with a one-line
+// reason naming the file at fault.
+Product product_from_photos(const std::filesystem::path& folder, const PhotoProductOptions& options,
+                            const PairProgress& progress = {});
+
+struct MeshProductOptions {
+  int samples = 24;       // on a ring about +Y, every 360/samples degrees
+  int size = 512;         // square sample images
+  int points = 65;        // exact control points per pair
+  std::string style = "default";
+};
+
+// Renders a mesh into samples with their render's alpha as mattes and exact control points.
+// Makes its own off-screen GL context. Throws inkwire::Error.
+Product product_from_mesh(const std::filesystem::path& mesh, const MeshProductOptions& options, const PairProgress& progress = {});
+
+}  // namespace inkwire

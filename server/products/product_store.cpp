@@ -1,0 +1,200 @@
+#include "server/products/product_store.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+
+#include <unistd.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include "common/content_hash.hpp"
+#include "common/error.hpp"
+#include "common/log.hpp"
+
+namespace inkwire::server {
+namespace fs = std::filesystem;
+using protocol::AssetKind;
+using protocol::Bytes;
+
+namespace {
+
+constexpr int kJpegQuality = 90;
+
+// Encodes `channels` of an RGBA image (3: colour, 1: alpha alone) as `format`. Through a
+// temporary file: OpenImageIO's JPEG writer here cannot write to memory.
+Bytes encode_image(const Image& image, const char* format, int first_channel, int channels, int quality = 0) {
+  static int counter = 0;
+  const fs::path file = fs::temp_directory_path() / ("inkwire-encode-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + "." + format);
+  struct Remove {
+    fs::path path;
+    ~Remove() {
+      std::error_code ec;
+      fs::remove(path, ec);
+    }
+  } remove{file};
+  auto output = OIIO::ImageOutput::create(file.string());
+  if (!output) throw Error(std::string("cannot write ") + format + ": " + OIIO::geterror());
+  OIIO::ImageSpec spec(image.width, image.height, channels, OIIO::TypeDesc::UINT8);
+  if (quality > 0) spec.attribute("Compression", "jpeg:" + std::to_string(quality));
+  if (!output->open(file.string(), spec)) throw Error("cannot write " + file.string() + ": " + output->geterror());
+  const OIIO::stride_t xstride = 4, ystride = OIIO::stride_t(image.width) * 4;
+  if (!output->write_image(OIIO::TypeDesc::UINT8, image.pixels.data() + first_channel, xstride, ystride) || !output->close())
+    throw Error("cannot write " + file.string() + ": " + output->geterror());
+  std::ifstream in(file, std::ios::binary);
+  return Bytes(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// The colour of the background pushed out from the object, so the JPEG holds no hard edge at
+// the outline (no ringing, fewer bytes) and a filtered read there finds the object's colour.
+Image with_colour_bled(const Image& image) {
+  Image out = image;
+  const int w = image.width, h = image.height;
+  std::vector<bool> known(size_t(w) * h);
+  for (size_t i = 0; i < known.size(); ++i) known[i] = image.pixels[i * 4 + 3] >= 128;
+  // Rings of one pixel at a time, each the mean of its known neighbours: a few dozen passes
+  // cover what a warp can reach beyond the outline; the rest takes the mean object colour.
+  for (int pass = 0; pass < 24; ++pass) {
+    std::vector<bool> next = known;
+    bool grew = false;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        if (known[size_t(y) * w + x]) continue;
+        int sum[3] = {0, 0, 0}, n = 0;
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int nx = x + dx, ny = y + dy;
+            if (nx < 0 || ny < 0 || nx >= w || ny >= h || !known[size_t(ny) * w + nx]) continue;
+            for (int c = 0; c < 3; ++c) sum[c] += out.at(nx, ny)[c];
+            ++n;
+          }
+        if (n == 0) continue;
+        for (int c = 0; c < 3; ++c) out.at(x, y)[c] = uint8_t(sum[c] / n);
+        next[size_t(y) * w + x] = true;
+        grew = true;
+      }
+    known.swap(next);
+    if (!grew) break;
+  }
+  long sum[3] = {0, 0, 0}, n = 0;
+  for (size_t i = 0; i < known.size(); ++i)
+    if (image.pixels[i * 4 + 3] >= 128) {
+      for (int c = 0; c < 3; ++c) sum[c] += image.pixels[i * 4 + size_t(c)];
+      ++n;
+    }
+  for (size_t i = 0; i < known.size(); ++i)
+    if (!known[i])
+      for (int c = 0; c < 3; ++c) out.pixels[i * 4 + size_t(c)] = uint8_t(n ? sum[c] / n : 255);
+  return out;
+}
+
+std::string hash_of_file(const fs::path& file) { return to_hex(content_hash_of_file(file)); }
+
+}  // namespace
+
+std::string ProductSource::key() const {
+  std::string text;
+  if (!mesh.empty()) {
+    text = "mesh " + hash_of_file(mesh) + " samples=" + std::to_string(mesh_options.samples) + " size=" +
+           std::to_string(mesh_options.size) + " points=" + std::to_string(mesh_options.points) + " style=" + mesh_options.style;
+  } else {
+    text = "photos step=" + std::to_string(photo_options.step_degrees) + " arc=" + std::to_string(photo_options.arc_degrees) +
+           " max_side=" + std::to_string(photo_options.max_side) + " matte=" + photo_options.matte +
+           " landmarks=" + std::to_string(photo_options.landmarks);
+    std::error_code ec;
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::directory_iterator(photos, ec))
+      if (entry.is_regular_file() && entry.path().filename().string()[0] != '.') files.push_back(entry.path());
+    if (ec) throw Error("cannot list " + photos.string() + ": " + ec.message());
+    std::sort(files.begin(), files.end());
+    for (const fs::path& f : files) text += " " + f.filename().string() + "=" + hash_of_file(f);
+  }
+  text += " format=1";  // bump when the way products are made changes
+  const ContentHash h = content_hash(text.data(), text.size());
+  return to_hex(h);
+}
+
+std::string ProductSource::describe() const { return mesh.empty() ? "photos in " + photos.string() : "mesh " + mesh.string(); }
+
+protocol::Snapshot store_product(AssetStore& store, const Product& product, const std::string& session) {
+  if (product.images.size() > protocol::kMaxProductSamples)
+    throw Error("a product holds at most " + std::to_string(protocol::kMaxProductSamples) + " samples");
+  protocol::Snapshot state;
+  state.session = session;
+  state.kind = protocol::SessionKind::Turntable;
+  state.style = {.renderer = "tween", .settings = {}};
+  std::vector<protocol::AssetAnnounce> mattes;
+  char name[32];
+  for (size_t i = 0; i < product.images.size(); ++i) {
+    const Image& image = product.images[i];
+    std::snprintf(name, sizeof name, "sample-%03zu.jpg", i);
+    state.assets.push_back(store.add_bytes(encode_image(product.matted ? with_colour_bled(image) : image, "jpg", 0, 3, kJpegQuality),
+                                           AssetKind::Samples, name));
+    if (product.matted) {
+      std::snprintf(name, sizeof name, "matte-%03zu.png", i);
+      mattes.push_back(store.add_bytes(encode_image(image, "png", 3, 1), AssetKind::Matte, name));
+    }
+  }
+  state.assets.insert(state.assets.end(), mattes.begin(), mattes.end());
+  const std::vector<uint8_t> tween = encode_tween(product.data);
+  state.assets.push_back(store.add_bytes(Bytes(tween.begin(), tween.end()), AssetKind::Tween, "tween.iktw"));
+  state.product = {.width = uint16_t(product.data.width), .height = uint16_t(product.data.height),
+                   .directions = quantised(product.data).directions, .cells = uint16_t(product.data.cells.size()),
+                   .distance_diagonals = product.distance_diagonals, .fov_y_degrees = product.fov_y_degrees};
+  return state;
+}
+
+protocol::Snapshot find_or_make_product(AssetStore& store, const ProductSource& source, const std::string& session,
+                                        const PairProgress& progress, bool* made) {
+  const std::string key = source.key();
+  if (auto stored = store.find_product(key)) {
+    // The same product under another name is the same assets under another session.
+    bool whole = true;
+    for (const auto& a : stored->assets) whole = whole && store.find(a.hash).has_value();
+    if (whole) {
+      if (made) *made = false;
+      stored->session = session;
+      return *stored;
+    }
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const Product product = source.mesh.empty() ? product_from_photos(source.photos, source.photo_options, progress)
+                                              : product_from_mesh(source.mesh, source.mesh_options, progress);
+  protocol::Snapshot state = store_product(store, product, session);
+  store.save_product(key, state);
+  if (made) *made = true;
+  log_info("product-made", {{"session", session}, {"source", source.describe()}, {"samples", product.images.size()},
+                            {"matted", product.matted},
+                            {"seconds", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()}});
+  return state;
+}
+
+std::vector<protocol::TweenData> product_tween_messages(const AssetStore& store, const protocol::Snapshot& state) {
+  const protocol::Product& p = state.product;
+  if (p.directions.empty()) throw Error("session '" + state.session + "' has no product");
+  std::optional<TweenData> data;
+  size_t samples = 0, mattes = 0;
+  for (const auto& asset : state.assets) {
+    const Bytes bytes = store.read_verified(asset.hash);  // every file checked, not only the tween data
+    if (asset.kind == AssetKind::Samples) ++samples;
+    if (asset.kind == AssetKind::Matte) ++mattes;
+    if (asset.kind == AssetKind::Tween) data = decode_tween(bytes);
+  }
+  if (!data) throw Error("product of '" + state.session + "' has no tween data");
+  if (samples != p.directions.size() || (mattes != 0 && mattes != samples))
+    throw Error("product of '" + state.session + "' lists " + std::to_string(samples) + " photos and " + std::to_string(mattes) +
+                " mattes for " + std::to_string(p.directions.size()) + " samples");
+  if (data->width != p.width || data->height != p.height || data->sample_count() != int(p.directions.size()) ||
+      data->cells.size() != p.cells)
+    throw Error("product of '" + state.session + "': its tween data does not match its photos");
+  std::vector<protocol::TweenData> messages;
+  for (size_t i = 0; i < data->cells.size(); ++i) {
+    const std::vector<uint8_t> cell = encode_tween_cell(data->cells[i], data->width, data->height, data->sample_count());
+    messages.push_back({.pair = uint16_t(i), .data = Bytes(cell.begin(), cell.end())});
+  }
+  return messages;
+}
+
+}  // namespace inkwire::server

@@ -1,0 +1,195 @@
+// Products (SPEC T11, T14) without GL: a shop owner's photo folder is read or refused with the
+// file named; photos are turned upright by EXIF; a plain backdrop is keyed into a matte that
+// matches the object; a stored product is found by its key, checked file by file against its
+// hashes, and a corrupted file is refused rather than served.
+#include <cmath>
+#include <fstream>
+
+#include <OpenImageIO/imageio.h>
+#include <glm/trigonometric.hpp>
+#include <gtest/gtest.h>
+
+#include "client/render/tween/image_warper.hpp"
+#include "common/content_hash.hpp"
+#include "common/error.hpp"
+#include "common/image_metrics.hpp"
+#include "common/random.hpp"
+#include "server/products/matte.hpp"
+#include "server/products/photo_folder.hpp"
+#include "server/products/product_store.hpp"
+#include "test_data.hpp"
+
+using namespace inkwire;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::path(INKWIRE_TEST_OUTPUT_DIR) / "tmp" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// A product photo: a textured box of `shade` on a plain light-grey studio backdrop with a little
+// sensor noise; its alpha is the truth (255 on the object).
+Image studio_photo(int w, int h, int shift, uint64_t seed) {
+  Random random(seed);
+  Image image(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      uint8_t* p = image.at(x, y);
+      const bool object = std::abs(x - w / 2 - shift) < w / 5 && std::abs(y - h / 2) < h / 4;
+      const int noise = int(random.uniform(-4.0f, 4.0f));
+      if (object) {
+        const bool stripe = ((x - shift) / 6 + y / 9) % 2;
+        p[0] = uint8_t(stripe ? 180 : 40), p[1] = uint8_t(60 + noise), p[2] = uint8_t(stripe ? 30 : 140), p[3] = 255;
+      } else {
+        p[0] = p[1] = p[2] = uint8_t(235 + noise), p[3] = 0;
+      }
+    }
+  return image;
+}
+
+void write_photo(const Image& image, const fs::path& file, int orientation = 1) {
+  auto out = OIIO::ImageOutput::create(file.string());
+  OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
+  if (orientation != 1) spec.attribute("Orientation", orientation);
+  ASSERT_TRUE(out->open(file.string(), spec));
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data(), 4));
+  out->close();
+}
+
+fs::path photo_folder(const std::string& name, int count, int w = 96, int h = 64) {
+  const fs::path dir = fresh_dir(name);
+  for (int i = 0; i < count; ++i) {
+    char file[32];
+    std::snprintf(file, sizeof file, "IMG_%04d.png", i);
+    write_photo(studio_photo(w, h, i, uint64_t(i)), dir / file);
+  }
+  return dir;
+}
+
+}  // namespace
+
+TEST(ProductTest, APhotoFolderIsReadInFileNameOrderRoundAFullTurn) {
+  const PhotoFolder f = read_photo_folder(photo_folder("turn", 8), 0, 0, 512);
+  ASSERT_EQ(f.photos.size(), 8u);
+  EXPECT_EQ(f.names.front(), "IMG_0000.png");
+  EXPECT_TRUE(f.closed);
+  EXPECT_EQ(f.pairs.size(), 8u);  // the last photo pairs with the first
+  EXPECT_NEAR(glm::degrees(std::acos(glm::dot(f.directions[0], f.directions[1]))), 45.0f, 0.01f);
+  // Over a half-turn arc: open, 7 pairs.
+  const PhotoFolder arc = read_photo_folder(photo_folder("arc", 8), 0, 180, 512);
+  EXPECT_FALSE(arc.closed);
+  EXPECT_EQ(arc.pairs.size(), 7u);
+  // Scaled to the longer side.
+  EXPECT_EQ(read_photo_folder(photo_folder("small", 3, 200, 100), 0, 0, 64).photos[0].width, 64);
+}
+
+TEST(ProductTest, BadFoldersAreRefusedWithTheFileNamed) {
+  EXPECT_NE(test::error_of([] { read_photo_folder(fresh_dir("none") / "missing", 0, 0, 512); }).find("is not a folder"), std::string::npos);
+  EXPECT_NE(test::error_of([] { read_photo_folder(photo_folder("two", 2), 0, 0, 512); }).find("at least 3"), std::string::npos);
+  {
+    const fs::path dir = photo_folder("other", 4);
+    std::ofstream(dir / "notes.docx") << "price list";
+    EXPECT_NE(test::error_of([&] { read_photo_folder(dir, 0, 0, 512); }).find("notes.docx is not a photo"), std::string::npos);
+    // Hidden files and text notes are not photos but are no trouble either.
+    fs::remove(dir / "notes.docx");
+    std::ofstream(dir / ".DS_Store") << "x";
+    std::ofstream(dir / "readme.txt") << "x";
+    EXPECT_EQ(read_photo_folder(dir, 0, 0, 512).photos.size(), 4u);
+  }
+  {
+    const fs::path dir = photo_folder("broken", 4);
+    std::ofstream(dir / "IMG_0002.png", std::ios::trunc) << "\x89PNG not really";
+    EXPECT_NE(test::error_of([&] { read_photo_folder(dir, 0, 0, 512); }).find("IMG_0002.png cannot be read"), std::string::npos);
+  }
+  {
+    const fs::path dir = photo_folder("mixed", 4);
+    write_photo(studio_photo(64, 96, 0, 9), dir / "IMG_0003.png");  // portrait among landscapes
+    EXPECT_NE(test::error_of([&] { read_photo_folder(dir, 0, 0, 512); }).find("IMG_0003.png is 64x96, not the shape"), std::string::npos);
+    write_photo(studio_photo(192, 128, 0, 9), dir / "IMG_0003.png");  // the same shape, larger: scaled
+    EXPECT_EQ(read_photo_folder(dir, 0, 0, 512).photos[3].width, 96);
+  }
+  EXPECT_NE(test::error_of([] { read_photo_folder(photo_folder("steps", 8), 60, 0, 512); }).find("more than once round"), std::string::npos);
+}
+
+TEST(ProductTest, PhotosAreTurnedUprightByTheirExifOrientation) {
+  const fs::path dir = fresh_dir("exif");
+  Image upright = studio_photo(60, 40, 0, 1);
+  for (size_t i = 3; i < upright.pixels.size(); i += 4) upright.pixels[i] = 255;  // a photo has no matte
+  // A camera held sideways stores the picture turned and says so (6: turn 90 degrees clockwise
+  // to view).
+  Image stored(40, 60);
+  for (int y = 0; y < 60; ++y)
+    for (int x = 0; x < 40; ++x) std::copy_n(upright.at(59 - y, x), 4, stored.at(x, y));
+  write_photo(stored, dir / "sideways.jpg", 6);
+  const Image read = load_upright_photo(dir / "sideways.jpg");
+  ASSERT_EQ(read.width, 60);
+  ASSERT_EQ(read.height, 40);
+  EXPECT_GT(psnr(read, upright), 25.0);  // as JPEG
+}
+
+TEST(ProductTest, APlainBackdropIsKeyedIntoTheObjectsMatte) {
+  Image photo = studio_photo(160, 120, 5, 3);
+  const Image truth = photo;
+  for (size_t i = 3; i < photo.pixels.size(); i += 4) photo.pixels[i] = 255;
+  const MatteResult r = key_plain_background(photo);
+  ASSERT_TRUE(r.keyed) << r.reason;
+  EXPECT_GT(matte_iou(photo, truth), 0.97);
+  // A busy background is refused, not guessed.
+  Image busy(160, 120);
+  Random random(4);
+  for (uint8_t& v : busy.pixels) v = uint8_t(random.uniform(0.0f, 255.0f));
+  const MatteResult refused = key_plain_background(busy);
+  EXPECT_FALSE(refused.keyed);
+  EXPECT_NE(refused.reason.find("not a plain background"), std::string::npos);
+}
+
+TEST(ProductTest, AMatteSampleCarriesTheDistanceToTheOutlineAndBleedsColourOutward) {
+  Image image(64, 64, {0, 0, 0, 0});
+  for (int y = 8; y < 56; ++y)
+    for (int x = 8; x < 56; ++x) {
+      uint8_t* p = image.at(x, y);
+      p[0] = 200, p[1] = 40, p[2] = 10, p[3] = 255;
+    }
+  const Image m = matte_sample(image);
+  EXPECT_NEAR(m.at(8, 32)[3], 128 + 128 / int(2 * kMatteRange), 3);   // half a pixel inside the edge
+  EXPECT_NEAR(m.at(7, 32)[3], 128 - 128 / int(2 * kMatteRange), 3);   // half a pixel outside
+  EXPECT_LT(m.at(0, 0)[3], 60);                                          // 11 pixels outside
+  EXPECT_EQ(m.at(32, 32)[3], 255);                                       // deep inside
+  EXPECT_EQ(int(m.at(2, 32)[0]), 200);  // colour bled out
+}
+
+TEST(ProductTest, AStoredProductIsFoundByItsKeyAndCheckedAgainstItsHashes) {
+  const fs::path data = fresh_dir("store");
+  server::AssetStore store(data);
+  server::ProductSource source;
+  source.photos = photo_folder("stored", 6, 96, 64);
+  int pairs = 0;
+  bool made = false;
+  const protocol::Snapshot state = server::find_or_make_product(store, source, "box", [&](int, int, const std::string&) { ++pairs; }, &made);
+  EXPECT_TRUE(made);
+  EXPECT_EQ(pairs, 6);
+  EXPECT_EQ(state.product.directions.size(), 6u);
+  EXPECT_EQ(state.assets.size(), 6u + 6u + 1u);  // photos, mattes, tween data
+  const auto messages = server::product_tween_messages(store, state);
+  EXPECT_EQ(messages.size(), 6u);
+  // The same inputs and settings again: found, not made.
+  pairs = 0;
+  const protocol::Snapshot again = server::find_or_make_product(store, source, "box-again", {}, &made);
+  EXPECT_FALSE(made);
+  EXPECT_EQ(pairs, 0);
+  EXPECT_EQ(again.assets, state.assets);
+  EXPECT_EQ(again.session, "box-again");
+  // Other settings are another product.
+  server::ProductSource other = source;
+  other.photo_options.matte = "none";
+  EXPECT_NE(other.key(), source.key());
+  // A stored file changed on disk is found out by its hash, not served.
+  const auto tween = std::find_if(state.assets.begin(), state.assets.end(), [](const auto& a) { return a.kind == protocol::AssetKind::Tween; });
+  const fs::path file = data / "assets" / to_hex(tween->hash);
+  std::fstream(file, std::ios::in | std::ios::out | std::ios::binary).seekp(10).put('\x7f');
+  EXPECT_NE(test::error_of([&] { server::product_tween_messages(store, state); }).find("does not match its hash"), std::string::npos);
+}
