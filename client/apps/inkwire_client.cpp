@@ -1,5 +1,6 @@
 // inkwire-client: joins a session and draws it locally, in a window or headless (CONTRACTS.md).
 #include <csignal>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -30,7 +31,10 @@ int main(int argc, char** argv) {
   app.add_option("--name", name, "this client's name in the server's logs");
   app.add_option("--style", style, "after joining, change the session's style to this (every client follows)");
   app.add_option("--set", settings, "KEY=VALUE setting for --style (repeatable)");
-  app.add_option("--view", view, "after joining, move the session's camera: AZIMUTH,ELEVATION[,DISTANCE in diagonals]");
+  app.add_option("--view", view,
+                 "after joining, move the session's camera: AZIMUTH,ELEVATION[,DISTANCE in diagonals]; in a turntable session, "
+                 "this client's own first view (AZIMUTH[,ELEVATION], nothing sent)");
+  app.add_flag("--wait-for-product", o.wait_for_product, "headless, turntable sessions: draw the first frame once every photo is there");
   app.add_option("--frame-log", o.frame_log, "headless: write one JSON line per frame (frame, revision, style, time)");
   app.add_option("--gl", o.gl, "headless GL backend: osmesa, egl or auto");
   try {
@@ -45,9 +49,13 @@ int main(int argc, char** argv) {
     std::signal(SIGPIPE, SIG_IGN);
     AssetCache cache(cache_dir.empty() ? AssetCache::default_dir() : std::filesystem::path(cache_dir));
     SessionClient client(connect, name);
-    client.join(session, token);
+    const protocol::Snapshot joined = client.join(session, token);
     if (!style.empty()) client.send(protocol::StyleChange{.renderer = style, .settings = settings});
-    if (!view.empty()) {
+    if (!view.empty() && !joined.product.directions.empty()) {
+      // A product's view is the visitor's own (SPEC T13).
+      if (std::sscanf(view.c_str(), "%f,%f", &o.azimuth, &o.elevation) < 1 || std::abs(o.elevation) > 90.0f)
+        throw Error("--view '" + view + "' is not AZIMUTH[,ELEVATION] with elevation -90..90");
+    } else if (!view.empty()) {
       float az = 0, el = 0, dist = 1.4f;
       if (std::sscanf(view.c_str(), "%f,%f,%f", &az, &el, &dist) < 2 || dist <= 0.05f || dist > 1000.0f)
         throw Error("--view '" + view + "' is not AZIMUTH,ELEVATION[,DISTANCE]");

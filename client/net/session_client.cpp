@@ -71,8 +71,16 @@ void SessionClient::on_message(Message message) {
   std::lock_guard lock(mutex_);
   if (const auto* snapshot = std::get_if<Snapshot>(&message)) {
     state_ = *snapshot;
+    tween_cells_.clear();  // the product's cells follow the snapshot
     ++updates_;
     replies_.push_back(std::move(message));
+  } else if (auto* cell = std::get_if<TweenData>(&message)) {
+    // Checked against the product when it is decoded; here only kept (a cell index past the
+    // product's is ignored, a repeated one replaces).
+    if (cell->pair < state_.product.cells) {
+      tween_cells_[cell->pair] = std::move(cell->data);
+      ++updates_;
+    }
   } else if (apply_state_change(state_, message)) {
     ++updates_;
   } else if (const auto* error = std::get_if<ErrorMessage>(&message)) {
@@ -164,33 +172,43 @@ std::string SessionClient::last_error() const {
   return last_error_;
 }
 
+std::map<uint16_t, Bytes> SessionClient::tween_cells() const {
+  std::lock_guard lock(mutex_);
+  return tween_cells_;
+}
+
+size_t SessionClient::tween_cell_count() const {
+  std::lock_guard lock(mutex_);
+  return tween_cells_.size();
+}
+
 std::vector<std::filesystem::path> SessionClient::fetch_assets(const Snapshot& snapshot, AssetCache& cache) {
   std::vector<std::filesystem::path> paths;
-  for (const AssetAnnounce& asset : snapshot.assets) {
-    if (!cache.has(asset)) {
-      uint64_t received = cache.partial_size(asset), requested = received;
-      while (received < asset.size) {
-        // Keep a few requests in flight so a download is not one round trip per chunk.
-        while (requested < asset.size && requested - received < kRequestsAhead * kMaxChunk) {
-          const auto length = uint32_t(std::min<uint64_t>(kMaxChunk, asset.size - requested));
-          send(AssetRequest{.hash = asset.hash, .offset = requested, .length = length});
-          requested += length;
-        }
-        const Message reply = wait_for([&](const Message& m) {
-          const auto* chunk = std::get_if<AssetChunk>(&m);
-          return chunk && chunk->hash == asset.hash;
-        }, kReplyTimeout);
-        if (const auto* error = std::get_if<ErrorMessage>(&reply)) throw Error("cannot fetch " + asset.name + ": " + error->reason);
-        const auto& chunk = std::get<AssetChunk>(reply);
-        if (chunk.data.empty()) throw Error("server sent an empty chunk of " + asset.name);
-        cache.append(asset, chunk.offset, chunk.data);
-        received += chunk.data.size();
-      }
-      cache.finish(asset);
-    }
-    paths.push_back(cache.path_of(asset));
-  }
+  for (const AssetAnnounce& asset : snapshot.assets) paths.push_back(fetch_asset(asset, cache));
   return paths;
+}
+
+std::filesystem::path SessionClient::fetch_asset(const AssetAnnounce& asset, AssetCache& cache) {
+  if (cache.has(asset)) return cache.path_of(asset);
+  uint64_t received = cache.partial_size(asset), requested = received;
+  while (received < asset.size) {
+    // Keep a few requests in flight so a download is not one round trip per chunk.
+    while (requested < asset.size && requested - received < kRequestsAhead * kMaxChunk) {
+      const auto length = uint32_t(std::min<uint64_t>(kMaxChunk, asset.size - requested));
+      send(AssetRequest{.hash = asset.hash, .offset = requested, .length = length});
+      requested += length;
+    }
+    const Message reply = wait_for([&](const Message& m) {
+      const auto* chunk = std::get_if<AssetChunk>(&m);
+      return chunk && chunk->hash == asset.hash;
+    }, kReplyTimeout);
+    if (const auto* error = std::get_if<ErrorMessage>(&reply)) throw Error("cannot fetch " + asset.name + ": " + error->reason);
+    const auto& chunk = std::get<AssetChunk>(reply);
+    if (chunk.data.empty()) throw Error("server sent an empty chunk of " + asset.name);
+    cache.append(asset, chunk.offset, chunk.data);
+    received += chunk.data.size();
+  }
+  return cache.finish(asset);
 }
 
 }  // namespace inkwire

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <deque>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -45,6 +46,13 @@ class SessionClient {
   // Downloads every asset of the snapshot that the cache lacks (resuming partial files) and
   // returns the cached paths in the snapshot's order. Throws inkwire::Error.
   std::vector<std::filesystem::path> fetch_assets(const protocol::Snapshot& snapshot, AssetCache& cache);
+  // One asset: from the cache, or downloaded into it (resuming a partial file). Throws inkwire::Error.
+  std::filesystem::path fetch_asset(const protocol::AssetAnnounce& asset, AssetCache& cache);
+
+  // The tween-data messages of a turntable session's product received since the last
+  // snapshot (SPEC T12), by cell index, and how many have arrived.
+  std::map<uint16_t, protocol::Bytes> tween_cells() const;
+  size_t tween_cell_count() const;
 
   uint64_t bytes_sent() const { return bytes_sent_; }
   uint64_t bytes_received() const { return bytes_received_; }
@@ -66,6 +74,7 @@ class SessionClient {
   mutable std::mutex mutex_;
   mutable std::condition_variable changed_;
   protocol::Snapshot state_;
+  std::map<uint16_t, protocol::Bytes> tween_cells_;
   uint64_t updates_ = 0;
   bool connected_ = true;
   std::string last_error_;

@@ -25,9 +25,18 @@ int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& 
   std::ofstream log;
   if (!o.frame_log.empty()) log.open(o.frame_log);
   const auto period = std::chrono::microseconds(1000000 / std::max(o.fps, 1));
+  sync.poll();
+  if (o.wait_for_product)
+    while (sync.view().turntable() && !sync.view().turntable()->complete()) {
+      if (!sync.poll()) client.wait_for_update(client.updates(), std::chrono::milliseconds(50));
+      if (!client.connected()) throw Error("connection closed while the product was arriving");
+    }
   auto tick = std::chrono::steady_clock::now();
   for (int i = 0; i < o.frames; ++i) {
     sync.poll();
+    // A product's view is this visitor's own: a full turn over the frames.
+    sync.view().orbit().azimuth = o.azimuth + 360.0f * float(i) / float(o.frames);
+    sync.view().orbit().elevation = o.elevation;
     canvas.bind();
     sync.view().draw(o.size, double(i) / o.fps, i);
     writer.write(canvas.read());
@@ -35,6 +44,10 @@ int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& 
       // steady_clock is CLOCK_MONOTONIC: comparable across processes on this machine.
       const auto now_us = std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
       nlohmann::json line = {{"frame", i}, {"revision", sync.view().revision()}, {"style", sync.view().style()}, {"monotonic_us", now_us}};
+      if (const TurntableView* t = sync.view().turntable())
+        line["product"] = {{"azimuth", sync.view().orbit().azimuth}, {"samples_loaded", t->samples_loaded()},
+                           {"cells_loaded", t->cells_loaded()}, {"bytes_sent", client.bytes_sent()},
+                           {"bytes_received", client.bytes_received()}};
       if (const auto expression = sync.view().expression())
         line["expression"] = {{"name", name_of(expression->expression)}, {"intensity", expression->intensity}};
       log << line.dump() << "\n" << std::flush;

@@ -52,6 +52,7 @@ void SessionView::update(const protocol::Snapshot& state, const std::vector<std:
   state_ = state;
   revision_ = state.revision;
   const bool new_content = state.kind == protocol::SessionKind::Conference ? update_face(state, asset_files)
+                           : !state.product.directions.empty()              ? update_product(state)
                                                                            : update_object(state, asset_files);
   update_style(state, new_content);
   if (face_) face_->set_expression(state.expression);
@@ -93,13 +94,30 @@ bool SessionView::update_face(const protocol::Snapshot& state, const std::vector
   return true;
 }
 
+bool SessionView::update_product(const protocol::Snapshot& state) {
+  if (turntable_ && state.product == product_ && state.assets == product_assets_) return false;
+  product_ = state.product;
+  product_assets_ = state.assets;
+  turntable_.reset();
+  object_.reset();
+  mesh_file_.clear();
+  content_error_.clear();
+  try {
+    turntable_.emplace(state);
+  } catch (const Error& e) {
+    content_error_ = "cannot show the product: " + std::string(e.what());
+  }
+  return true;
+}
+
 void SessionView::update_style(const protocol::Snapshot& state, bool new_content) {
   std::string key = state.style.renderer;
   for (const std::string& s : state.style.settings) key += " " + s;
   if (key == style_key_ && !new_content) return;
   // A conference shows the speaker's photo, never a mesh: its style is checked and decides
   // whether the face is painted, but no mesh renderer is made for it.
-  const bool shows_object = state.kind != protocol::SessionKind::Conference;
+  const bool shows_object = state.kind != protocol::SessionKind::Conference && !turntable_;
+  if (turntable_) turntable_->set_style(state.style.renderer == "tween" ? state.style.settings : std::vector<std::string>{});
   try {
     style_params(state.style.renderer, state.style.settings);
     if (face_) face_->set_style(state.style.renderer, state.style.settings);
@@ -108,7 +126,8 @@ void SessionView::update_style(const protocol::Snapshot& state, bool new_content
       if (object_) renderer->prepare(*object_);
       renderer_ = std::move(renderer);
     }
-    backdrop_.emplace(BackdropSpec::parse(default_backdrop(state.style.renderer)));
+    // A product shows on white, as a shop's photos do.
+    backdrop_.emplace(BackdropSpec::parse(turntable_ ? "#ffffff" : default_backdrop(state.style.renderer)));
     style_key_ = key;
     style_error_.clear();
   } catch (const Error& e) {
@@ -134,6 +153,7 @@ void SessionView::draw(glm::ivec2 viewport, double time_seconds, long frame) {
   if (!backdrop_) backdrop_.emplace(BackdropSpec::parse("paper"));
   backdrop_->draw();
   if (face_) face_->draw(viewport, time_seconds);
+  if (turntable_) turntable_->draw(viewport, orbit_);
   if (!object_ || !renderer_) return;
   FrameState f;
   f.viewport = viewport;

@@ -14,6 +14,7 @@
 #include "client/render/renderer.hpp"
 #include "client/render/scene_object.hpp"
 #include "client/viewer/conference_view.hpp"
+#include "client/viewer/turntable_view.hpp"
 #include "protocol/messages.hpp"
 
 namespace inkwire {
@@ -42,15 +43,24 @@ class SessionView {
   // The expression shown, in conference sessions.
   std::optional<ExpressionState> expression() const;
 
+  // A turntable session's product and this visitor's own view of it (null in other sessions).
+  TurntableView* turntable() { return turntable_ ? &*turntable_ : nullptr; }
+  TurntableOrbit& orbit() { return orbit_; }
+
  private:
   // Each returns true when what it draws was replaced.
   bool update_object(const protocol::Snapshot& state, const std::vector<std::filesystem::path>& asset_files);
   bool update_face(const protocol::Snapshot& state, const std::vector<std::filesystem::path>& asset_files);
+  bool update_product(const protocol::Snapshot& state);
   void update_style(const protocol::Snapshot& state, bool new_content);
 
   std::optional<SceneObject> object_;
   std::filesystem::path mesh_file_;
   std::optional<ConferenceView> face_;
+  std::optional<TurntableView> turntable_;
+  protocol::Product product_;
+  std::vector<protocol::AssetAnnounce> product_assets_;
+  TurntableOrbit orbit_;
   std::filesystem::path face_files_[2];  // photo, landmarks
   std::unique_ptr<Renderer> renderer_;
   std::optional<Backdrop> backdrop_;

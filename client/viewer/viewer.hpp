@@ -18,6 +18,10 @@ struct ViewerOptions {
   std::string out;           // headless: PNG, %04d pattern or .mp4
   std::string frame_log;     // optional JSON lines: one per frame with the revision it shows
   std::string gl = "osmesa"; // headless GL backend
+  // Turntable sessions: the visitor's own first view (azimuth, elevation in degrees); headless,
+  // the view then turns a full circle over the frames. Nothing of it is sent.
+  float azimuth = 0.0f, elevation = 0.0f;
+  bool wait_for_product = false;  // headless: the first frame waits for every photo and cell
 };
 
 int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& options);

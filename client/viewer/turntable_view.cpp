@@ -1,0 +1,108 @@
+#include "client/viewer/turntable_view.hpp"
+
+#include <cmath>
+
+#include <glm/trigonometric.hpp>
+
+#include "client/render/styles.hpp"
+#include "common/camera.hpp"
+#include "common/error.hpp"
+
+namespace inkwire {
+
+glm::vec3 TurntableOrbit::direction() const {
+  const float az = glm::radians(azimuth), el = glm::radians(elevation);
+  return {std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)};
+}
+
+TurntableView::TurntableView(const protocol::Snapshot& state) : product_(state.product) {
+  if (product_.directions.size() < 2) throw Error("session '" + state.session + "' has no product to show");
+  TweenModel header;
+  header.data.width = product_.width;
+  header.data.height = product_.height;
+  header.data.directions = product_.directions;
+  header.distance_diagonals = product_.distance_diagonals;
+  header.fov_y_degrees = product_.fov_y_degrees;
+  // The photos looked at the centre of a box one scene diagonal across.
+  const float half = kSceneDiagonal / (2.0f * std::sqrt(3.0f));
+  header.bounds = {.min = glm::vec3(-half), .max = glm::vec3(half)};
+  renderer_.configure(style_params("tween").front());
+  renderer_.begin_model(std::move(header));
+  has_.assign(product_.directions.size(), false);
+  set_style(state.style.renderer == "tween" ? state.style.settings : std::vector<std::string>{});
+}
+
+void TurntableView::set_style(const std::vector<std::string>& settings) {
+  try {
+    renderer_.configure(style_params("tween", settings).front());
+  } catch (const Error& e) {
+    error_ = std::string("tween settings refused: ") + e.what();
+  }
+}
+
+int TurntableView::nearest_sample(const TurntableOrbit& orbit) const {
+  const glm::vec3 d = orbit.direction();
+  int best = -1;
+  float best_cos = -2.0f;
+  for (size_t i = 0; i < product_.directions.size(); ++i) {
+    const float c = glm::dot(product_.directions[i], d);
+    if (c > best_cos) best_cos = c, best = int(i);
+  }
+  return best;
+}
+
+int TurntableView::next_sample(const TurntableOrbit& orbit) const {
+  const glm::vec3 d = orbit.direction();
+  int best = -1;
+  float best_cos = -2.0f;
+  for (size_t i = 0; i < product_.directions.size(); ++i) {
+    if (has_[i]) continue;
+    const float c = glm::dot(product_.directions[i], d);
+    if (c > best_cos) best_cos = c, best = int(i);
+  }
+  return best;
+}
+
+glm::vec2 TurntableView::sample_angles(int index) const {
+  const glm::vec3 d = product_.directions.at(size_t(index));
+  return {glm::degrees(std::atan2(d.x, d.z)), glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f)))};
+}
+
+void TurntableView::add_sample(int index, const std::filesystem::path& photo, const std::filesystem::path& matte) {
+  if (index < 0 || index >= samples()) throw Error("sample " + std::to_string(index) + " is not in the product");
+  Image image = load_image(photo);
+  if (!matte.empty()) {
+    const Image alpha = load_image(matte);
+    if (alpha.width != image.width || alpha.height != image.height)
+      throw Error(matte.filename().string() + ": the matte's size differs from its photo's");
+    for (size_t i = 0; i < image.pixels.size(); i += 4) image.pixels[i + 3] = alpha.pixels[i];
+  }
+  renderer_.set_sample(index, image);
+  if (!has_[size_t(index)]) ++loaded_;
+  has_[size_t(index)] = true;
+}
+
+void TurntableView::add_cells(const std::map<uint16_t, protocol::Bytes>& cells) {
+  for (const auto& [index, bytes] : cells) {
+    if (cells_seen_.count(index)) continue;
+    cells_seen_[index] = true;
+    try {
+      renderer_.add_cell(decode_tween_cell(bytes, product_.width, product_.height, samples()));
+    } catch (const Error& e) {
+      error_ = "tween cell " + std::to_string(index) + " refused: " + e.what();
+    }
+  }
+}
+
+void TurntableView::draw(glm::ivec2 viewport, const TurntableOrbit& orbit) {
+  FrameState f;
+  f.viewport = viewport;
+  const float distance = product_.distance_diagonals * kSceneDiagonal / std::max(orbit.zoom, 0.05f);
+  f.camera.position = orbit.direction() * distance;
+  f.camera.target = glm::vec3(0.0f);
+  f.camera.up = std::abs(orbit.elevation) > 89.0f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
+  f.camera.fov_y_degrees = product_.fov_y_degrees;
+  renderer_.draw(f);
+}
+
+}  // namespace inkwire

@@ -1,0 +1,64 @@
+#pragma once
+// A turntable session drawn from its product (SPEC T11-T13): sample photos warped along the
+// product's tween data into every view in between. The photos arrive one at a time, nearest the
+// visitor's view first; the tween cells come with the snapshot. The visitor's view is their
+// own: turning it sends nothing. Needs a current GL context.
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "client/render/tween/tween_renderer.hpp"
+#include "protocol/messages.hpp"
+
+namespace inkwire {
+
+// A visitor's view of a product: azimuth from the first sample's direction (turning as the
+// samples do), elevation, and zoom (1: the photos' own scale).
+struct TurntableOrbit {
+  float azimuth = 0.0f, elevation = 0.0f, zoom = 1.0f;
+  glm::vec3 direction() const;
+};
+
+class TurntableView {
+ public:
+  // Starts on the product a snapshot describes. Throws inkwire::Error if it is malformed.
+  TurntableView(const protocol::Snapshot& state);
+
+  // The sample to fetch next: the nearest to `orbit`'s view that is not there yet, or -1.
+  int next_sample(const TurntableOrbit& orbit) const;
+  // A sample photo (and its matte, when the product has them: empty path if not) is there.
+  // Throws inkwire::Error naming the file if it cannot be used.
+  void add_sample(int index, const std::filesystem::path& photo, const std::filesystem::path& matte);
+  // Cells of tween data not seen before are decoded and added; a malformed one is refused
+  // (error() says why) and the views it would serve show the nearest photo.
+  void add_cells(const std::map<uint16_t, protocol::Bytes>& cells);
+  // Applies the session's tween settings (method, compose); keeps the previous on a bad one.
+  void set_style(const std::vector<std::string>& settings);
+
+  void draw(glm::ivec2 viewport, const TurntableOrbit& orbit);
+
+  int samples() const { return int(product_.directions.size()); }
+  int samples_loaded() const { return loaded_; }
+  int cells() const { return product_.cells; }
+  int cells_loaded() const { return int(cells_seen_.size()); }
+  bool complete() const { return loaded_ == samples() && cells_loaded() == cells(); }
+  // The sample whose direction is nearest `orbit`'s, for stepping one sample at a time.
+  int nearest_sample(const TurntableOrbit& orbit) const;
+  // The azimuth and elevation of sample `index`, in TurntableOrbit's terms.
+  glm::vec2 sample_angles(int index) const;
+  const std::string& error() const { return error_; }
+  std::map<std::string, double> counters() const { return renderer_.counters(); }
+
+ private:
+  protocol::Product product_;
+  TweenRenderer renderer_;
+  std::vector<bool> has_;
+  std::map<uint16_t, bool> cells_seen_;
+  int loaded_ = 0;
+  std::string error_;
+};
+
+}  // namespace inkwire
