@@ -25,9 +25,8 @@ int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& 
   std::ofstream log;
   if (!o.frame_log.empty()) log.open(o.frame_log);
   const auto period = std::chrono::microseconds(1000000 / std::max(o.fps, 1));
-  sync.poll();
   if (o.wait_for_product)
-    while (sync.view().turntable() && !sync.view().turntable()->complete()) {
+    while (sync.poll(), sync.view().turntable() && !sync.view().turntable()->complete()) {
       if (!sync.poll()) client.wait_for_update(client.updates(), std::chrono::milliseconds(50));
       if (!client.connected()) throw Error("connection closed while the product was arriving");
     }

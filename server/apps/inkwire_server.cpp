@@ -63,7 +63,7 @@ int main(int argc, char** argv) {
   auto* photos = add->add_option("--photos", source.photos, "folder of photos taken around the object, in file-name order");
   auto* mesh = add->add_option("--mesh", source.mesh, "a mesh rendered into samples on a ring instead");
   photos->excludes(mesh);
-  add->add_option("--step", source.photo_options.step_degrees, "degrees between consecutive photos (default: a full turn)")->needs(photos);
+  add->add_option("--step", source.photo_options.step_degrees, "degrees the view turns from one photo to the next, negative if the turntable turned the other way (default: a full turn)")->needs(photos);
   add->add_option("--arc", source.photo_options.arc_degrees, "degrees from the first photo to the last (default: a full turn)")->needs(photos);
   add->add_option("--max-side", source.photo_options.max_side, "photos are scaled to at most this many pixels a side")->needs(photos);
   add->add_option("--matte", source.photo_options.matte, "auto: key a plain backdrop when there is one; key: refuse if not; none")

@@ -70,9 +70,9 @@ Image load_upright_photo(const fs::path& file) {
 PhotoFolder read_photo_folder(const fs::path& folder, float step_degrees, float arc_degrees, int max_side) {
   std::error_code ec;
   if (!fs::is_directory(folder, ec)) throw Error(folder.string() + " is not a folder");
-  if (step_degrees < 0 || step_degrees > 180) throw Error("--step must be 0..180 degrees");
-  if (arc_degrees < 0 || arc_degrees > 360) throw Error("--arc must be 0..360 degrees");
-  if (step_degrees > 0 && arc_degrees > 0) throw Error("give --step or --arc, not both");
+  if (std::abs(step_degrees) > 180) throw Error("--step must be -180..180 degrees");
+  if (std::abs(arc_degrees) > 360) throw Error("--arc must be -360..360 degrees");
+  if (step_degrees != 0 && arc_degrees != 0) throw Error("give --step or --arc, not both");
 
   PhotoFolder out;
   std::vector<fs::path> files;
@@ -104,8 +104,8 @@ PhotoFolder read_photo_folder(const fs::path& folder, float step_degrees, float 
   if (n > 360) throw Error(folder.string() + " holds " + std::to_string(n) + " photos; at most 360 (one per degree)");
 
   if (!calibrated) {
-    const float step = step_degrees > 0 ? step_degrees : arc_degrees > 0 ? arc_degrees / float(n - 1) : 360.0f / float(n);
-    if (step * float(n - 1) > 360.0f + 1e-3f)
+    const float step = step_degrees != 0 ? step_degrees : arc_degrees != 0 ? arc_degrees / float(n - 1) : 360.0f / float(n);
+    if (std::abs(step) * float(n - 1) > 360.0f + 1e-3f)
       throw Error(std::to_string(n) + " photos " + std::to_string(step) + " degrees apart turn more than once round");
     for (int i = 0; i < n; ++i) {
       const float az = glm::radians(step * float(i));

@@ -1,7 +1,8 @@
 #pragma once
 // A shop owner's folder of turntable photos, read and checked: photos in file-name order
 // (JPEG, PNG, TIFF, BMP, WebP), turned upright by their EXIF orientation, scaled to one size;
-// directions equally spaced over a full turn, over `arc`, by `step`, or from a Middlebury-style
+// directions equally spaced over a full turn, over `arc`, by `step` (negative when the turntable
+// turned the other way: the camera's azimuth falls from photo to photo), or from a Middlebury-style
 // `*_par.txt` calibration in the folder. Anything else in the folder is refused by name, except
 // hidden files and the calibration's companions (*.txt).
 #include <filesystem>

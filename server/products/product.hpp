@@ -24,7 +24,7 @@ struct Product {
 using PairProgress = std::function<void(int done, int total, const std::string& line)>;
 
 struct PhotoProductOptions {
-  float step_degrees = 0;  // the turn between consecutive photos; 0: from --arc or a full turn
+  float step_degrees = 0;  // the turn between consecutive photos (negative: turned the other way); 0: from --arc or a full turn
   float arc_degrees = 0;   // the turn from the first photo to the last; 0: a full turn
   int max_side = 512;      // photos are scaled down to at most this many pixels a side
   std::string matte = "auto";  // auto: key a plain backdrop when there is one; key: refuse if not; none

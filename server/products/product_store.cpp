@@ -38,7 +38,11 @@ Bytes encode_image(const Image& image, const char* format, int first_channel, in
   auto output = OIIO::ImageOutput::create(file.string());
   if (!output) throw Error(std::string("cannot write ") + format + ": " + OIIO::geterror());
   OIIO::ImageSpec spec(image.width, image.height, channels, OIIO::TypeDesc::UINT8);
-  if (quality > 0) spec.attribute("Compression", "jpeg:" + std::to_string(quality));
+  if (quality > 0) {
+    std::string compression = "jpeg:";  // appended, not "jpeg:" + ...: GCC 12 warns falsely on that
+    compression += std::to_string(quality);
+    spec.attribute("Compression", compression);
+  }
   if (!output->open(file.string(), spec)) throw Error("cannot write " + file.string() + ": " + output->geterror());
   const OIIO::stride_t xstride = 4, ystride = OIIO::stride_t(image.width) * 4;
   if (!output->write_image(OIIO::TypeDesc::UINT8, image.pixels.data() + first_channel, xstride, ystride) || !output->close())
@@ -104,6 +108,7 @@ std::string ProductSource::key() const {
            " max_side=" + std::to_string(photo_options.max_side) + " matte=" + photo_options.matte +
            " landmarks=" + std::to_string(photo_options.landmarks);
     std::error_code ec;
+    if (!fs::is_directory(photos, ec)) throw Error(photos.string() + " is not a folder");
     std::vector<fs::path> files;
     for (const auto& entry : fs::directory_iterator(photos, ec))
       if (entry.is_regular_file() && entry.path().filename().string()[0] != '.') files.push_back(entry.path());

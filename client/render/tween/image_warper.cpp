@@ -48,10 +48,13 @@ Image matte_sample(const Image& image) {
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const bool in = inside.at<uint8_t>(y, x) != 0;
-      // The outline lies half a pixel beyond the last pixel of either side.
-      const float d = in ? to_background.at<float>(y, x) - 0.5f : 0.5f - to_object.at<float>(y, x);
+      // The outline lies half a pixel beyond the last pixel of either side; a pixel the matte
+      // covers in part is that far across it, so a sample shown as it is keeps its soft edge.
+      const int alpha = image.at(x, y)[3];
+      float d = in ? to_background.at<float>(y, x) - 0.5f : 0.5f - to_object.at<float>(y, x);
+      if (alpha > 0 && alpha < 255 && std::abs(d) <= 1.0f) d = float(alpha) / 255.0f - 0.5f;
       uint8_t* p = out.at(x, y);
-      if (!in) {
+      if (alpha == 0) {
         const cv::Point src = object_pixel_of_label[size_t(nearest_object.at<int>(y, x))];
         if (src.x >= 0) std::copy_n(image.at(src.x, src.y), 3, p);
       }
