@@ -37,6 +37,29 @@ struct Orbit {
   }
 };
 
+// A let-go drag keeps turning and slows down, as a physical turntable does.
+struct Inertia {
+  float velocity = 0.0f;  // degrees per second
+  float last_azimuth = 0.0f;
+  bool was_dragging = false;
+
+  void follow(Orbit& orbit, double dt) {
+    if (dt <= 0.0) return;
+    if (orbit.dragging) {
+      const float v = float((orbit.azimuth - last_azimuth) / dt);
+      velocity = was_dragging ? 0.7f * velocity + 0.3f * v : 0.0f;
+    } else if (std::abs(velocity) > 2.0f) {
+      orbit.azimuth += velocity * float(dt);
+      velocity *= float(std::exp(-dt / 0.4));
+    } else {
+      velocity = 0.0f;
+    }
+    was_dragging = orbit.dragging;
+    last_azimuth = orbit.azimuth;
+  }
+  void stop() { velocity = 0.0f; }
+};
+
 Orbit* orbit_of(GLFWwindow* w) { return static_cast<Orbit*>(glfwGetWindowUserPointer(w)); }
 
 void install_orbit_callbacks(GLFWwindow* window) {
@@ -57,7 +80,7 @@ void install_orbit_callbacks(GLFWwindow* window) {
   glfwSetScrollCallback(window, [](GLFWwindow* w, double, double dy) {
     if (ImGui::GetIO().WantCaptureMouse) return;
     Orbit* o = orbit_of(w);
-    o->distance = std::clamp(o->distance * float(std::pow(0.9, dy)), 0.3f, 20.0f);
+    o->distance = std::clamp(o->distance * float(std::pow(0.9, dy)), 0.25f, 20.0f);
     o->changed = true;
   });
 }
@@ -141,18 +164,43 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
   std::string specs_style;        // the style whose parameters `specs` lists
   std::vector<ParamSpec> specs;
   const double start = glfwGetTime();
+  // A product's view is the visitor's own (nothing is sent): dragging turns it and lets go with
+  // inertia, the wheel zooms, the arrow keys step one photo.
+  Inertia inertia;
+  bool turntable_started = false;
+  double last_time = glfwGetTime();
   while (!context->should_close() && client.connected()) {
-    if (sync.poll() && !orbit.dragging) orbit.from(sync.state().camera);
-    if (orbit.changed) {
-      client.send(orbit_pose(orbit.azimuth, orbit.elevation, orbit.distance, sequence++));
+    const double now = glfwGetTime(), dt = std::min(now - last_time, 0.1);
+    last_time = now;
+    const bool polled = sync.poll();
+    TurntableView* product = sync.view().turntable();
+    if (product) {
+      if (!turntable_started) orbit = Orbit{.azimuth = 0, .elevation = 0, .distance = 1.0f}, turntable_started = true;
+      orbit.elevation = 0;  // the photos go round one ring
+      inertia.follow(orbit, dt);
+      if (!ImGui::GetIO().WantCaptureKeyboard) {
+        const int step = ImGui::IsKeyPressed(ImGuiKey_RightArrow) ? 1 : ImGui::IsKeyPressed(ImGuiKey_LeftArrow) ? -1 : 0;
+        if (step) {
+          const int next = (product->nearest_sample(sync.view().orbit()) + step + product->samples()) % product->samples();
+          orbit.azimuth = product->sample_angles(next).x;
+          inertia.stop();
+        }
+      }
+      sync.view().orbit() = {.azimuth = orbit.azimuth, .elevation = orbit.elevation, .zoom = 1.0f / orbit.distance};
       orbit.changed = false;
+    } else {
+      if (polled && !orbit.dragging) orbit.from(sync.state().camera);
+      if (orbit.changed) {
+        client.send(orbit_pose(orbit.azimuth, orbit.elevation, orbit.distance, sequence++));
+        orbit.changed = false;
+      }
     }
     // Tab / Right: next style, Left: previous.
     const std::string current = sync.state().style.renderer;
     auto it = std::find_if(all.begin(), all.end(), [&](const StyleInfo& s) { return s.name == current; });
     const int index = it == all.end() ? 0 : int(it - all.begin()), n = int(all.size());
     int step = 0;
-    if (!ImGui::GetIO().WantCaptureKeyboard) {
+    if (!product && !ImGui::GetIO().WantCaptureKeyboard) {
       if (ImGui::IsKeyPressed(ImGuiKey_Tab) || ImGui::IsKeyPressed(ImGuiKey_RightArrow)) step = 1;
       if (ImGui::IsKeyPressed(ImGuiKey_LeftArrow)) step = -1;
     }
@@ -171,7 +219,13 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
     ImGui::Begin("Session", nullptr, ImGuiWindowFlags_AlwaysAutoResize);  // fits each style's parameters
     ImGui::Text("%s  revision %u  sent %llu B  received %llu B", sync.state().session.c_str(), sync.view().revision(),
                 (unsigned long long)client.bytes_sent(), (unsigned long long)client.bytes_received());
-    if (ImGui::BeginCombo("style", current.c_str())) {
+    if (product) {
+      // Photos arrive nearest the view first; the view tweens wherever a pair is complete.
+      char label[64];
+      std::snprintf(label, sizeof label, "photos %d / %d", product->samples_loaded(), product->samples());
+      if (!product->complete()) ImGui::ProgressBar(float(product->samples_loaded()) / float(std::max(product->samples(), 1)), ImVec2(240, 0), label);
+      else ImGui::Text("%s, drag to turn, wheel to zoom, arrows step one photo", label);
+    } else if (ImGui::BeginCombo("style", current.c_str())) {
       for (const StyleInfo& s : all)
         if (ImGui::Selectable(s.name.c_str(), s.name == current)) client.send(protocol::StyleChange{.renderer = s.name, .settings = {}});
       ImGui::EndCombo();
@@ -185,7 +239,7 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
       }
     }
     // Folded at first, so the picture is not hidden behind a long list.
-    if (!specs.empty() && ImGui::CollapsingHeader("parameters")) {
+    if (!product && !specs.empty() && ImGui::CollapsingHeader("parameters")) {
       auto values = settings_of(sync.state().style, specs);
       if (parameter_panel(specs, values)) client.send(style_change(current, values));
     }
