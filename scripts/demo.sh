@@ -10,7 +10,9 @@
 # when ../shared/data is there, a morph between two faces, dropped video frames regenerated),
 # OUT_DIR/network/ (a server, a viewer recording a shared
 # session while a director client changes its style and camera, a turntable session, and a
-# conference whose client rebuilds the speaker's face from expression codes).
+# conference whose client rebuilds the speaker's face from expression codes; products turned by
+# customers: turntable.mp4, duck-product.mp4 from a folder of photos, temple-product.mp4 from the
+# real temple photos when ../shared/data is there).
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 out=$(realpath -m "${1:-$here/demo-output}")
@@ -141,11 +143,22 @@ cat > "$out/network/server.json" <<EOF
 { "sessions": [
   { "name": "demo", "kind": "scene", "style": "comic-extended", "assets": [ { "path": "$meshes/cow.off" } ] },
   { "name": "sketchbook", "kind": "scene", "style": "sketch-pencil", "assets": [ { "path": "$meshes/bull.off" } ] },
-  { "name": "turntable", "kind": "turntable",
-    "assets": [ { "path": "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb" } ] },
+  { "name": "turntable", "kind": "turntable", "style": "tween", "product": { "mesh": "$truck", "samples": 24, "size": 512 } },
   { "name": "conference", "kind": "conference",
     "face": { "source": "$out/conference/packaged-speaker-input.mp4", "neutral": "$speaker_photo", "loop": true } } ] }
 EOF
+# A shop owner's product: studio photos of the duck turning on a turntable in front of white, every
+# 15 degrees (the view's azimuth falls as the object turns: --step -15), put on the server with one
+# command. With ../shared/data beside the checkout, the real temple photos become a product too.
+rm -rf "$out/network/duck-photos" && mkdir -p "$out/network/duck-photos"
+"$bin/inkwire-render" --mesh /usr/share/assimp/models/Collada/duck.dae --style default --view 0,0,1.4 --frames 24 \
+  --size 512x512 --backdrop '#ffffff' --out "$out/network/duck-photos/IMG_%04d.jpg"
+"$bin/inkwire-server" add-product duck --photos "$out/network/duck-photos" --step -15 --data "$out/network/server-data" \
+  > "$out/network/add-product-duck.log"
+if [[ -d "$here/../shared/data/templeRing" ]]; then
+  "$bin/inkwire-server" add-product temple --photos "$here/../shared/data/templeRing" --data "$out/network/server-data" \
+    > "$out/network/add-product-temple.log"
+fi
 "$bin/inkwire-server" --listen 127.0.0.1:0 --data "$out/network/server-data" --config "$out/network/server.json" \
   2> "$out/network/server.log" &
 server_pid=$!
@@ -169,8 +182,16 @@ for style in comic-extended sketch-pencil hatching painterly hatching+sketch-cha
     --out "$out/network/director-$style.png" 2>> "$out/network/director.log"
 done
 wait $viewer_pid
-"${client[@]}" --session turntable --name turntable --view 60,25,1.2 --frames 48 --fps 24 --size 480x360 \
-  --out "$out/network/turntable.mp4" 2>> "$out/network/viewer.log"
+# Products: each visitor turns the product on their own (nothing is sent while they do); every
+# view between the photos is synthesised by the client. The first visit shows what arrives first.
+"${client[@]}" --session turntable --name customer --view 0 --frames 96 --fps 24 --size 640x480 --wait-for-product \
+  --out "$out/network/turntable.mp4" --frame-log "$out/network/turntable.jsonl" 2>> "$out/network/viewer.log"
+"${client[@]}" --session duck --name customer --view 0 --frames 96 --fps 24 --size 512x512 \
+  --out "$out/network/duck-product.mp4" --frame-log "$out/network/duck-product.jsonl" 2>> "$out/network/viewer.log"
+if [[ -d "$here/../shared/data/templeRing" ]]; then
+  "${client[@]}" --session temple --name customer --view 0 --frames 120 --fps 24 --size 384x512 --wait-for-product \
+    --out "$out/network/temple-product.mp4" 2>> "$out/network/viewer.log"
+fi
 # The conference: the server analyses the speaker and sends codes only; the listener deforms the
 # neutral photo (fetched once) by them. Then one member asks for paint, and the face is painted.
 "${client[@]}" --session conference --name listener --frames 120 --fps 15 --size 360x480 \
@@ -180,4 +201,4 @@ wait $viewer_pid
 kill -TERM $server_pid && wait $server_pid || true
 trap - EXIT
 
-echo "demo: wrote $out/contact-sheet.png, $out/shade-maps.png, $out/paintings.png, $out/styles/, $out/turntable-*.mp4, $out/painted-video.mp4, $out/tween-methods.png, $out/tween/, $out/conference/ (input | reconstruction | painted, with bytes sent in the .json) and $out/network/ (viewer.mp4: a shared session followed over the network; conference.mp4 and conference-painted.mp4: a speaker's face rebuilt from expression codes)"
+echo "demo: wrote $out/contact-sheet.png, $out/shade-maps.png, $out/paintings.png, $out/styles/, $out/turntable-*.mp4, $out/painted-video.mp4, $out/tween-methods.png, $out/tween/, $out/conference/ (input | reconstruction | painted, with bytes sent in the .json) and $out/network/ (viewer.mp4: a shared session followed over the network; turntable.mp4 and duck-product.mp4: products turned by a customer, every in-between view synthesised; conference.mp4 and conference-painted.mp4: a speaker's face rebuilt from expression codes)"

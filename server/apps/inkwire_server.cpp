@@ -26,6 +26,10 @@ int add_product(const std::string& name, const server::ProductSource& source, co
   const bool terminal = isatty(fileno(stdout));
   bool made = false;
   protocol::Snapshot state = server::find_or_make_product(store, source, name, [&](int done, int total, const std::string& line) {
+    if (done == 0) {  // a note before the pairs (e.g. why there are no mattes)
+      std::printf("note: %s\n", line.c_str());
+      return;
+    }
     // One line per pair, with a bar on a terminal.
     std::string bar;
     if (terminal && total > 0) bar = "[" + std::string(size_t(20 * done / total), '#') + std::string(size_t(20 - 20 * done / total), '.') + "] ";
