@@ -11,6 +11,7 @@
 #include "server/products/matte.hpp"
 #include "server/products/photo_folder.hpp"
 #include "server/tween/landmarks.hpp"
+#include "server/tween/outline.hpp"
 
 namespace inkwire {
 namespace fs = std::filesystem;
@@ -54,11 +55,16 @@ Product product_from_photos(const fs::path& folder, const PhotoProductOptions& o
     const float step = std::acos(std::clamp(glm::dot(photos.directions[pair[0]], photos.directions[pair[1]]), -1.0f, 1.0f));
     landmark_options.search = {std::clamp(int(0.5f * float(product.data.width) * std::sin(step) * 1.3f) + 8, 12, product.data.width / 3),
                                std::max(8, product.data.height / 40)};
-    const std::vector<Landmark> landmarks =
-        find_landmarks(grey_of(photos.photos[pair[0]]), grey_of(photos.photos[pair[1]]), landmark_options);
+    const Image& a = photos.photos[pair[0]];
+    const Image& b = photos.photos[pair[1]];
+    std::vector<Landmark> landmarks = find_landmarks(grey_of(a), grey_of(b), landmark_options);
+    const size_t inside = landmarks.size();
+    // With mattes, the outline too: smooth objects give NCC little to hold on to.
+    if (product.matted) landmarks = with_outline(std::move(landmarks), outline_landmarks(a, b, std::max(8, a.height / 32)), landmark_options.min_spacing);
     product.data.cells.push_back(cell_from_landmarks(landmarks, pair[0], pair[1]));
     if (progress)
-      progress(i + 1, total, photos.names[pair[0]] + " -> " + photos.names[pair[1]] + ": " + std::to_string(landmarks.size()) + " landmarks");
+      progress(i + 1, total, photos.names[pair[0]] + " -> " + photos.names[pair[1]] + ": " + std::to_string(inside) + " landmarks" +
+                                 (product.matted ? ", " + std::to_string(landmarks.size() - inside) + " outline points" : ""));
   }
   product.images = std::move(photos.photos);
   // Photos say nothing of the camera's distance; a view at the samples' own distance shows them

@@ -116,7 +116,7 @@ std::string ProductSource::key() const {
     std::sort(files.begin(), files.end());
     for (const fs::path& f : files) text += " " + f.filename().string() + "=" + hash_of_file(f);
   }
-  text += " format=1";  // bump when the way products are made changes
+  text += " format=2";  // bump when the way products are made changes
   const ContentHash h = content_hash(text.data(), text.size());
   return to_hex(h);
 }

@@ -17,6 +17,7 @@
 #include "server/products/matte.hpp"
 #include "server/products/photo_folder.hpp"
 #include "server/products/product_store.hpp"
+#include "server/tween/outline.hpp"
 #include "test_data.hpp"
 
 using namespace inkwire;
@@ -192,4 +193,28 @@ TEST(ProductTest, AStoredProductIsFoundByItsKeyAndCheckedAgainstItsHashes) {
   const fs::path file = data / "assets" / to_hex(tween->hash);
   std::fstream(file, std::ios::in | std::ios::out | std::ios::binary).seekp(10).put('\x7f');
   EXPECT_NE(test::error_of([&] { server::product_tween_messages(store, state); }).find("does not match its hash"), std::string::npos);
+}
+
+TEST(ProductTest, OutlinePointsFollowTheObjectsEndsRowByRow) {
+  // An ellipse that narrows and moves right from one photo to the next, as a turning object does.
+  auto ellipse = [](float cx, float rx) {
+    Image image(120, 100, {0, 0, 0, 0});
+    for (int y = 0; y < 100; ++y)
+      for (int x = 0; x < 120; ++x)
+        if (std::pow((x + 0.5f - cx) / rx, 2.0f) + std::pow((y + 0.5f - 50.0f) / 40.0f, 2.0f) <= 1.0f) image.at(x, y)[3] = 255;
+    return image;
+  };
+  const Image a = ellipse(50, 30), b = ellipse(58, 24);
+  const std::vector<Landmark> points = outline_landmarks(a, b, 8);
+  ASSERT_GE(points.size(), 12u);
+  for (const Landmark& p : points) {
+    EXPECT_EQ(p.source.y, p.target.y);
+    const bool left = p.source.x < 50;
+    const float half_a = 50 - p.source.x, expected = left ? 58 - half_a * 24.0f / 30.0f : 58 + (p.source.x - 50) * 24.0f / 30.0f;
+    EXPECT_NEAR(p.target.x, expected, 1.5f) << p.source.x << "," << p.source.y;
+  }
+  // NCC landmarks keep their place; outline points near them are left out.
+  const std::vector<Landmark> merged = with_outline({{.source = points[0].source + glm::vec2(2, 0), .target = {}, .match = 0.9f}}, points, 8.0f);
+  EXPECT_EQ(merged.size(), points.size());  // one outline point fell within 8 pixels of the landmark
+  EXPECT_THROW(outline_landmarks(a, Image(10, 10), 8), Error);
 }
