@@ -45,6 +45,7 @@ ProductSource product_from_json(const SessionConfig& session, const nlohmann::js
   p.photo_options.matte = j.value("matte", "auto");
   p.mesh_options.samples = j.value("samples", 24);
   p.mesh_options.size = j.value("size", 512);
+  p.mesh_options.sphere_level = j.value("sphere", -1);
   return p;
 }
 

@@ -1,5 +1,6 @@
 #include "client/viewer/turntable_view.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/trigonometric.hpp>
@@ -38,6 +39,10 @@ void TurntableView::set_style(const std::vector<std::string>& settings) {
   } catch (const Error& e) {
     error_ = std::string("tween settings refused: ") + e.what();
   }
+}
+
+bool TurntableView::all_round() const {
+  return std::any_of(product_.directions.begin(), product_.directions.end(), [](const glm::vec3& d) { return std::abs(d.y) > 0.5f; });
 }
 
 int TurntableView::nearest_sample(const TurntableOrbit& orbit) const {

@@ -45,6 +45,8 @@ class TurntableView {
   int cells() const { return product_.cells; }
   int cells_loaded() const { return int(cells_seen_.size()); }
   bool complete() const { return loaded_ == samples() && cells_loaded() == cells(); }
+  // True when the samples look from above and below too (a geodesic sphere), not round one ring.
+  bool all_round() const;
   // The sample whose direction is nearest `orbit`'s, for stepping one sample at a time.
   int nearest_sample(const TurntableOrbit& orbit) const;
   // The azimuth and elevation of sample `index`, in TurntableOrbit's terms.

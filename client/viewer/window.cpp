@@ -176,7 +176,7 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
     TurntableView* product = sync.view().turntable();
     if (product) {
       if (!turntable_started) orbit = Orbit{.azimuth = 0, .elevation = 0, .distance = 1.0f}, turntable_started = true;
-      orbit.elevation = 0;  // the photos go round one ring
+      if (!product->all_round()) orbit.elevation = 0;  // the photos go round one ring
       inertia.follow(orbit, dt);
       if (!ImGui::GetIO().WantCaptureKeyboard) {
         const int step = ImGui::IsKeyPressed(ImGuiKey_RightArrow) ? 1 : ImGui::IsKeyPressed(ImGuiKey_LeftArrow) ? -1 : 0;

@@ -74,6 +74,9 @@ int main(int argc, char** argv) {
       ->needs(photos);
   add->add_option("--samples", source.mesh_options.samples, "samples on the ring (default 24)")->needs(mesh);
   add->add_option("--size", source.mesh_options.size, "sample images are this many pixels square (default 512)")->needs(mesh);
+  add->add_option("--sphere", source.mesh_options.sphere_level,
+                  "samples on a geodesic sphere instead of a ring: 0, 1 or 2 (12, 42, 162 samples), views from any side")
+      ->needs(mesh);
   add->add_option("--data", product_data, "data folder (default ./inkwire-data)");
   try {
     app.parse(argc, argv);

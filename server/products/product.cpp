@@ -75,19 +75,26 @@ Product product_from_photos(const fs::path& folder, const PhotoProductOptions& o
 Product product_from_mesh(const fs::path& mesh, const MeshProductOptions& o, const PairProgress& progress) {
   if (o.samples < 3 || o.samples > 360) throw Error("--samples must be 3..360");
   if (o.size < 32 || o.size > 2048) throw Error("--size must be 32..2048");
+  if (o.sphere_level > 2) throw Error("--sphere must be 0, 1 or 2 (12, 42 or 162 samples)");
   auto context = create_offscreen_context(64, 64);
   const SceneObject object = load_scene_object(mesh, 0, kSceneDiagonal);
   Product product;
-  const std::vector<glm::vec3> directions = ring_directions(o.samples);
+  std::vector<glm::vec3> directions = ring_directions(o.samples);
+  std::vector<std::vector<uint16_t>> cells = ring_cells(o.samples);
+  if (o.sphere_level >= 0) {
+    ViewSphere sphere = geodesic_sphere(o.sphere_level);
+    directions = std::move(sphere.directions);
+    cells = std::move(sphere.triangles);
+  }
   const MeshSamples samples = render_mesh_samples(object, directions, o.size, product.distance_diagonals, o.style);
   product.data.width = product.data.height = o.size;
   product.data.directions = directions;
-  const auto cells = ring_cells(o.samples);
   for (size_t i = 0; i < cells.size(); ++i) {
     product.data.cells.push_back(exact_cell(samples, object, cells[i], o.points));
     if (progress)
       progress(int(i + 1), int(cells.size()),
-               "samples " + std::to_string(cells[i][0]) + " -> " + std::to_string(cells[i][1]) + ": " +
+               "samples " + std::to_string(cells[i][0]) + " -> " + std::to_string(cells[i][1]) +
+                   (cells[i].size() == 3 ? " -> " + std::to_string(cells[i][2]) : std::string()) + ": " +
                    std::to_string(product.data.cells.back().points.size()) + " control points");
   }
   product.images = samples.images;

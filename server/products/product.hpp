@@ -39,6 +39,7 @@ Product product_from_photos(const std::filesystem::path& folder, const PhotoProd
 
 struct MeshProductOptions {
   int samples = 24;       // on a ring about +Y, every 360/samples degrees
+  int sphere_level = -1;  // 0-2: on a geodesic sphere instead (12, 42 or 162 samples), views from any side
   int size = 512;         // square sample images
   int points = 65;        // exact control points per pair
   std::string style = "default";
