@@ -195,10 +195,27 @@ void Connection::join(const Join& join) {
   session_->join(shared_from_this());
   log_info("join", {{"client", id_}, {"name", client_name_}, {"session", join.session}, {"members", session_->members()}});
   send(session_->state());
+  cells_pending_ = !session_->tween_frames().empty();
+  if (cells_pending_) {
+    // A member that holds every photo already asks for none: its cells go after half a second.
+    cells_timer_ = std::make_shared<asio::steady_timer>(socket_.get_executor(), std::chrono::milliseconds(500));
+    std::weak_ptr<Connection> weak = shared_from_this();
+    cells_timer_->async_wait([weak](std::error_code ec) {
+      if (const auto self = weak.lock(); self && !ec) self->send_tween_cells();
+    });
+  }
+}
+
+void Connection::send_tween_cells() {
+  if (!cells_pending_ || !session_) return;
+  cells_pending_ = false;
+  if (cells_timer_) cells_timer_->cancel();
   for (const auto& frame : session_->tween_frames()) send_frame(frame, MessageType::TweenData);
 }
 
 void Connection::leave_session() {
+  cells_pending_ = false;
+  if (cells_timer_) cells_timer_->cancel();
   if (!session_) return;
   session_->leave(this);
   log_info("leave", {{"client", id_}, {"session", session_->name()}, {"members", session_->members()}});
@@ -212,7 +229,10 @@ void Connection::serve_asset(const AssetRequest& request) {
     return;
   }
   try {
-    send(AssetChunk{.hash = request.hash, .offset = request.offset, .data = server_.store().read(request.hash, request.offset, request.length)});
+    AssetChunk chunk{.hash = request.hash, .offset = request.offset, .data = server_.store().read(request.hash, request.offset, request.length)};
+    const bool photo_done = cells_pending_ && request.offset + chunk.data.size() >= session_->asset_size(request.hash, AssetKind::Samples);
+    send(chunk);
+    if (photo_done) send_tween_cells();  // the member's first photo is on its way: the tween data follows it
   } catch (const Error& e) {
     send(ErrorMessage{.code = ErrorCode::NoAsset, .reason = e.what()});
   }

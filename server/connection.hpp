@@ -36,6 +36,7 @@ class Connection : public std::enable_shared_from_this<Connection> {
   void join(const protocol::Join& join);
   void leave_session();
   void serve_asset(const protocol::AssetRequest& request);
+  void send_tween_cells();
   void shut();
 
   asio::ip::tcp::socket socket_;
@@ -45,6 +46,10 @@ class Connection : public std::enable_shared_from_this<Connection> {
   std::string peer_, client_name_;
   SendQueue queue_;
   std::shared_ptr<Session> session_;
+  // A product's tween data waits until the member has its first photo (or half a second), so
+  // a first view costs the snapshot and one photo.
+  bool cells_pending_ = false;
+  std::shared_ptr<asio::steady_timer> cells_timer_;
   bool greeted_ = false, closing_ = false, shut_ = false;
 };
 

@@ -11,6 +11,12 @@ bool Session::lists_asset(const protocol::Hash& hash) const {
   return std::any_of(stored_.state.assets.begin(), stored_.state.assets.end(), [&](const auto& a) { return a.hash == hash; });
 }
 
+uint64_t Session::asset_size(const protocol::Hash& hash, protocol::AssetKind kind) const {
+  for (const auto& a : stored_.state.assets)
+    if (a.hash == hash && a.kind == kind) return a.size;
+  return ~uint64_t(0);
+}
+
 void Session::set_face_assets(const protocol::AssetAnnounce& photo, const protocol::AssetAnnounce& landmarks) {
   auto& assets = stored_.state.assets;
   std::erase_if(assets, [](const protocol::AssetAnnounce& a) {

@@ -38,8 +38,9 @@ bool SessionSync::poll() {
       const protocol::AssetAnnounce* photo = nth_asset(state_, protocol::AssetKind::Samples, next);
       const protocol::AssetAnnounce* matte = nth_asset(state_, protocol::AssetKind::Matte, next);
       if (!photo) throw Error("the product lists no photo for sample " + std::to_string(next));
-      const std::filesystem::path photo_file = client_.fetch_asset(*photo, cache_);
-      t->add_sample(next, photo_file, matte ? client_.fetch_asset(*matte, cache_) : std::filesystem::path());
+      // The small matte first: the server sends the tween data once the first photo is out.
+      const std::filesystem::path matte_file = matte ? client_.fetch_asset(*matte, cache_) : std::filesystem::path();
+      t->add_sample(next, client_.fetch_asset(*photo, cache_), matte_file);
       changed = true;
     }
   }

@@ -80,7 +80,15 @@ void TurntableView::add_sample(int index, const std::filesystem::path& photo, co
     const Image alpha = load_image(matte);
     if (alpha.width != image.width || alpha.height != image.height)
       throw Error(matte.filename().string() + ": the matte's size differs from its photo's");
-    for (size_t i = 0; i < image.pixels.size(); i += 4) image.pixels[i + 3] = alpha.pixels[i];
+    // The photo is stored laid over white (as a shop shows it): where the matte covers a pixel
+    // in part, the object's own colour is what is left once the white is taken out.
+    for (size_t i = 0; i < image.pixels.size(); i += 4) {
+      const int a = alpha.pixels[i];
+      image.pixels[i + 3] = uint8_t(a);
+      if (a >= 32 && a < 255)
+        for (int c = 0; c < 3; ++c)
+          image.pixels[i + size_t(c)] = uint8_t(std::clamp((int(image.pixels[i + size_t(c)]) * 255 - (255 - a) * 255 + a / 2) / a, 0, 255));
+    }
   }
   renderer_.set_sample(index, image);
   if (!has_[size_t(index)]) ++loaded_;

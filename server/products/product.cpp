@@ -19,7 +19,12 @@ namespace fs = std::filesystem;
 Product product_from_photos(const fs::path& folder, const PhotoProductOptions& o, const PairProgress& progress) {
   if (o.matte != "auto" && o.matte != "key" && o.matte != "none") throw Error("--matte must be auto, key or none");
   if (o.max_side < 32 || o.max_side > kMaxTweenImageSide) throw Error("--max-side must be 32.." + std::to_string(kMaxTweenImageSide));
-  PhotoFolder photos = read_photo_folder(folder, o.step_degrees, o.arc_degrees, o.max_side);
+  return product_from_photo_folder(read_photo_folder(folder, o.step_degrees, o.arc_degrees, o.max_side), o, progress, folder.string());
+}
+
+Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions& o, const PairProgress& progress,
+                                  const std::string& folder_name) {
+  const fs::path folder = folder_name;
   Product product;
   product.data.width = photos.photos[0].width;
   product.data.height = photos.photos[0].height;

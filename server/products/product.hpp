@@ -36,6 +36,10 @@ struct PhotoProductOptions {
 // reason naming the file at fault.
 Product product_from_photos(const std::filesystem::path& folder, const PhotoProductOptions& options,
                             const PairProgress& progress = {});
+// The same from photos already read (e.g. a subset of a folder, to hold the rest out).
+struct PhotoFolder;
+Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions& options, const PairProgress& progress = {},
+                                  const std::string& folder_name = "");
 
 struct MeshProductOptions {
   int samples = 24;       // on a ring about +Y, every 360/samples degrees

@@ -12,6 +12,7 @@
 
 #include "common/content_hash.hpp"
 #include "common/error.hpp"
+#include "common/image_metrics.hpp"
 #include "common/log.hpp"
 
 namespace inkwire::server {
@@ -51,49 +52,6 @@ Bytes encode_image(const Image& image, const char* format, int first_channel, in
   return Bytes(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
-// The colour of the background pushed out from the object, so the JPEG holds no hard edge at
-// the outline (no ringing, fewer bytes) and a filtered read there finds the object's colour.
-Image with_colour_bled(const Image& image) {
-  Image out = image;
-  const int w = image.width, h = image.height;
-  std::vector<bool> known(size_t(w) * h);
-  for (size_t i = 0; i < known.size(); ++i) known[i] = image.pixels[i * 4 + 3] >= 128;
-  // Rings of one pixel at a time, each the mean of its known neighbours: a few dozen passes
-  // cover what a warp can reach beyond the outline; the rest takes the mean object colour.
-  for (int pass = 0; pass < 24; ++pass) {
-    std::vector<bool> next = known;
-    bool grew = false;
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) {
-        if (known[size_t(y) * w + x]) continue;
-        int sum[3] = {0, 0, 0}, n = 0;
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dx = -1; dx <= 1; ++dx) {
-            const int nx = x + dx, ny = y + dy;
-            if (nx < 0 || ny < 0 || nx >= w || ny >= h || !known[size_t(ny) * w + nx]) continue;
-            for (int c = 0; c < 3; ++c) sum[c] += out.at(nx, ny)[c];
-            ++n;
-          }
-        if (n == 0) continue;
-        for (int c = 0; c < 3; ++c) out.at(x, y)[c] = uint8_t(sum[c] / n);
-        next[size_t(y) * w + x] = true;
-        grew = true;
-      }
-    known.swap(next);
-    if (!grew) break;
-  }
-  long sum[3] = {0, 0, 0}, n = 0;
-  for (size_t i = 0; i < known.size(); ++i)
-    if (image.pixels[i * 4 + 3] >= 128) {
-      for (int c = 0; c < 3; ++c) sum[c] += image.pixels[i * 4 + size_t(c)];
-      ++n;
-    }
-  for (size_t i = 0; i < known.size(); ++i)
-    if (!known[i])
-      for (int c = 0; c < 3; ++c) out.pixels[i * 4 + size_t(c)] = uint8_t(n ? sum[c] / n : 255);
-  return out;
-}
-
 std::string hash_of_file(const fs::path& file) { return to_hex(content_hash_of_file(file)); }
 
 }  // namespace
@@ -117,7 +75,7 @@ std::string ProductSource::key() const {
     std::sort(files.begin(), files.end());
     for (const fs::path& f : files) text += " " + f.filename().string() + "=" + hash_of_file(f);
   }
-  text += " format=2";  // bump when the way products are made changes
+  text += " format=3";  // bump when the way products are made changes
   const ContentHash h = content_hash(text.data(), text.size());
   return to_hex(h);
 }
@@ -136,7 +94,10 @@ protocol::Snapshot store_product(AssetStore& store, const Product& product, cons
   for (size_t i = 0; i < product.images.size(); ++i) {
     const Image& image = product.images[i];
     std::snprintf(name, sizeof name, "sample-%03zu.jpg", i);
-    state.assets.push_back(store.add_bytes(encode_image(product.matted ? with_colour_bled(image) : image, "jpg", 0, 3, kJpegQuality),
+    // As a shop shows a photo: on white, which is also what compresses best; clients bleed the
+    // object's colour past the outline themselves (matte_sample()).
+    state.assets.push_back(store.add_bytes(encode_image(product.matted ? over_colour(image, {255, 255, 255}, false) : image, "jpg", 0, 3,
+                                                        kJpegQuality),
                                            AssetKind::Samples, name));
     if (product.matted) {
       std::snprintf(name, sizeof name, "matte-%03zu.png", i);

@@ -78,6 +78,7 @@ std::vector<Result> run_painterly_suite(Harness& harness);
 std::vector<Result> run_net_suite(Harness& harness);
 std::vector<Result> run_face_suite(Harness& harness);
 std::vector<Result> run_tween_suite(Harness& harness);
+std::vector<Result> run_turntable_suite(Harness& harness);
 std::vector<Result> run_landmarks_suite(Harness& harness);
 
 }  // namespace inkwire::bench

@@ -54,7 +54,7 @@ Image matte_sample(const Image& image) {
       float d = in ? to_background.at<float>(y, x) - 0.5f : 0.5f - to_object.at<float>(y, x);
       if (alpha > 0 && alpha < 255 && std::abs(d) <= 1.0f) d = float(alpha) / 255.0f - 0.5f;
       uint8_t* p = out.at(x, y);
-      if (alpha == 0) {
+      if (alpha < 32) {  // too little of the object in it to trust its colour
         const cv::Point src = object_pixel_of_label[size_t(nearest_object.at<int>(y, x))];
         if (src.x >= 0) std::copy_n(image.at(src.x, src.y), 3, p);
       }

@@ -1,0 +1,317 @@
+// --suite turntable (SPEC T11-T14): a product as a shop would show it, against the peer a shop
+// would use instead, a 360-degree spin viewer (N photos, the nearest one shown). A textured
+// product rendered into N samples at 512x512 (N = 12, 18, 24, 36, 72) and stored as the server
+// stores products (JPEG photos, PNG mattes, tween data); the truth rendered at every degree.
+// Per N: mean and worst PSNR / SSIM over the 360 truth views of the spin viewer, a cross-fade
+// and the tween (every view drawn from the decoded stored photos), the worst matte IoU of the
+// tween, the bytes each client downloads, and the bytes and milliseconds until a first view on
+// loopback (a real server, a real client). With ../shared/data/templeRing: the same on real
+// photos, the even photos made into a product and the odd ones held out as the truth.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <numeric>
+#include <thread>
+
+#include <unistd.h>
+
+#include <glm/trigonometric.hpp>
+
+#include "common/camera.hpp"
+
+#include "bench_harness.hpp"
+#include "client/net/asset_cache.hpp"
+#include "client/net/session_client.hpp"
+#include "client/render/styles.hpp"
+#include "client/render/tween/mesh_samples.hpp"
+#include "client/render/tween/tween_renderer.hpp"
+#include "common/error.hpp"
+#include "common/image_metrics.hpp"
+#include "common/tween/view_sphere.hpp"
+#include "server/products/photo_folder.hpp"
+#include "server/products/product.hpp"
+#include "server/products/product_store.hpp"
+#include "server/server.hpp"
+
+namespace inkwire::bench {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr int kSize = 512;
+constexpr float kDistance = 1.4f;
+const fs::path kTruck = "/usr/share/assimp/models/glTF/CesiumMilkTruck/CesiumMilkTruck.gltf";
+
+// A stored asset decoded as a client decodes it: from a file (OpenImageIO's JPEG reader here
+// reads files only).
+Image decode_asset(const server::AssetStore& store, const protocol::AssetAnnounce& asset) {
+  const fs::path file = fs::temp_directory_path() / ("inkwire-bench-" + std::to_string(::getpid()) + "-" + asset.name);
+  const protocol::Bytes bytes = store.read_verified(asset.hash);
+  std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+  Image image = load_image(file);
+  fs::remove(file);
+  return image;
+}
+
+// Decoded stored photos (with their mattes) of a product, as a client gets them.
+std::vector<Image> stored_photos(const server::AssetStore& store, const protocol::Snapshot& state) {
+  std::vector<Image> photos, mattes;
+  for (const auto& a : state.assets) {
+    if (a.kind == protocol::AssetKind::Samples) photos.push_back(decode_asset(store, a));
+    if (a.kind == protocol::AssetKind::Matte) mattes.push_back(decode_asset(store, a));
+  }
+  for (size_t i = 0; i < mattes.size(); ++i)
+    for (size_t p = 0; p < photos[i].pixels.size(); p += 4) photos[i].pixels[p + 3] = mattes[i].pixels[p];
+  return photos;
+}
+
+uint64_t bytes_of(const protocol::Snapshot& state, protocol::AssetKind kind) {
+  uint64_t n = 0;
+  for (const auto& a : state.assets)
+    if (a.kind == kind) n += a.size;
+  return n;
+}
+
+struct Scores {
+  std::vector<double> psnr, ssim, iou;
+  void add(const Image& view, const Image& truth, bool premultiplied) {
+    const Image a = over_colour(view, {255, 255, 255}, premultiplied), b = over_colour(truth, {255, 255, 255}, false);
+    psnr.push_back(inkwire::psnr(a, b));
+    ssim.push_back(inkwire::ssim(a, b));
+    iou.push_back(matte_iou(view, truth));
+  }
+  static double mean(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / double(std::max<size_t>(v.size(), 1)); }
+  static double min(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end()); }
+};
+
+Result row(const std::string& variant, const std::string& object, int samples, const Scores& s, bool with_iou) {
+  Result r;
+  r.suite = "turntable", r.renderer = "turntable", r.variant = variant, r.object = object;
+  r.counters = {{"samples", samples}, {"psnr_mean", Scores::mean(s.psnr)}, {"psnr_min", Scores::min(s.psnr)}, {"ssim_mean", Scores::mean(s.ssim)}};
+  if (with_iou) r.counters["matte_iou_min"] = Scores::min(s.iou);
+  return r;
+}
+
+// The time and bytes until a client has what a first view needs, on loopback: the snapshot,
+// then the first photo (and its matte). A real server on the stored data, a real client.
+std::pair<double, double> first_view(const fs::path& data, const std::string& session) {
+  asio::io_context io(1);
+  server::ServerConfig config;
+  config.port = 0;
+  config.data_dir = data;
+  config.sessions.clear();
+  server::Server server(io, config);
+  server.start();
+  std::thread thread([&] { io.run(); });
+  double ms = 0, bytes = 0;
+  {
+    const fs::path cache_dir = data / ("cache-" + session);
+    fs::remove_all(cache_dir);
+    AssetCache cache(cache_dir);
+    const auto start = std::chrono::steady_clock::now();
+    SessionClient client("127.0.0.1:" + std::to_string(server.port()), "bench");
+    const protocol::Snapshot state = client.join(session, "");
+    // As the client does: the small matte, then its photo (a spin viewer's photo is an image).
+    for (protocol::AssetKind kind : {protocol::AssetKind::Matte, protocol::AssetKind::Samples, protocol::AssetKind::Image})
+      for (const auto& a : state.assets)
+        if (a.kind == kind) {
+          client.fetch_asset(a, cache);
+          break;
+        }
+    ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    bytes = double(client.bytes_received());
+  }
+  asio::post(io, [&] { server.stop(); });
+  thread.join();
+  return {ms, bytes};
+}
+
+// A spin viewer's product: the N photos over white as JPEGs, in a session of their own.
+protocol::Snapshot store_spin(server::AssetStore& store, const std::vector<Image>& photos, const std::string& name) {
+  Product spin;
+  spin.data.width = photos[0].width, spin.data.height = photos[0].height;
+  spin.data.directions = ring_directions(int(photos.size()));
+  spin.data.cells = {TweenCell{.samples = {0, 1}, .points = {}}};
+  for (const Image& p : photos) spin.images.push_back(over_colour(p, {255, 255, 255}, false));
+  protocol::Snapshot state = server::store_product(store, spin, name);
+  std::erase_if(state.assets, [](const auto& a) { return a.kind != protocol::AssetKind::Samples; });
+  for (auto& a : state.assets) a.kind = protocol::AssetKind::Image;
+  state.kind = protocol::SessionKind::Scene;
+  state.product = {};
+  store.save_session({.token = "", .state = state});
+  return state;
+}
+
+// Real photos: templeRing's even photos made into a product as add-product makes one, the odd
+// ones held out as the truth (each lies between two product photos, about 15 degrees apart).
+std::vector<Result> temple_rows(Canvas& canvas) {
+  const fs::path folder = fs::path(INKWIRE_SHARED_DATA_DIR) / "templeRing";
+  if (!fs::exists(folder)) {
+    std::fprintf(stderr, "inkwire-bench: %s is absent: no templeRing rows\n", folder.c_str());
+    return {};
+  }
+  const PhotoFolder all = read_photo_folder(folder, 0, 0, 512);
+  PhotoFolder even;
+  std::vector<int> held_out;
+  for (size_t i = 0; i < all.photos.size(); ++i) {
+    if (i % 2 == 1) {
+      held_out.push_back(int(i));
+      continue;
+    }
+    even.names.push_back(all.names[i]);
+    even.photos.push_back(all.photos[i]);
+    even.directions.push_back(all.directions[i]);
+  }
+  for (size_t i = 0; i + 1 < even.photos.size(); ++i) even.pairs.push_back({uint16_t(i), uint16_t(i + 1)});
+  const Product product = product_from_photo_folder(even, PhotoProductOptions{}, {}, folder.string());
+  const fs::path data = fs::temp_directory_path() / ("inkwire-bench-temple-" + std::to_string(::getpid()));
+  fs::remove_all(data);
+  protocol::Snapshot state;
+  {
+    server::AssetStore store(data);
+    state = server::store_product(store, product, "temple");
+  }
+  server::AssetStore store(data);
+  TweenModel model;
+  model.data = product.data;
+  model.images = stored_photos(store, state);
+  const float half = kSceneDiagonal / (2.0f * std::sqrt(3.0f));
+  model.bounds = {.min = glm::vec3(-half), .max = glm::vec3(half)};
+  model.distance_diagonals = product.distance_diagonals;
+  TweenRenderer renderer;
+  renderer.configure(style_params("tween").front());
+  renderer.use_model(model);
+  Scores spin, fade, tween;
+  for (int k : held_out) {
+    if (k + 1 >= int(all.photos.size())) continue;  // past the last product photo: nothing to tween from
+    const Image& truth = all.photos[size_t(k)];
+    const glm::vec3 d = all.directions[size_t(k)];
+    FrameState frame;
+    frame.viewport = {model.data.width, model.data.height};
+    frame.camera.position = d * model.distance_diagonals * kSceneDiagonal;
+    frame.camera.target = glm::vec3(0.0f);
+    // The spin viewer: the nearer of the two product photos around it.
+    const int before = k / 2, after = before + 1;
+    const bool first_nearer = glm::dot(d, even.directions[size_t(before)]) >= glm::dot(d, even.directions[size_t(after)]);
+    const Image& nearest = model.images[size_t(first_nearer ? before : after)];
+    spin.psnr.push_back(psnr(nearest, truth));
+    spin.ssim.push_back(ssim(nearest, truth));
+    for (auto [method, compose, scores] : {std::tuple{"crossfade", "sum", &fade}, std::tuple{"bilinear", "matte", &tween}}) {
+      renderer.configure(style_params("tween", {std::string("method=") + method, std::string("compose=") + compose}).front());
+      canvas.bind();
+      renderer.draw(frame);
+      const Image view = over_colour(renderer.last_view(), {0, 0, 0}, true);
+      scores->psnr.push_back(psnr(view, truth));
+      scores->ssim.push_back(ssim(view, truth));
+    }
+  }
+  const int n = int(even.photos.size());
+  std::vector<Result> rows = {row("spin,n=" + std::to_string(n) + ",data=templeRing", "templeRing", n, spin, false),
+                              row("crossfade,n=" + std::to_string(n) + ",data=templeRing", "templeRing", n, fade, false),
+                              row("tween,n=" + std::to_string(n) + ",data=templeRing", "templeRing", n, tween, false)};
+  rows[2].counters["bytes_total"] = double(bytes_of(state, protocol::AssetKind::Samples) + bytes_of(state, protocol::AssetKind::Tween));
+  rows[2].counters["bytes_tween"] = double(bytes_of(state, protocol::AssetKind::Tween));
+  rows[0].counters["bytes_total"] = double(bytes_of(state, protocol::AssetKind::Samples));
+  std::fprintf(stderr, "inkwire-bench: turntable templeRing (%zu held out): spin %.2f dB, cross-fade %.2f dB, tween %.2f dB\n",
+               spin.psnr.size(), Scores::mean(spin.psnr), Scores::mean(fade.psnr), Scores::mean(tween.psnr));
+  fs::remove_all(data);
+  return rows;
+}
+
+}  // namespace
+
+std::vector<Result> run_turntable_suite(Harness& harness) {
+  std::vector<Result> results;
+  Canvas canvas(kSize, kSize, 1);
+  if (!fs::exists(kTruck)) {
+    std::fprintf(stderr, "inkwire-bench: %s is missing (assimp-testmodels): no truck rows\n", kTruck.c_str());
+    return temple_rows(canvas);
+  }
+  const SceneObject truck = load_scene_object(kTruck);
+  const fs::path data = fs::temp_directory_path() / ("inkwire-bench-turntable-" + std::to_string(::getpid()));
+  fs::remove_all(data);
+  // The truth at every degree.
+  std::vector<Image> truth;
+  for (int deg = 0; deg < 360; ++deg) truth.push_back(render_mesh_view(truck, ring_directions(360)[size_t(deg)], kSize, kDistance));
+  std::fprintf(stderr, "inkwire-bench: turntable truth rendered\n");
+  for (int n : {12, 18, 24, 36, 72}) {
+    // Made and stored as the server makes a product from a mesh.
+    Product product;
+    const auto directions = ring_directions(n);
+    const MeshSamples samples = render_mesh_samples(truck, directions, kSize, kDistance);
+    product.data.width = product.data.height = kSize;
+    product.data.directions = directions;
+    for (const auto& cell : ring_cells(n)) product.data.cells.push_back(exact_cell(samples, truck, cell, 65));
+    product.images = samples.images;
+    product.matted = true;
+    const std::string name = "truck" + std::to_string(n);
+    protocol::Snapshot state, spin_state;
+    {
+      server::AssetStore store(data);
+      state = server::store_product(store, product, name);
+      store.save_session({.token = "", .state = state});
+      spin_state = store_spin(store, samples.images, "spin" + std::to_string(n));
+    }
+    server::AssetStore store(data);
+    TweenModel model;
+    model.data = decode_tween(store.read_verified(std::find_if(state.assets.begin(), state.assets.end(), [](const auto& a) {
+                                                    return a.kind == protocol::AssetKind::Tween;
+                                                  })->hash));
+    model.images = stored_photos(store, state);
+    model.bounds = truck.topology.bounds;
+    model.distance_diagonals = kDistance;
+    std::vector<Image> spin_photos;
+    for (const auto& a : spin_state.assets) spin_photos.push_back(decode_asset(store, a));
+
+    Scores spin, fade, tween;
+    TweenRenderer renderer;
+    renderer.configure(style_params("tween").front());
+    renderer.use_model(model);
+    for (int deg = 0; deg < 360; ++deg) {
+      const glm::vec3 d = ring_directions(360)[size_t(deg)];
+      FrameState frame;
+      frame.viewport = {kSize, kSize};
+      frame.camera = sample_camera(truck.topology.bounds, d, kDistance);
+      // The spin viewer: the nearest photo as it is.
+      int nearest = int(std::lround(float(deg) * float(n) / 360.0f)) % n;
+      const Image& shown = spin_photos[size_t(nearest)];  // over white already: a spin viewer has no matte
+      const Image truth_on_white = over_colour(truth[size_t(deg)], {255, 255, 255}, false);
+      spin.psnr.push_back(psnr(shown, truth_on_white));
+      spin.ssim.push_back(ssim(shown, truth_on_white));
+      for (auto [method, compose, scores] : {std::tuple{"crossfade", "sum", &fade}, std::tuple{"bilinear", "matte", &tween}}) {
+        renderer.configure(style_params("tween", {std::string("method=") + method, std::string("compose=") + compose}).front());
+        canvas.bind();
+        renderer.draw(frame);
+        scores->add(renderer.last_view(), truth[size_t(deg)], true);
+      }
+    }
+    const uint64_t photo_bytes = bytes_of(state, protocol::AssetKind::Samples), matte_bytes = bytes_of(state, protocol::AssetKind::Matte),
+                   tween_bytes = bytes_of(state, protocol::AssetKind::Tween), spin_bytes = bytes_of(spin_state, protocol::AssetKind::Image);
+    const auto [tween_ms, tween_first] = first_view(data, name);
+    const auto [spin_ms, spin_first] = first_view(data, "spin" + std::to_string(n));
+    Result s = row("spin,n=" + std::to_string(n), "truck", n, spin, false);
+    s.counters["bytes_total"] = double(spin_bytes);
+    s.counters["bytes_first_view"] = spin_first;
+    s.counters["ms_first_view"] = spin_ms;
+    Result f = row("crossfade,n=" + std::to_string(n), "truck", n, fade, true);
+    f.counters["bytes_total"] = double(spin_bytes);
+    Result t = row("tween,n=" + std::to_string(n), "truck", n, tween, true);
+    t.counters["bytes_total"] = double(photo_bytes + matte_bytes + tween_bytes);
+    t.counters["bytes_photos"] = double(photo_bytes);
+    t.counters["bytes_mattes"] = double(matte_bytes);
+    t.counters["bytes_tween"] = double(tween_bytes);
+    t.counters["bytes_first_view"] = tween_first;
+    t.counters["ms_first_view"] = tween_ms;
+    t.counters["one_photo_bytes"] = double(photo_bytes) / n;
+    for (Result* r : {&s, &f, &t}) results.push_back(std::move(*r));
+    std::fprintf(stderr, "inkwire-bench: turntable n=%d: spin %.2f dB, cross-fade %.2f dB, tween %.2f dB (IoU min %.4f)\n", n,
+                 Scores::mean(spin.psnr), Scores::mean(fade.psnr), Scores::mean(tween.psnr), Scores::min(tween.iou));
+  }
+  fs::remove_all(data);
+  (void)harness;
+  for (Result& r : temple_rows(canvas)) results.push_back(std::move(r));
+  return results;
+}
+
+}  // namespace inkwire::bench
