@@ -1,10 +1,16 @@
 // The wire protocol: round trips, streams cut anywhere, hostile bytes (SPEC N3).
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <random>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <glm/vec3.hpp>
 
+#include "common/tween/tween_data.hpp"
 #include "protocol/framing.hpp"
 
 using namespace inkwire::protocol;
@@ -207,4 +213,33 @@ TEST(ProtocolTest, HundredThousandRandomByteStringsEndCleanly) {
   }
   EXPECT_GT(errors, 50000);  // noise is nearly always rejected
   EXPECT_GT(messages, 0);    // and flipped streams still deliver their intact prefixes
+}
+
+// The web client's codec (client/web/protocol/) decodes these very bytes in its own tests: one
+// frame of every message type, and one tween cell. A change to the C++ codec fails here until
+// the file is approved again (INKWIRE_APPROVE_GOLDEN=1), which the JS tests then check.
+TEST(ProtocolTest, GoldenFramesForTheWebClientAreTheseBytes) {
+  auto hex = [](const auto& bytes) {
+    std::string out;
+    char two[3];
+    for (uint8_t b : bytes) std::snprintf(two, sizeof two, "%02x", b), out += two;
+    return out;
+  };
+  nlohmann::json golden = {{"version", kVersion}, {"frames", nlohmann::json::array()}};
+  for (const Message& m : every_message()) golden["frames"].push_back({{"type", name_of(type_of(m))}, {"hex", hex(encode(m))}});
+  inkwire::TweenCell cell{.samples = {3, 4}, .points = {}};
+  for (int i = 0; i < 12; ++i)
+    cell.points.push_back({glm::vec2(20.5f + 17 * i, 40 + 9 * i), glm::vec2(27.25f + 17 * i, 40.5f + 9 * i), glm::vec2(33 + 17 * i, 41 + 9 * i)});
+  const auto cell_bytes = inkwire::encode_tween_cell(cell, 512, 384, 24);
+  golden["cell"] = {{"width", 512}, {"height", 384}, {"samples", 24}, {"hex", hex(cell_bytes)}, {"points", nlohmann::json::array()}};
+  for (const auto& p : inkwire::decode_tween_cell(cell_bytes, 512, 384, 24).points)
+    golden["cell"]["points"].push_back({{p[0].x, p[0].y}, {p[1].x, p[1].y}, {p[2].x, p[2].y}});
+  const std::filesystem::path file = std::filesystem::path(INKWIRE_GOLDEN_DIR) / "protocol-frames.json";
+  if (const char* approve = std::getenv("INKWIRE_APPROVE_GOLDEN"); approve && std::string(approve) == "1") {
+    std::ofstream(file) << golden.dump(1) << "\n";
+    GTEST_SKIP() << "approved " << file;
+  }
+  std::ifstream in(file);
+  ASSERT_TRUE(in) << file << " is missing: approve it with INKWIRE_APPROVE_GOLDEN=1";
+  EXPECT_EQ(nlohmann::json::parse(in), golden) << "the wire bytes changed: check client/web/protocol/ and approve " << file;
 }

@@ -1,0 +1,261 @@
+// Every message of the Inkwire wire protocol (protocol/SPEC.md), mirroring protocol/messages.cpp
+// function by function: one serialise function per message reads (with the same validation),
+// writes and so measures it. Field names are the C++ ones. Numbers are JS numbers, except u64
+// nonces (BigInt); vectors are arrays; hashes and blobs are Uint8Arrays.
+import { ProtocolError, ReadStream, WriteStream } from './streams.js';
+
+export const kMagic = 0x574b4e49;  // the bytes "INKW" read as a little-endian u32
+export const kVersion = 2;
+export const kMaxName = 64;
+export const kMaxToken = 128;
+export const kMaxReason = 512;
+export const kMaxRenderer = 128;
+export const kMaxSetting = 300;
+export const kMaxSettings = 64;
+export const kMaxAssets = 1024;
+export const kMaxProductSamples = 360;
+export const kMaxChunk = 64 * 1024;
+export const kMaxTween = 16 * 1024;
+export const kMaxAssetBytes = 2 ** 30;
+
+export const MessageType = Object.freeze({
+  hello: 1, welcome: 2, error: 3, ping: 4, pong: 5, join: 6, leave: 7, snapshot: 8, 'style-change': 9, 'camera-pose': 10,
+  'object-pose': 11, 'expression-code': 12, 'tween-data': 13, 'asset-announce': 14, 'asset-request': 15, 'asset-chunk': 16,
+});
+export const kMessageTypes = 16;
+export const nameOf = (type) => Object.keys(MessageType).find((k) => MessageType[k] === type) ?? 'unknown';
+
+export const SessionKind = Object.freeze({ scene: 1, turntable: 2, conference: 3 });
+export const AssetKind = Object.freeze({ mesh: 1, image: 2, samples: 3, tween: 4, landmarks: 5, matte: 6 });
+export const ErrorCode = Object.freeze({
+  'bad-version': 1, malformed: 2, 'no-session': 3, 'bad-token': 4, 'not-joined': 5, 'no-asset': 6, 'too-slow': 7,
+  'shutting-down': 8, refused: 9,
+});
+
+function check(ok, reason) {
+  if (!ok) throw new ProtocolError(reason);
+}
+
+function enumeration(s, value, first, last, what, size) {
+  const v = size === 1 ? s.u8(value) : s.u16(value);
+  if (s.constructor.reading && (v < first || v > last)) throw new ProtocolError(`unknown ${what} ${v}`);
+  return v;
+}
+
+// Names (sessions, renderers, setting keys) are plain: letters, digits and the extra characters.
+function plain(text, extra) {
+  for (const c of text) if (!/[A-Za-z0-9]/.test(c) && !extra.includes(c)) return false;
+  return true;
+}
+
+const length = (v) => Math.hypot(...v);
+const sub = (a, b) => a.map((x, i) => x - b[i]);
+
+function serialiseHello(s, m) {
+  m.magic = s.u32(m.magic ?? kMagic);
+  m.version = s.u16(m.version ?? kVersion);
+  m.client_name = s.text(m.client_name ?? '', kMaxName);
+}
+
+function serialiseWelcome(s, m) {
+  m.version = s.u16(m.version ?? kVersion);
+  m.server_name = s.text(m.server_name ?? '', kMaxName);
+}
+
+function serialiseErrorMessage(s, m) {
+  m.code = enumeration(s, m.code ?? 9, 1, 9, 'error code', 2);
+  m.reason = s.text(m.reason ?? '', kMaxReason);
+}
+
+function serialisePing(s, m) { m.nonce = s.u64(m.nonce ?? 0n); }
+function serialisePong(s, m) { m.nonce = s.u64(m.nonce ?? 0n); }
+
+function serialiseJoin(s, m) {
+  m.session = s.text(m.session ?? '', kMaxName);
+  m.token = s.text(m.token ?? '', kMaxToken);
+  if (s.constructor.reading) check(m.session.length > 0 && plain(m.session, '-_.'), 'session name must be letters, digits, - _ .');
+}
+
+function serialiseLeave() {}
+
+function serialiseStyleChange(s, m) {
+  m.renderer = s.text(m.renderer ?? 'default', kMaxRenderer);
+  const settings = m.settings ?? [];
+  const n = s.count(settings.length, kMaxSettings, 'style settings');
+  m.settings = [];
+  for (let i = 0; i < n; ++i) {
+    const setting = s.text(settings[i], kMaxSetting);
+    if (s.constructor.reading) {
+      const eq = setting.indexOf('=');
+      check(eq > 0 && plain(setting.slice(0, eq), '_-'), 'style setting is not KEY=VALUE');
+    }
+    m.settings.push(setting);
+  }
+  if (s.constructor.reading) check(m.renderer.length > 0 && plain(m.renderer, '-_+'), 'renderer name must be letters, digits, - _ +');
+}
+
+function serialiseCameraPose(s, m) {
+  m.sequence = s.u32(m.sequence ?? 0);
+  m.position = s.vec3(m.position ?? [0, 0, 5]);
+  m.target = s.vec3(m.target ?? [0, 0, 0]);
+  m.up = s.vec3(m.up ?? [0, 1, 0]);
+  m.fov_y_degrees = s.f32(m.fov_y_degrees ?? 45);
+  if (s.constructor.reading) {
+    check(m.fov_y_degrees >= 1 && m.fov_y_degrees <= 170, 'camera field of view outside 1..170 degrees');
+    check(length(m.up) > 1e-6, 'camera up vector is zero');
+    check(length(sub(m.position, m.target)) > 1e-6, 'camera position equals its target');
+    check(length(m.position) < 1e6 && length(m.target) < 1e6, 'camera outside the +-1e6 world');
+  }
+}
+
+function serialiseObjectPose(s, m) {
+  m.sequence = s.u32(m.sequence ?? 0);
+  m.rotation = [0, 1, 2, 3].map((i) => s.f32((m.rotation ?? [0, 0, 0, 1])[i]));
+  m.translation = s.vec3(m.translation ?? [0, 0, 0]);
+  m.scale = s.f32(m.scale ?? 1);
+  if (s.constructor.reading) {
+    check(Math.abs(length(m.rotation) - 1) < 1e-3, 'object rotation is not a unit quaternion');
+    check(m.scale > 1e-6 && m.scale < 1e6, 'object scale outside 1e-6..1e6');
+    check(length(m.translation) < 1e6, 'object outside the +-1e6 world');
+  }
+}
+
+function serialiseExpressionCode(s, m) {
+  m.code = s.u8(m.code ?? 0);
+  m.intensity = s.u8(m.intensity ?? 0);
+  m.sequence = s.u16(m.sequence ?? 0);
+  m.params = [0, 1, 2, 3].map((i) => {
+    const raw = s.u8(((m.params ?? [0, 0, 0, 0])[i] + 256) % 256);
+    return raw > 127 ? raw - 256 : raw;
+  });
+}
+
+function serialiseTweenData(s, m) {
+  m.pair = s.u16(m.pair ?? 0);
+  m.data = s.blob(m.data ?? new Uint8Array(), kMaxTween);
+}
+
+function serialiseAssetAnnounce(s, m) {
+  m.hash = s.hash(m.hash ?? new Uint8Array(32));
+  m.size = Number(s.u64(m.size ?? 0));
+  m.kind = enumeration(s, m.kind ?? 1, 1, 6, 'asset kind', 1);
+  m.name = s.text(m.name ?? '', kMaxName);
+  if (s.constructor.reading) {
+    check(m.size <= kMaxAssetBytes, 'asset larger than 1 GiB');
+    check(m.name.length > 0 && m.name[0] !== '.' && plain(m.name, '-_.'), 'asset name must be a plain file name');
+  }
+}
+
+function serialiseAssetRequest(s, m) {
+  m.hash = s.hash(m.hash ?? new Uint8Array(32));
+  m.offset = Number(s.u64(m.offset ?? 0));
+  m.length = s.u32(m.length ?? 0);
+  if (s.constructor.reading) check(m.length > 0 && m.length <= kMaxChunk && m.offset <= kMaxAssetBytes, 'asset request outside 1..65536 bytes');
+}
+
+function serialiseAssetChunk(s, m) {
+  m.hash = s.hash(m.hash ?? new Uint8Array(32));
+  m.offset = Number(s.u64(m.offset ?? 0));
+  m.data = s.blob(m.data ?? new Uint8Array(), kMaxChunk);
+  if (s.constructor.reading) check(m.offset + m.data.length <= kMaxAssetBytes, 'asset chunk beyond 1 GiB');
+}
+
+function serialiseProduct(s, m) {
+  m.width = s.u16(m.width ?? 0);
+  m.height = s.u16(m.height ?? 0);
+  const directions = m.directions ?? [];
+  const n = s.count(directions.length, kMaxProductSamples, 'product samples');
+  m.directions = [];
+  for (let i = 0; i < n; ++i) {
+    // Unit vectors as 3 x i16 (component x 32767), as in the tween data's header.
+    const d = (directions[i] ?? [0, 0, 0]).map((c) => {
+      const q = s.u16((Math.round(Math.min(1, Math.max(-1, c)) * 32767) + 65536) % 65536);
+      return (q > 32767 ? q - 65536 : q) / 32767;
+    });
+    if (s.constructor.reading) check(Math.abs(length(d) - 1) < 0.01, 'product sample direction is not a unit vector');
+    m.directions.push(d);
+  }
+  m.cells = s.u16(m.cells ?? 0);
+  m.distance_diagonals = s.f32(m.distance_diagonals ?? 1.4);
+  m.fov_y_degrees = s.f32(m.fov_y_degrees ?? 45);
+  if (s.constructor.reading) {
+    const empty = m.directions.length === 0;
+    check(empty ? m.width === 0 && m.height === 0 && m.cells === 0 : m.directions.length >= 2, 'product with fewer than 2 samples');
+    check(empty || (m.width >= 1 && m.height >= 1 && m.width <= 4095 && m.height <= 4095), 'product image size outside 1..4095');
+    check(m.cells <= 4 * kMaxProductSamples, 'product has too many tween cells');
+    check(m.distance_diagonals > 0.01 && m.distance_diagonals < 1000, 'product camera distance outside 0.01..1000 diagonals');
+    check(m.fov_y_degrees >= 1 && m.fov_y_degrees <= 170, 'product field of view outside 1..170 degrees');
+  }
+}
+
+function serialiseSnapshot(s, m) {
+  m.session = s.text(m.session ?? '', kMaxName);
+  m.kind = enumeration(s, m.kind ?? 1, 1, 3, 'session kind', 1);
+  m.revision = s.u32(m.revision ?? 0);
+  const assets = m.assets ?? [];
+  const n = s.count(assets.length, kMaxAssets, 'assets');
+  m.assets = [];
+  for (let i = 0; i < n; ++i) {
+    const a = { ...(assets[i] ?? {}) };
+    serialiseAssetAnnounce(s, a);
+    m.assets.push(a);
+  }
+  for (const [field, serialise] of [['style', serialiseStyleChange], ['camera', serialiseCameraPose], ['object', serialiseObjectPose],
+                                    ['expression', serialiseExpressionCode], ['product', serialiseProduct]]) {
+    m[field] = { ...(m[field] ?? {}) };
+    serialise(s, m[field]);
+  }
+}
+
+// In MessageType order: index + 1 == type code.
+const serialisers = [serialiseHello, serialiseWelcome, serialiseErrorMessage, serialisePing, serialisePong, serialiseJoin, serialiseLeave,
+                     serialiseSnapshot, serialiseStyleChange, serialiseCameraPose, serialiseObjectPose, serialiseExpressionCode,
+                     serialiseTweenData, serialiseAssetAnnounce, serialiseAssetRequest, serialiseAssetChunk];
+
+export const kHeaderBytes = 6;
+export const kMaxPayload = 128 * 1024;
+
+// The whole frame of `message` ({type: 'snapshot', ...fields}): u32 payload length, u16 type,
+// payload. Throws ProtocolError if a field exceeds its limit.
+export function encode(message) {
+  const type = MessageType[message.type];
+  if (!type) throw new ProtocolError(`unknown message type ${message.type}`);
+  const s = new WriteStream();
+  s.u32(0);
+  s.u16(type);
+  serialisers[type - 1](s, { ...message });
+  const frame = s.result();
+  const payload = frame.length - kHeaderBytes;
+  if (payload > kMaxPayload) throw new ProtocolError(`${message.type} message exceeds the frame limit`);
+  new DataView(frame.buffer).setUint32(0, payload, true);
+  return frame;
+}
+
+// Reads a frame header; throws ProtocolError for an unknown type or a length over the limit,
+// before anything of the payload is read.
+export function parseHeader(bytes) {
+  const view = new DataView(bytes.buffer, bytes.byteOffset, kHeaderBytes);
+  const length = view.getUint32(0, true), type = view.getUint16(4, true);
+  if (type < 1 || type > kMessageTypes) throw new ProtocolError(`unknown message type ${type}`);
+  if (length > kMaxPayload) throw new ProtocolError(`frame of ${length} bytes exceeds the limit of ${kMaxPayload}`);
+  return { length, type };
+}
+
+// One payload of `type`; throws ProtocolError on any malformed, out-of-range or trailing byte.
+export function decode(type, payload) {
+  if (type < 1 || type > kMessageTypes) throw new ProtocolError(`unknown message type ${type}`);
+  if (payload.length > kMaxPayload) throw new ProtocolError('payload exceeds the frame limit');
+  const s = new ReadStream(payload);
+  const m = { type: nameOf(type) };
+  serialisers[type - 1](s, m);
+  s.finish();
+  return m;
+}
+
+// A whole frame (as one WebSocket message carries it): exactly one message, nothing after it.
+export function decodeFrame(frame) {
+  if (frame.length < kHeaderBytes) throw new ProtocolError(`frame of ${frame.length} bytes is shorter than its header`);
+  const { length, type } = parseHeader(frame);
+  if (frame.length !== kHeaderBytes + length) throw new ProtocolError(`frame says ${length} bytes of payload, has ${frame.length - kHeaderBytes}`);
+  return decode(type, frame.subarray(kHeaderBytes));
+}

@@ -1,0 +1,122 @@
+// The web client's codec against the C++ one: it decodes the C++ golden frames
+// (tests/golden/protocol-frames.json, written by ProtocolTest) and writes the same bytes back;
+// it refuses every truncation, lengths over their limits, unknown types and random bytes with
+// a ProtocolError, never anything else. Run: node --test client/web/test/
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { test } from 'node:test';
+
+import { decodeTweenCell, encodeTweenCell, TweenError } from '../common/tween_data.js';
+import { decode, decodeFrame, encode, kHeaderBytes, kMaxPayload, kMessageTypes, kVersion, MessageType, parseHeader } from '../protocol/messages.js';
+import { ProtocolError } from '../protocol/streams.js';
+
+const golden = JSON.parse(readFileSync(new URL('../../../tests/golden/protocol-frames.json', import.meta.url)));
+const fromHex = (hex) => Uint8Array.from(hex.match(/../g).map((b) => parseInt(b, 16)));
+const toHex = (bytes) => Array.from(bytes, (b) => b.toString(16).padStart(2, '0')).join('');
+
+test('the golden frames are of this version and cover every message type', () => {
+  assert.equal(golden.version, kVersion);
+  assert.deepEqual(golden.frames.map((f) => MessageType[f.type]), Array.from({ length: kMessageTypes }, (_, i) => i + 1));
+});
+
+test('every C++ frame decodes and encodes back to the same bytes', () => {
+  for (const { type, hex } of golden.frames) {
+    const message = decodeFrame(fromHex(hex));
+    assert.equal(message.type, type);
+    assert.equal(toHex(encode(message)), hex, type);
+  }
+});
+
+test('decoded fields are the C++ ones', () => {
+  const byType = Object.fromEntries(golden.frames.map((f) => [f.type, decodeFrame(fromHex(f.hex))]));
+  assert.equal(byType.hello.client_name, 'viewer-1');
+  assert.equal(byType.ping.nonce, 0x0123456789abcdefn);
+  const s = byType.snapshot;
+  assert.equal(s.session, 'demo');
+  assert.equal(s.kind, 2);
+  assert.equal(s.revision, 17);
+  assert.equal(s.assets.length, 2);
+  assert.equal(s.assets[0].name, 'cow.off');
+  assert.equal(s.assets[0].size, 123456);
+  assert.deepEqual(s.style.settings, ['boil_fps=6', 'paper=canvas']);
+  assert.equal(s.product.width, 512);
+  assert.equal(s.product.height, 384);
+  assert.equal(s.product.cells, 4);
+  assert.equal(s.product.directions.length, 4);
+  assert.deepEqual(s.product.directions[1], [1, 0, 0]);
+  assert.deepEqual(byType['expression-code'].params, [-127, 0, 5, 127]);
+  assert.equal(byType['tween-data'].data.length, 800);
+});
+
+test('every truncation of every frame is refused with a ProtocolError', () => {
+  for (const { type, hex } of golden.frames) {
+    const frame = fromHex(hex);
+    for (let cut = 0; cut < frame.length; ++cut) assert.throws(() => decodeFrame(frame.subarray(0, cut)), ProtocolError, `${type} cut at ${cut}`);
+    // And a payload cut short under a header that says so.
+    const payload = frame.subarray(kHeaderBytes);
+    for (let cut = 0; cut < payload.length; ++cut) assert.throws(() => decode(MessageType[type], payload.subarray(0, cut)), ProtocolError);
+  }
+});
+
+test('trailing bytes, lengths over the limit and unknown types are refused', () => {
+  const ping = fromHex(golden.frames.find((f) => f.type === 'ping').hex);
+  const longer = new Uint8Array(ping.length + 1);
+  longer.set(ping);
+  assert.throws(() => decodeFrame(longer), ProtocolError);
+  const header = new Uint8Array(kHeaderBytes);
+  new DataView(header.buffer).setUint32(0, kMaxPayload + 1, true);
+  new DataView(header.buffer).setUint16(4, 4, true);
+  assert.throws(() => parseHeader(header), /exceeds the limit/);
+  new DataView(header.buffer).setUint32(0, 8, true);
+  for (const type of [0, 17, 65535]) {
+    new DataView(header.buffer).setUint16(4, type, true);
+    assert.throws(() => parseHeader(header), /unknown message type/);
+  }
+  assert.throws(() => encode({ type: 'join', session: 'x'.repeat(65), token: '' }), ProtocolError);
+  assert.throws(() => encode({ type: 'tween-data', pair: 0, data: new Uint8Array(16 * 1024 + 1) }), ProtocolError);
+});
+
+test('values out of range are refused as the C++ reader refuses them', () => {
+  const refuse = (message) => {
+    const frame = encode(message);
+    assert.throws(() => decodeFrame(frame), ProtocolError, JSON.stringify(message, (_, v) => (typeof v === 'bigint' ? String(v) : v)));
+  };
+  refuse({ type: 'camera-pose', position: [0, 0, 0], target: [0, 0, 0] });
+  refuse({ type: 'camera-pose', fov_y_degrees: 0 });
+  refuse({ type: 'object-pose', rotation: [2, 0, 0, 0] });
+  refuse({ type: 'style-change', renderer: '../../etc', settings: [] });
+  refuse({ type: 'style-change', renderer: 'comic', settings: ['no-equals-sign'] });
+  refuse({ type: 'join', session: 'a b', token: '' });
+  refuse({ type: 'asset-announce', size: 1, kind: 1, name: '../passwd' });
+  refuse({ type: 'asset-request', length: 0 });
+  refuse({ type: 'snapshot', session: 's', kind: 2, product: { width: 64, height: 64, directions: [[0, 0, 1]], cells: 0 } });
+  refuse({ type: 'snapshot', session: 's', kind: 2, product: { width: 64, height: 64, directions: [[0, 0, 1], [0, 0, 0.5]], cells: 1 } });
+});
+
+test('random bytes end in messages or a ProtocolError, never anything else', () => {
+  let seed = 12345;  // printed on failure so it can be replayed
+  const next = () => ((seed = (seed * 1103515245 + 12345) >>> 0) >>> 16) & 0xff;
+  for (let i = 0; i < 20000; ++i) {
+    const type = 1 + (i % kMessageTypes), length = next() % 96;
+    const payload = Uint8Array.from({ length }, next);
+    try {
+      decode(type, payload);
+    } catch (e) {
+      assert.ok(e instanceof ProtocolError, `seed ${seed}: ${e}`);
+    }
+  }
+});
+
+test('the C++ tween cell decodes to the same points and encodes back to the same bytes', () => {
+  const { width, height, samples, hex, points } = golden.cell;
+  const cell = decodeTweenCell(fromHex(hex), width, height, samples);
+  assert.deepEqual(cell.samples, [3, 4]);
+  assert.deepEqual(cell.points, points);
+  assert.equal(toHex(encodeTweenCell(cell, width, height, samples)), hex);
+  // Against a product it does not belong to, cut short, or longer: refused with a reason.
+  assert.throws(() => decodeTweenCell(fromHex(hex), width, height, 4), /out of range/);
+  assert.throws(() => decodeTweenCell(fromHex(hex), 64, 64, samples), /outside the image/);
+  const bytes = fromHex(hex);
+  for (let cut = 0; cut < bytes.length; ++cut) assert.throws(() => decodeTweenCell(bytes.subarray(0, cut), width, height, samples), TweenError);
+  assert.throws(() => decodeTweenCell(Uint8Array.from([...bytes, 0]), width, height, samples), /after the cell/);
+});
