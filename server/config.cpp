@@ -61,6 +61,18 @@ void parse_listen(const std::string& text, ServerConfig& config) {
   config.port = uint16_t(port);
 }
 
+void parse_http(const std::string& text, ServerConfig& config) {
+  ServerConfig parsed;
+  try {
+    parse_listen(text, parsed);
+  } catch (const Error&) {
+    throw Error("http address '" + text + "' is not HOST:PORT");
+  }
+  config.http = true;
+  config.http_host = parsed.host;
+  config.http_port = parsed.port;
+}
+
 ServerConfig ServerConfig::embedded_default() {
   ServerConfig c;
   // Debian-packaged models: libcgal-demo's meshes (extracted at build time) and assimp-testmodels.
@@ -94,6 +106,9 @@ ServerConfig ServerConfig::load(const fs::path& file) {
     if (j.contains("data")) c.data_dir = j.at("data").get<std::string>();
     if (j.contains("name")) c.name = j.at("name").get<std::string>();
     if (j.contains("queue_bytes")) c.queue_bytes = j.at("queue_bytes").get<size_t>();
+    if (j.contains("http")) parse_http(j.at("http").get<std::string>(), c);
+    if (j.contains("allowed_origins")) c.allowed_origins = j.at("allowed_origins").get<std::vector<std::string>>();
+    if (j.contains("http_head_timeout_seconds")) c.http_head_timeout_seconds = j.at("http_head_timeout_seconds").get<double>();
     if (j.contains("sessions")) {
       c.sessions.clear();
       for (const auto& s : j.at("sessions")) {
@@ -113,6 +128,7 @@ ServerConfig ServerConfig::load(const fs::path& file) {
   } catch (const nlohmann::json::exception& e) {
     throw Error("config '" + file.string() + "': " + e.what());
   }
+  if (!(c.http_head_timeout_seconds > 0.05 && c.http_head_timeout_seconds <= 300)) throw Error("config: http_head_timeout_seconds must be 0.05..300");
   if (c.queue_bytes < 2 * protocol::kMaxPayload) throw Error("config: queue_bytes must be at least two frames (262144)");
   return c;
 }

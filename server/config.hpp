@@ -48,6 +48,12 @@ struct ServerConfig {
   double hello_timeout_seconds = 5;  // for a new connection to say hello
   double persist_seconds = 1;        // how often changed session state is written to the catalogue
   std::vector<SessionConfig> sessions;
+  // The HTTP listener (WebSocket at /ws, /healthz, /metrics, /): off unless given.
+  bool http = false;
+  std::string http_host = "127.0.0.1";
+  uint16_t http_port = 8080;
+  std::vector<std::string> allowed_origins;  // page origins that may open a WebSocket; empty: the server's own
+  double http_head_timeout_seconds = 5;      // for a request head to arrive whole
 
   // The embedded default's demo sessions; models that are not installed are left out.
   static ServerConfig embedded_default();
@@ -55,7 +61,8 @@ struct ServerConfig {
   static ServerConfig load(const std::filesystem::path& file);
 };
 
-// Parses "HOST:PORT"; throws inkwire::Error.
+// Parses "HOST:PORT" into the TCP listener or the HTTP one; throws inkwire::Error.
 void parse_listen(const std::string& text, ServerConfig& config);
+void parse_http(const std::string& text, ServerConfig& config);
 
 }  // namespace inkwire::server

@@ -17,23 +17,19 @@ constexpr auto no_throw = asio::experimental::as_tuple(asio::use_awaitable);
 
 }  // namespace
 
-Connection::Connection(asio::ip::tcp::socket socket, Server& server, uint64_t id)
-    : socket_(std::move(socket)),
-      wake_(socket_.get_executor(), asio::steady_timer::time_point::max()),
+Connection::Connection(std::unique_ptr<Transport> transport, Server& server, uint64_t id)
+    : transport_(std::move(transport)),
+      wake_(transport_->executor(), asio::steady_timer::time_point::max()),
       server_(server),
       id_(id),
-      queue_(server.config().queue_bytes) {
-  std::error_code ec;
-  const auto endpoint = socket_.remote_endpoint(ec);
-  peer_ = ec ? "unknown" : endpoint.address().to_string() + ":" + std::to_string(endpoint.port());
-  socket_.set_option(asio::ip::tcp::no_delay(true), ec);  // control messages are tiny: no Nagle delay
-}
+      peer_(transport_->peer()),
+      queue_(server.config().queue_bytes) {}
 
 void Connection::start() {
   auto self = shared_from_this();
-  asio::co_spawn(socket_.get_executor(), [self] { return self->read_loop(); }, asio::detached);
-  asio::co_spawn(socket_.get_executor(), [self] { return self->write_loop(); }, asio::detached);
-  asio::co_spawn(socket_.get_executor(), [self] { return self->hello_watchdog(); }, asio::detached);
+  asio::co_spawn(transport_->executor(), [self] { return self->read_loop(); }, asio::detached);
+  asio::co_spawn(transport_->executor(), [self] { return self->write_loop(); }, asio::detached);
+  asio::co_spawn(transport_->executor(), [self] { return self->hello_watchdog(); }, asio::detached);
 }
 
 void Connection::send(const Message& message) {
@@ -59,7 +55,7 @@ void Connection::close_with(ErrorCode code, const std::string& reason) {
   wake_.cancel();
   // A peer that does not read would keep the error unsent forever: cut it off after a second.
   auto self = shared_from_this();
-  auto timer = std::make_shared<asio::steady_timer>(socket_.get_executor(), std::chrono::seconds(1));
+  auto timer = std::make_shared<asio::steady_timer>(transport_->executor(), std::chrono::seconds(1));
   timer->async_wait([self, timer](std::error_code) { self->shut(); });
 }
 
@@ -68,15 +64,13 @@ void Connection::shut() {
   shut_ = true;
   closing_ = true;
   leave_session();
-  std::error_code ec;
-  socket_.shutdown(asio::ip::tcp::socket::shutdown_both, ec);
-  socket_.close(ec);
+  transport_->close();
   wake_.cancel();
   server_.forget(this);
 }
 
 asio::awaitable<void> Connection::hello_watchdog() {
-  asio::steady_timer timer(socket_.get_executor(),
+  asio::steady_timer timer(transport_->executor(),
                            std::chrono::milliseconds(int64_t(server_.config().hello_timeout_seconds * 1000)));
   co_await timer.async_wait(no_throw);
   if (!greeted_ && !shut_) close_with(ErrorCode::Malformed, "no hello within " + std::to_string(int(server_.config().hello_timeout_seconds)) + " seconds");
@@ -84,21 +78,15 @@ asio::awaitable<void> Connection::hello_watchdog() {
 
 asio::awaitable<void> Connection::read_loop() {
   auto self = shared_from_this();  // keeps the connection alive while reading
-  std::array<uint8_t, kHeaderBytes> header{};
-  Bytes payload;
+  Bytes frame;
   while (!closing_) {
-    auto [ec, n] = co_await asio::async_read(socket_, asio::buffer(header), no_throw);
-    if (ec) break;
     try {
-      // The length is checked here, before the payload buffer is sized.
-      const FrameHeader h = parse_header(header.data());
-      payload.resize(h.length);
-      auto [ec2, n2] = co_await asio::async_read(socket_, asio::buffer(payload), no_throw);
-      if (ec2) break;
-      Message message = decode(h.type, payload.data(), payload.size());
+      if (const std::error_code ec = co_await transport_->read_frame(frame)) break;
+      const FrameHeader h = parse_header(frame.data());
+      Message message = decode(h.type, frame.data() + kHeaderBytes, frame.size() - kHeaderBytes);
       handle(message);
     } catch (const ProtocolError& e) {
-      log_warn("malformed", {{"client", id_}, {"peer", peer_}, {"reason", e.what()}});
+      log_warn("malformed", {{"client", id_}, {"peer", peer_}, {"transport", transport_->name()}, {"reason", e.what()}});
       close_with(ErrorCode::Malformed, e.what());
     } catch (const std::exception& e) {
       log(LogLevel::Error, "internal", {{"client", id_}, {"reason", e.what()}});
@@ -113,7 +101,6 @@ asio::awaitable<void> Connection::read_loop() {
 
 asio::awaitable<void> Connection::write_loop() {
   auto self = shared_from_this();
-  std::vector<asio::const_buffer> buffers;
   while (!shut_) {
     if (queue_.empty()) {
       if (closing_) break;
@@ -122,11 +109,8 @@ asio::awaitable<void> Connection::write_loop() {
       continue;
     }
     // Everything queued goes out in one gathered write.
-    std::deque<Outgoing> batch = queue_.take_all();
-    buffers.clear();
-    for (const Outgoing& o : batch) buffers.push_back(asio::buffer(*o.frame));
-    auto [ec, n] = co_await asio::async_write(socket_, buffers, no_throw);
-    if (ec) break;
+    const std::deque<Outgoing> batch = queue_.take_all();
+    if (co_await transport_->write_frames(batch)) break;
   }
   shut();
 }
@@ -198,7 +182,7 @@ void Connection::join(const Join& join) {
   cells_pending_ = !session_->tween_frames().empty();
   if (cells_pending_) {
     // A member that holds every photo already asks for none: its cells go after half a second.
-    cells_timer_ = std::make_shared<asio::steady_timer>(socket_.get_executor(), std::chrono::milliseconds(500));
+    cells_timer_ = std::make_shared<asio::steady_timer>(transport_->executor(), std::chrono::milliseconds(500));
     std::weak_ptr<Connection> weak = shared_from_this();
     cells_timer_->async_wait([weak](std::error_code ec) {
       if (const auto self = weak.lock(); self && !ec) self->send_tween_cells();

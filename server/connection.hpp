@@ -1,7 +1,8 @@
 #pragma once
 // One client connection (STYLE 4): a reader coroutine that decodes and handles messages, a writer
 // coroutine that drains the bounded send queue, and a watchdog that closes connections that
-// never say hello. Any error ends only this connection, after telling the peer why.
+// never say hello. Any error ends only this connection, after telling the peer why. Frames come
+// and go through a Transport (TCP or WebSocket); nothing here depends on which.
 #include <memory>
 #include <string>
 
@@ -9,6 +10,7 @@
 
 #include "protocol/messages.hpp"
 #include "server/send_queue.hpp"
+#include "server/transport.hpp"
 
 namespace inkwire::server {
 
@@ -17,7 +19,7 @@ class Session;
 
 class Connection : public std::enable_shared_from_this<Connection> {
  public:
-  Connection(asio::ip::tcp::socket socket, Server& server, uint64_t id);
+  Connection(std::unique_ptr<Transport> transport, Server& server, uint64_t id);
 
   void start();
   // Queues a message or a frame encoded once for many. A full queue closes the connection with
@@ -27,6 +29,7 @@ class Connection : public std::enable_shared_from_this<Connection> {
   // Sends an error, then closes once it is written (or after a second if the peer is not reading).
   void close_with(protocol::ErrorCode code, const std::string& reason);
   uint64_t id() const { return id_; }
+  const Transport& transport() const { return *transport_; }
 
  private:
   asio::awaitable<void> read_loop();
@@ -39,7 +42,7 @@ class Connection : public std::enable_shared_from_this<Connection> {
   void send_tween_cells();
   void shut();
 
-  asio::ip::tcp::socket socket_;
+  std::unique_ptr<Transport> transport_;
   asio::steady_timer wake_;  // the writer sleeps on it; send() cancels it
   Server& server_;
   uint64_t id_;

@@ -9,6 +9,8 @@
 #include "server/connection.hpp"
 #include "server/face/face_feed.hpp"
 #include "server/products/product_store.hpp"
+#include "server/transport.hpp"
+#include "server/web/http_server.hpp"
 
 namespace inkwire::server {
 namespace fs = std::filesystem;
@@ -35,7 +37,10 @@ Server::Server(asio::io_context& io, ServerConfig config)
   if (!ec) acceptor_.bind(endpoint, ec);
   if (!ec) acceptor_.listen(asio::socket_base::max_listen_connections, ec);
   if (ec) throw Error("cannot listen on " + config_.host + ":" + std::to_string(config_.port) + ": " + ec.message());
+  if (config_.http) http_ = std::make_unique<HttpServer>(io, *this);
 }
+
+uint16_t Server::http_port() const { return http_ ? http_->port() : 0; }
 
 Server::~Server() = default;
 
@@ -118,6 +123,7 @@ void Server::start() {
   log_info("listening", {{"host", config_.host}, {"port", port()}, {"data", config_.data_dir.string()}, {"sessions", sessions_.size()}});
   asio::co_spawn(io_, accept_loop(), asio::detached);
   asio::co_spawn(io_, persist_loop(), asio::detached);
+  if (http_) http_->start();
 }
 
 asio::awaitable<void> Server::accept_loop() {
@@ -131,9 +137,7 @@ asio::awaitable<void> Server::accept_loop() {
       co_await pause.async_wait(no_throw);
       continue;
     }
-    auto connection = std::make_shared<Connection>(std::move(socket), *this, next_id_++);
-    connections_[connection.get()] = connection;
-    connection->start();
+    adopt(std::make_unique<TcpTransport>(std::move(socket)));
   }
 }
 
@@ -162,12 +166,23 @@ std::shared_ptr<Session> Server::find_session(const std::string& name) const {
 
 void Server::forget(const Connection* connection) { connections_.erase(connection); }
 
+void Server::adopt(std::unique_ptr<Transport> transport) {
+  if (stopping_) {
+    transport->close();
+    return;
+  }
+  auto connection = std::make_shared<Connection>(std::move(transport), *this, next_id_++);
+  connections_[connection.get()] = connection;
+  connection->start();
+}
+
 void Server::stop() {
   if (stopping_) return;
   stopping_ = true;
   log_info("stopping", {{"clients", connections_.size()}});
   std::error_code ec;
   acceptor_.close(ec);
+  if (http_) http_->stop();
   persist_timer_.cancel();
   face_feeds_.clear();  // joins their threads; codes they posted are applied or dropped with the context
   for (auto& [name, session] : sessions_) persist(*session);

@@ -16,6 +16,8 @@ namespace inkwire::server {
 
 class Connection;
 class FaceFeed;
+class HttpServer;
+class Transport;
 
 class Server {
  public:
@@ -25,6 +27,7 @@ class Server {
   ~Server();
 
   uint16_t port() const { return acceptor_.local_endpoint().port(); }
+  uint16_t http_port() const;  // 0 without an HTTP listener
   void start();
   // Graceful shutdown: stop accepting, tell every client, persist every session, let the
   // I/O context run dry.
@@ -35,6 +38,10 @@ class Server {
   AssetStore& store() { return store_; }
   const ServerConfig& config() const { return config_; }
   void forget(const Connection* connection);
+  // A client arrived over another transport (a WebSocket upgraded on the HTTP listener).
+  void adopt(std::unique_ptr<Transport> transport);
+  size_t connection_count() const { return connections_.size(); }
+  const std::map<std::string, std::shared_ptr<Session>>& sessions() const { return sessions_; }
   void persist(Session& session);
   bool stopping() const { return stopping_; }
 
@@ -52,6 +59,7 @@ class Server {
   std::map<std::string, std::shared_ptr<Session>> sessions_;
   std::map<const Connection*, std::shared_ptr<Connection>> connections_;
   std::vector<std::unique_ptr<FaceFeed>> face_feeds_;
+  std::unique_ptr<HttpServer> http_;
   uint64_t next_id_ = 1;
   bool stopping_ = false;
 };

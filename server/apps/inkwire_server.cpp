@@ -52,10 +52,11 @@ int add_product(const std::string& name, const server::ProductSource& source, co
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string listen, data, config_file;
+  std::string listen, http, data, config_file;
   bool quiet = false;
   CLI::App app{"inkwire-server: serves Inkwire sessions (shared scenes, turntables, conferences) to thin clients"};
   app.add_option("--listen", listen, "HOST:PORT to listen on (default 127.0.0.1:7878; port 0 picks a free one)");
+  app.add_option("--http", http, "HOST:PORT for HTTP: WebSocket clients at /ws, /healthz, /metrics, the session index at /");
   app.add_option("--data", data, "data folder: asset files and the SQLite catalogue (default ./inkwire-data)");
   app.add_option("--config", config_file, "JSON config: listen, data, name, queue_bytes, sessions (see README)");
   app.add_flag("--quiet", quiet, "log warnings and errors only");
@@ -97,6 +98,7 @@ int main(int argc, char** argv) {
     if (quiet) set_log_level(LogLevel::Warn);
     server::ServerConfig config = config_file.empty() ? server::ServerConfig::embedded_default() : server::ServerConfig::load(config_file);
     if (!listen.empty()) server::parse_listen(listen, config);
+    if (!http.empty()) server::parse_http(http, config);
     if (!data.empty()) config.data_dir = data;
     // A client vanishing mid-write must not kill the server.
     std::signal(SIGPIPE, SIG_IGN);

@@ -1,0 +1,51 @@
+#pragma once
+// How a connection's protocol frames travel (ARCHITECTURE "Transports"): as they are over TCP,
+// or one frame per binary WebSocket message (server/web/). The connection's logic, its
+// sessions and its send queue never know which.
+#include <deque>
+#include <string>
+#include <system_error>
+
+#include <asio.hpp>
+
+#include "protocol/messages.hpp"
+#include "server/send_queue.hpp"
+
+namespace inkwire::server {
+
+class Transport {
+ public:
+  virtual ~Transport() = default;
+  // The next whole frame (header and payload), its length checked against the protocol's limit
+  // before anything is allocated. Throws protocol::ProtocolError when what arrives is malformed
+  // for this transport; returns an error code when the peer has gone.
+  virtual asio::awaitable<std::error_code> read_frame(protocol::Bytes& frame) = 0;
+  // Writes the frames in order, gathered where the transport can.
+  virtual asio::awaitable<std::error_code> write_frames(const std::deque<Outgoing>& frames) = 0;
+  virtual void close() = 0;
+  virtual std::string peer() const = 0;
+  virtual std::string name() const = 0;  // "tcp", "websocket": for logs and metrics
+  virtual asio::any_io_executor executor() = 0;
+};
+
+// Frames as they are, over a TCP socket (protocol/SPEC.md "Framing").
+class TcpTransport final : public Transport {
+ public:
+  explicit TcpTransport(asio::ip::tcp::socket socket);
+  asio::awaitable<std::error_code> read_frame(protocol::Bytes& frame) override;
+  asio::awaitable<std::error_code> write_frames(const std::deque<Outgoing>& frames) override;
+  void close() override;
+  std::string peer() const override { return peer_; }
+  std::string name() const override { return "tcp"; }
+  asio::any_io_executor executor() override { return socket_.get_executor(); }
+
+ private:
+  asio::ip::tcp::socket socket_;
+  std::string peer_;
+  std::vector<asio::const_buffer> buffers_;
+};
+
+// "address:port" of a socket's peer, or "unknown".
+std::string peer_of(const asio::ip::tcp::socket& socket);
+
+}  // namespace inkwire::server

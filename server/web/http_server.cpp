@@ -1,0 +1,209 @@
+#include "server/web/http_server.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <map>
+#include <sstream>
+
+#include <asio/experimental/as_tuple.hpp>
+
+#include "common/error.hpp"
+#include "common/log.hpp"
+#include "server/server.hpp"
+#include "server/web/websocket.hpp"
+
+namespace inkwire::server {
+namespace {
+
+constexpr auto no_throw = asio::experimental::as_tuple(asio::use_awaitable);
+constexpr size_t kMaxHead = 8192;
+
+struct Request {
+  std::string method, path;
+  std::map<std::string, std::string> headers;  // names in lower case
+  std::string header(const std::string& name) const {
+    const auto it = headers.find(name);
+    return it == headers.end() ? "" : it->second;
+  }
+};
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return s;
+}
+
+std::string trim(const std::string& s) {
+  const size_t a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
+  return a == std::string::npos ? "" : s.substr(a, b - a + 1);
+}
+
+// Throws inkwire::Error for a head that is not HTTP/1.x.
+Request parse_head(const std::string& head) {
+  std::istringstream lines(head);
+  std::string line;
+  std::getline(lines, line);
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  Request r;
+  std::istringstream first(line);
+  std::string version;
+  if (!(first >> r.method >> r.path >> version) || version.rfind("HTTP/1.", 0) != 0) throw Error("not an HTTP/1 request");
+  while (std::getline(lines, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) break;
+    const size_t colon = line.find(':');
+    if (colon == std::string::npos || colon == 0) throw Error("malformed header line");
+    r.headers[lower(line.substr(0, colon))] = trim(line.substr(colon + 1));
+  }
+  return r;
+}
+
+std::string response(int status, const char* reason, const std::string& type, const std::string& body) {
+  return "HTTP/1.1 " + std::to_string(status) + " " + reason + "\r\nContent-Type: " + type + "\r\nContent-Length: " +
+         std::to_string(body.size()) + "\r\nCache-Control: no-store\r\nConnection: close\r\n\r\n" + body;
+}
+
+std::string html_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) out += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : c == '"' ? "&quot;" : std::string(1, c);
+  return out;
+}
+
+}  // namespace
+
+bool origin_allowed(const std::string& origin, const std::string& host, const std::vector<std::string>& allowed) {
+  if (origin.empty()) return true;
+  if (allowed.empty()) return lower(origin) == "http://" + lower(host) || lower(origin) == "https://" + lower(host);
+  return std::find(allowed.begin(), allowed.end(), origin) != allowed.end();
+}
+
+HttpServer::HttpServer(asio::io_context& io, Server& server) : io_(io), server_(server), acceptor_(io) {
+  const ServerConfig& c = server.config();
+  std::error_code ec;
+  const auto address = asio::ip::make_address(c.http_host == "localhost" ? "127.0.0.1" : c.http_host, ec);
+  if (ec) throw Error("http host '" + c.http_host + "' is not an IP address");
+  const asio::ip::tcp::endpoint endpoint(address, c.http_port);
+  acceptor_.open(endpoint.protocol(), ec);
+  if (!ec) acceptor_.set_option(asio::ip::tcp::acceptor::reuse_address(true), ec);
+  if (!ec) acceptor_.bind(endpoint, ec);
+  if (!ec) acceptor_.listen(asio::socket_base::max_listen_connections, ec);
+  if (ec) throw Error("cannot listen for HTTP on " + c.http_host + ":" + std::to_string(c.http_port) + ": " + ec.message());
+}
+
+void HttpServer::start() {
+  log_info("http-listening", {{"host", server_.config().http_host}, {"port", port()}});
+  asio::co_spawn(io_, accept_loop(), asio::detached);
+}
+
+void HttpServer::stop() {
+  stopping_ = true;
+  std::error_code ec;
+  acceptor_.close(ec);
+}
+
+asio::awaitable<void> HttpServer::accept_loop() {
+  while (!stopping_) {
+    auto [ec, socket] = co_await acceptor_.async_accept(no_throw);
+    if (ec) {
+      if (stopping_) break;
+      log_warn("http-accept-failed", {{"reason", ec.message()}});
+      asio::steady_timer pause(io_, std::chrono::milliseconds(100));
+      co_await pause.async_wait(no_throw);
+      continue;
+    }
+    asio::co_spawn(io_, serve(std::move(socket)), asio::detached);
+  }
+}
+
+asio::awaitable<void> HttpServer::serve(asio::ip::tcp::socket accepted) {
+  const std::string peer = peer_of(accepted);
+  // The whole head within the timeout, or the connection is cut: a slow-loris client holds
+  // one socket for a few seconds at most. Shared with the watchdog, which may run after this
+  // coroutine has ended.
+  auto socket_ptr = std::make_shared<asio::ip::tcp::socket>(std::move(accepted));
+  auto head_done = std::make_shared<bool>(false);
+  auto& socket = *socket_ptr;
+  auto watchdog = std::make_shared<asio::steady_timer>(io_, std::chrono::milliseconds(int64_t(server_.config().http_head_timeout_seconds * 1000)));
+  watchdog->async_wait([socket_ptr, head_done, peer](std::error_code ec) {
+    if (ec || *head_done) return;
+    log_warn("http-too-slow", {{"peer", peer}});
+    std::error_code ignored;
+    socket_ptr->close(ignored);
+  });
+  std::string buffer;
+  auto [ec, n] = co_await asio::async_read_until(socket, asio::dynamic_buffer(buffer, kMaxHead), "\r\n\r\n", no_throw);
+  *head_done = true;
+  watchdog->cancel();
+  auto reply = [&](const std::string& text) -> asio::awaitable<void> {
+    co_await asio::async_write(socket, asio::buffer(text), no_throw);
+    std::error_code ignored;
+    socket.shutdown(asio::ip::tcp::socket::shutdown_both, ignored);
+    socket.close(ignored);
+  };
+  if (ec) {
+    if (ec == asio::error::not_found) co_await reply(response(431, "Request Header Fields Too Large", "text/plain", "request head over 8 KiB\n"));
+    co_return;
+  }
+  Request request;
+  std::string malformed;
+  try {
+    request = parse_head(buffer.substr(0, n));
+  } catch (const Error& e) {
+    malformed = e.what();
+  }
+  if (!malformed.empty()) {
+    log_warn("http-malformed", {{"peer", peer}, {"reason", malformed}});
+    co_await reply(response(400, "Bad Request", "text/plain", malformed + "\n"));
+    co_return;
+  }
+  if (request.method != "GET") {
+    co_await reply(response(405, "Method Not Allowed", "text/plain", "only GET\n"));
+    co_return;
+  }
+  const std::string path = request.path.substr(0, request.path.find('?'));
+  if (path == "/ws") {
+    const std::string key = request.header("sec-websocket-key");
+    if (lower(request.header("upgrade")) != "websocket" || lower(request.header("connection")).find("upgrade") == std::string::npos ||
+        request.header("sec-websocket-version") != "13" || key.empty()) {
+      co_await reply(response(400, "Bad Request", "text/plain", "a WebSocket (version 13) upgrade is expected here\n"));
+      co_return;
+    }
+    const std::string origin = request.header("origin");
+    if (!origin_allowed(origin, request.header("host"), server_.config().allowed_origins)) {
+      log_warn("websocket-origin-refused", {{"peer", peer}, {"origin", origin}});
+      co_await reply(response(403, "Forbidden", "text/plain", "pages of " + origin + " may not connect\n"));
+      co_return;
+    }
+    const std::string upgrade = "HTTP/1.1 101 Switching Protocols\r\nUpgrade: websocket\r\nConnection: Upgrade\r\nSec-WebSocket-Accept: " +
+                                websocket_accept(key) + "\r\n\r\n";
+    auto [wec, wn] = co_await asio::async_write(socket, asio::buffer(upgrade), no_throw);
+    if (wec) co_return;
+    server_.adopt(std::make_unique<WebSocketTransport>(std::move(socket), buffer.substr(n)));
+    co_return;
+  }
+  if (path == "/healthz") {
+    co_await reply(response(server_.stopping() ? 503 : 200, server_.stopping() ? "Service Unavailable" : "OK", "text/plain",
+                            server_.stopping() ? "stopping\n" : "ok\n"));
+    co_return;
+  }
+  if (path == "/metrics") {
+    std::string body = "# HELP inkwire_connections Open client connections (TCP and WebSocket).\n# TYPE inkwire_connections gauge\n";
+    body += "inkwire_connections " + std::to_string(server_.connection_count()) + "\n";
+    body += "# HELP inkwire_session_members Members of each session.\n# TYPE inkwire_session_members gauge\n";
+    for (const auto& [name, session] : server_.sessions())
+      body += "inkwire_session_members{session=\"" + name + "\"} " + std::to_string(session->members()) + "\n";
+    co_await reply(response(200, "OK", "text/plain; version=0.0.4", body));
+    co_return;
+  }
+  if (path == "/") {
+    std::string body = "<!doctype html><meta charset=utf-8><title>" + html_escape(server_.config().name) + "</title><h1>" +
+                       html_escape(server_.config().name) + "</h1><ul>";
+    for (const auto& [name, session] : server_.sessions())
+      body += "<li>" + html_escape(name) + " (" + protocol::to_string(session->state().kind) + ", " +
+              std::to_string(session->members()) + " members)</li>";
+    co_await reply(response(200, "OK", "text/html; charset=utf-8", body + "</ul>\n"));
+    co_return;
+  }
+  co_await reply(response(404, "Not Found", "text/plain", "no page " + path + "\n"));
+}
+
+}  // namespace inkwire::server

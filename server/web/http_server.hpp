@@ -1,0 +1,40 @@
+#pragma once
+// The server's HTTP listener (`--http HOST:PORT`, SPEC W1): the WebSocket upgrade at /ws that
+// carries protocol frames into the same connections as TCP, /healthz, Prometheus text at
+// /metrics, and an index of the sessions at /. One request per connection; a request head must
+// arrive whole within the head timeout and 8 KiB, so a slow or endless client is cut off while
+// everyone else is served. WebSockets are refused (403) to pages of origins not allowed: by
+// default the server's own pages only.
+#include <memory>
+#include <string>
+
+#include <asio.hpp>
+
+namespace inkwire::server {
+
+class Server;
+
+class HttpServer {
+ public:
+  // Binds the listener; throws inkwire::Error if it cannot.
+  HttpServer(asio::io_context& io, Server& server);
+  uint16_t port() const { return acceptor_.local_endpoint().port(); }
+  void start();
+  void stop();
+
+ private:
+  asio::awaitable<void> accept_loop();
+  asio::awaitable<void> serve(asio::ip::tcp::socket socket);
+
+  asio::io_context& io_;
+  Server& server_;
+  asio::ip::tcp::acceptor acceptor_;
+  bool stopping_ = false;
+};
+
+// Whether a page of `origin` may open a WebSocket to a server reached as `host` (the Host
+// header): an allowed origin, or the server's own ("http://" + host) when none are configured.
+// A request without an Origin (not from a page) is allowed.
+bool origin_allowed(const std::string& origin, const std::string& host, const std::vector<std::string>& allowed);
+
+}  // namespace inkwire::server

@@ -1,0 +1,45 @@
+#pragma once
+// The WebSocket transport (RFC 6455, protocol/SPEC.md "Transport"): after the HTTP upgrade
+// (http_server.hpp), each protocol frame travels as one binary WebSocket message. Messages are
+// reassembled from fragments up to the protocol's frame limit, checked before anything is
+// read; a text message, an unmasked client frame, a message over the limit or one that is not
+// exactly one protocol frame is malformed. Pings are not answered (browsers send none); a close
+// frame ends the connection.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "server/transport.hpp"
+
+namespace inkwire::server {
+
+class WebSocketTransport final : public Transport {
+ public:
+  // `already_read`: bytes that came after the upgrade request, the start of the first frames.
+  WebSocketTransport(asio::ip::tcp::socket socket, std::string already_read);
+  asio::awaitable<std::error_code> read_frame(protocol::Bytes& frame) override;
+  asio::awaitable<std::error_code> write_frames(const std::deque<Outgoing>& frames) override;
+  void close() override;
+  std::string peer() const override { return peer_; }
+  std::string name() const override { return "websocket"; }
+  asio::any_io_executor executor() override { return socket_.get_executor(); }
+
+ private:
+  // Fills `out` with exactly out.size() bytes, the leftover of the upgrade first.
+  asio::awaitable<std::error_code> read_exactly(uint8_t* out, size_t size);
+
+  asio::ip::tcp::socket socket_;
+  std::string pending_;  // read with the upgrade request, not yet consumed
+  std::string peer_;
+  std::vector<std::array<uint8_t, 10>> headers_;
+  std::vector<asio::const_buffer> buffers_;
+};
+
+// The Sec-WebSocket-Accept value for a client's Sec-WebSocket-Key.
+std::string websocket_accept(const std::string& key);
+
+// The header of one unmasked (server-to-client) frame of `opcode` carrying `size` bytes: the
+// bytes to send before the payload, in `out`; returns how many.
+size_t websocket_frame_header(uint8_t opcode, uint64_t size, std::array<uint8_t, 10>& out);
+
+}  // namespace inkwire::server
