@@ -4,6 +4,7 @@
 #include <cctype>
 #include <map>
 #include <sstream>
+#include <string_view>
 
 #include <asio/experimental/as_tuple.hpp>
 
@@ -11,6 +12,10 @@
 #include "common/log.hpp"
 #include "server/server.hpp"
 #include "server/web/websocket.hpp"
+
+namespace inkwire {
+const std::map<std::string, std::string_view>& web_client_files();  // generated from client/web/
+}
 
 namespace inkwire::server {
 namespace {
@@ -66,6 +71,22 @@ std::string html_escape(const std::string& s) {
   std::string out;
   for (char c : s) out += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : c == '"' ? "&quot;" : std::string(1, c);
   return out;
+}
+
+std::string content_type(const std::string& path) {
+  if (path.ends_with(".js")) return "text/javascript; charset=utf-8";
+  return "text/plain; charset=utf-8";  // shaders
+}
+
+// A product's page: the element full-size, and the snippet a shop pastes into its own page.
+std::string turntable_page(const std::string& session, const std::string& host) {
+  const std::string snippet = "<script type=\"module\" src=\"http://" + host + "/inkwire.js\"></script>\n<inkwire-turntable server=\"ws://" +
+                              host + "/ws\" session=\"" + session + "\" style=\"width: 480px; height: 480px\"></inkwire-turntable>";
+  return "<!doctype html><html lang=en><meta charset=utf-8><meta name=viewport content=\"width=device-width, initial-scale=1\">"
+         "<title>" + html_escape(session) + "</title><style>html, body { margin: 0; height: 100%; font: 14px system-ui, sans-serif; }"
+         " inkwire-turntable { height: calc(100% - 9em); } details { padding: 0.5em 1em; } pre { white-space: pre-wrap; background: #f4f4f4; padding: 0.5em; }"
+         "</style><script type=module src=\"/inkwire.js\"></script><inkwire-turntable session=\"" + html_escape(session) +
+         "\"></inkwire-turntable><details><summary>Put this product on your page</summary><pre>" + html_escape(snippet) + "</pre></details>\n";
 }
 
 }  // namespace
@@ -194,12 +215,27 @@ asio::awaitable<void> HttpServer::serve(asio::ip::tcp::socket accepted) {
     co_await reply(response(200, "OK", "text/plain; version=0.0.4", body));
     co_return;
   }
+  if (const auto file = web_client_files().find(path.substr(1)); path.size() > 1 && file != web_client_files().end()) {
+    co_await reply(response(200, "OK", content_type(path), std::string(file->second)));
+    co_return;
+  }
+  if (path.rfind("/turntable/", 0) == 0) {
+    const auto session = server_.find_session(path.substr(11));
+    if (!session || session->state().product.directions.empty()) {
+      co_await reply(response(404, "Not Found", "text/plain", "no product " + path.substr(11) + "\n"));
+      co_return;
+    }
+    co_await reply(response(200, "OK", "text/html; charset=utf-8", turntable_page(session->name(), request.header("host"))));
+    co_return;
+  }
   if (path == "/") {
     std::string body = "<!doctype html><meta charset=utf-8><title>" + html_escape(server_.config().name) + "</title><h1>" +
                        html_escape(server_.config().name) + "</h1><ul>";
-    for (const auto& [name, session] : server_.sessions())
-      body += "<li>" + html_escape(name) + " (" + protocol::to_string(session->state().kind) + ", " +
-              std::to_string(session->members()) + " members)</li>";
+    for (const auto& [name, session] : server_.sessions()) {
+      const bool product = !session->state().product.directions.empty();
+      body += "<li>" + (product ? "<a href=\"/turntable/" + html_escape(name) + "\">" + html_escape(name) + "</a>" : html_escape(name)) +
+              " (" + protocol::to_string(session->state().kind) + ", " + std::to_string(session->members()) + " members)</li>";
+    }
     co_await reply(response(200, "OK", "text/html; charset=utf-8", body + "</ul>\n"));
     co_return;
   }

@@ -1,0 +1,274 @@
+// <inkwire-turntable server="ws://HOST:PORT/ws" session="NAME">: a product a shop embeds with
+// one script tag (SPEC W2, CONTRACTS.md). It downloads the product progressively (each photo's
+// matte and photo, nearest the view first; a first view after one photo; a progress bar), then
+// synthesises every view locally (render/tween/tween_view.js). Drag with mouse, touch or pen
+// (with inertia), wheel or pinch to zoom, arrow keys step one photo, auto-spin until the first
+// touch (not under prefers-reduced-motion), fullscreen, sized by its container at the device
+// pixel ratio. Turning it sends nothing. Attributes: server, session, token, azimuth,
+// auto-rotate ("off" to stop it); property azimuth (degrees); attribute `loaded` once every
+// photo and tween cell is there.
+import { decodeTweenCell } from '../common/tween_data.js';
+import { AssetKind, Session } from '../net/session.js';
+import { matteSample } from '../render/tween/matte_sample.js';
+import { loadTweenShaders, TweenView } from '../render/tween/tween_view.js';
+
+const template = `
+<style>
+  :host { display: block; position: relative; width: 100%; height: 100%; min-height: 120px; background: #fff; outline: none;
+          touch-action: none; user-select: none; }
+  canvas { width: 100%; height: 100%; display: block; cursor: grab; }
+  canvas.dragging { cursor: grabbing; }
+  .progress { position: absolute; left: 10%; right: 10%; bottom: 12px; height: 4px; background: #0001; border-radius: 2px; }
+  .bar { height: 100%; width: 0; background: #3a6ea5; border-radius: 2px; transition: width 0.2s; }
+  .message { position: absolute; inset: auto 8px 24px 8px; font: 13px system-ui, sans-serif; color: #a33; text-align: center; }
+  button { position: absolute; top: 8px; right: 8px; font: 16px system-ui; border: 0; background: #0000000d; border-radius: 4px;
+           width: 32px; height: 32px; cursor: pointer; }
+</style>
+<canvas part="canvas"></canvas>
+<div class="progress" part="progress" role="progressbar" aria-valuemin="0" aria-valuemax="100"><div class="bar"></div></div>
+<div class="message" role="status"></div>
+<button part="fullscreen" aria-label="Full screen" title="Full screen"><svg viewBox="0 0 16 16" width="16" height="16" aria-hidden="true"
+  fill="none" stroke="#333" stroke-width="1.6"><path d="M1 5V1h4M11 1h4v4M15 11v4h-4M5 15H1v-4"/></svg></button>`;
+
+const kDegreesPerPixel = 0.4;  // as the C++ window turns
+const kAutoSpin = 20;          // degrees per second until the first touch
+
+// Decoded RGBA bytes of an image file's bytes.
+async function pixels(bytes, width, height) {
+  const bitmap = await createImageBitmap(new Blob([bytes]), { premultiplyAlpha: 'none', colorSpaceConversion: 'none' });
+  if (bitmap.width !== width || bitmap.height !== height) throw new Error(`a photo is ${bitmap.width}x${bitmap.height}, not ${width}x${height}`);
+  const canvas = new OffscreenCanvas(width, height);
+  const context = canvas.getContext('2d', { willReadFrequently: true });
+  context.drawImage(bitmap, 0, 0);
+  return context.getImageData(0, 0, width, height).data;
+}
+
+export class InkwireTurntable extends HTMLElement {
+  static observedAttributes = ['server', 'session', 'token', 'azimuth'];
+
+  constructor() {
+    super();
+    this.attachShadow({ mode: 'open' }).innerHTML = template;
+    this.canvas = this.shadowRoot.querySelector('canvas');
+    this.bar = this.shadowRoot.querySelector('.bar');
+    this.message = this.shadowRoot.querySelector('.message');
+    this._azimuth = 0;
+    this.elevation = 0;
+    this.zoom = 1;
+    this.velocity = 0;
+    this.touched = false;
+    this.pointers = new Map();
+  }
+
+  get azimuth() { return this._azimuth; }
+  set azimuth(degrees) {
+    this._azimuth = Number(degrees) || 0;
+    this.redraw();
+  }
+
+  connectedCallback() {
+    if (!this.hasAttribute('tabindex')) this.tabIndex = 0;
+    this.setAttribute('role', 'img');
+    if (!this.hasAttribute('aria-label')) this.setAttribute('aria-label', `${this.getAttribute('session') ?? 'Product'}: drag or use the arrow keys to turn it`);
+    this.shadowRoot.querySelector('button').addEventListener('click', () => (document.fullscreenElement ? document.exitFullscreen() : this.requestFullscreen()));
+    this.listen();
+    new ResizeObserver(() => this.redraw()).observe(this);
+    this.start();
+  }
+
+  disconnectedCallback() {
+    this.session?.close();
+    this.session = null;
+  }
+
+  attributeChangedCallback(name, before, after) {
+    if (name === 'azimuth') this.azimuth = after;
+    else if (this.isConnected && before !== after && before !== null) this.start();
+  }
+
+  fail(reason) {
+    this.message.textContent = reason;
+    this.dispatchEvent(new CustomEvent('error', { detail: reason }));
+  }
+
+  start() {
+    this.session?.close();
+    this.view = null;
+    this.removeAttribute('loaded');
+    const server = this.getAttribute('server') ?? `${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/ws`;
+    const session = new Session(server, this.getAttribute('session') ?? '', this.getAttribute('token') ?? '');
+    this.session = session;
+    const pendingCells = [];
+    session.addEventListener('error', (e) => this.fail(e.detail));
+    session.addEventListener('tween-data', (e) => {
+      if (this.view) this.addCell(e.detail);
+      else pendingCells.push(e.detail);
+    });
+    session.addEventListener('snapshot', async (e) => {
+      try {
+        const snapshot = e.detail;
+        if (!snapshot.product.directions.length) throw new Error(`session '${snapshot.session}' has no product to show`);
+        this.snapshot = snapshot;
+        this.gl = this.gl ?? this.canvas.getContext('webgl2', { premultipliedAlpha: true, preserveDrawingBuffer: true, antialias: false, depth: true });
+        if (!this.gl) throw new Error('this browser has no WebGL2');
+        this.view = new TweenView(this.gl, snapshot.product, await loadTweenShaders());
+        for (const cell of pendingCells.splice(0)) this.addCell(cell);
+        await this.download(session);
+      } catch (error) {
+        if (this.session === session) this.fail(error.message);
+      }
+    });
+    this.spin();
+  }
+
+  addCell({ pair, data }) {
+    const { width, height, directions } = this.snapshot.product;
+    try {
+      this.view.addCell(pair, decodeTweenCell(data, width, height, directions.length));
+    } catch (error) {
+      this.fail(`tween cell ${pair} refused: ${error.message}`);
+    }
+    this.progress();
+    this.redraw();
+  }
+
+  direction() {
+    const az = (this._azimuth * Math.PI) / 180, el = (this.elevation * Math.PI) / 180;
+    return [Math.cos(el) * Math.sin(az), Math.sin(el), Math.cos(el) * Math.cos(az)];
+  }
+
+  // Photos one at a time, the nearest to the current view first; each drawn as it comes.
+  async download(session) {
+    const { product, assets } = this.snapshot;
+    const nth = (kind) => assets.filter((a) => a.kind === kind);
+    const photos = nth(AssetKind.samples), mattes = nth(AssetKind.matte);
+    const have = new Array(product.directions.length).fill(false);
+    for (;;) {
+      const d = this.direction();
+      let next = -1, best = -2;
+      product.directions.forEach((s, i) => {
+        const c = s[0] * d[0] + s[1] * d[1] + s[2] * d[2];
+        if (!have[i] && c > best) best = c, next = i;
+      });
+      if (next < 0 || this.session !== session) break;
+      const matte = mattes[next] ? await pixels(await session.fetchAsset(mattes[next]), product.width, product.height) : null;
+      const photo = await pixels(await session.fetchAsset(photos[next]), product.width, product.height);
+      if (this.session !== session) return;
+      this.view.setSample(next, matteSample(photo, matte, product.width, product.height));
+      have[next] = true;
+      this.progress();
+      this.redraw();
+    }
+  }
+
+  progress() {
+    if (!this.view) return;
+    const total = this.view.textures.length + this.view.cells.length, done = this.view.samplesLoaded + this.view.cellsLoaded;
+    this.bar.style.width = `${(100 * done) / total}%`;
+    this.bar.parentElement.setAttribute('aria-valuenow', String(Math.round((100 * done) / total)));
+    if (done === total) {
+      this.bar.parentElement.hidden = true;
+      this.setAttribute('loaded', '');
+      this.dispatchEvent(new Event('load'));
+    }
+  }
+
+  redraw() {
+    if (this.frameRequested) return;
+    this.frameRequested = true;
+    requestAnimationFrame(() => {
+      this.frameRequested = false;
+      this.draw();
+    });
+  }
+
+  // Drawn at once (tests and screenshots read the canvas right after).
+  draw() {
+    const gl = this.gl;
+    if (!gl || !this.view) return;
+    const ratio = window.devicePixelRatio || 1;
+    const width = Math.max(1, Math.round(this.canvas.clientWidth * ratio)), height = Math.max(1, Math.round(this.canvas.clientHeight * ratio));
+    if (this.canvas.width !== width || this.canvas.height !== height) this.canvas.width = width, this.canvas.height = height;
+    gl.viewport(0, 0, width, height);
+    gl.clearColor(1, 1, 1, 1);
+    gl.clearDepth(1);
+    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    if (this.view.draw([width, height], this.direction(), this.zoom) && this.firstViewPhotos === undefined)
+      this.firstViewPhotos = this.view.samplesLoaded;  // how many photos the first view waited for
+  }
+
+  // Auto-spin until the first touch, unless motion is unwelcome; then inertia after a drag.
+  spin() {
+    const reduced = window.matchMedia?.('(prefers-reduced-motion: reduce)').matches;
+    let last = performance.now();
+    const step = (now) => {
+      const dt = Math.min((now - last) / 1000, 0.1);
+      last = now;
+      if (!this.isConnected) return;
+      if (!this.touched && !reduced && this.getAttribute('auto-rotate') !== 'off' && this.hasAttribute('loaded')) this.azimuth = this._azimuth + kAutoSpin * dt;
+      else if (Math.abs(this.velocity) > 2 && this.pointers.size === 0) {
+        this.azimuth = this._azimuth + this.velocity * dt;
+        this.velocity *= Math.exp(-dt / 0.4);
+      }
+      requestAnimationFrame(step);
+    };
+    requestAnimationFrame(step);
+  }
+
+  listen() {
+    const c = this.canvas;
+    c.addEventListener('pointerdown', (e) => {
+      this.touched = true;
+      this.velocity = 0;
+      c.setPointerCapture(e.pointerId);
+      this.pointers.set(e.pointerId, { x: e.clientX, y: e.clientY, t: e.timeStamp });
+      c.classList.add('dragging');
+    });
+    c.addEventListener('pointermove', (e) => {
+      const p = this.pointers.get(e.pointerId);
+      if (!p) return;
+      if (this.pointers.size === 2) {  // pinch: zoom by the change in the pointers' spread
+        const [a, b] = [...this.pointers.values()];
+        const before = Math.hypot(a.x - b.x, a.y - b.y);
+        p.x = e.clientX, p.y = e.clientY;
+        const after = Math.hypot(a.x - b.x, a.y - b.y);
+        if (before > 0) this.setZoom(this.zoom * (after / before));
+        return;
+      }
+      const dx = e.clientX - p.x, dt = Math.max((e.timeStamp - p.t) / 1000, 1e-3);
+      this.azimuth = this._azimuth - dx * kDegreesPerPixel;
+      // Inertia follows the last moments of the drag, at most a turn a second.
+      this.velocity = Math.min(Math.max(0.7 * this.velocity + 0.3 * ((-dx * kDegreesPerPixel) / dt), -360), 360);
+      Object.assign(p, { x: e.clientX, y: e.clientY, t: e.timeStamp });
+    });
+    const up = (e) => {
+      this.pointers.delete(e.pointerId);
+      if (this.pointers.size === 0) c.classList.remove('dragging');
+    };
+    c.addEventListener('pointerup', up);
+    c.addEventListener('pointercancel', up);
+    c.addEventListener('wheel', (e) => {
+      e.preventDefault();
+      this.touched = true;
+      this.setZoom(this.zoom * Math.pow(0.9, Math.sign(e.deltaY)));
+    }, { passive: false });
+    this.addEventListener('keydown', (e) => {
+      if (e.key !== 'ArrowLeft' && e.key !== 'ArrowRight' || !this.snapshot) return;
+      e.preventDefault();
+      this.touched = true;
+      this.velocity = 0;
+      const dirs = this.snapshot.product.directions, d = this.direction();
+      let nearest = 0;
+      dirs.forEach((s, i) => { if (s[0] * d[0] + s[2] * d[2] > dirs[nearest][0] * d[0] + dirs[nearest][2] * d[2]) nearest = i; });
+      const next = dirs[(nearest + (e.key === 'ArrowRight' ? 1 : -1) + dirs.length) % dirs.length];
+      this.azimuth = (Math.atan2(next[0], next[2]) * 180) / Math.PI;
+    });
+  }
+
+  setZoom(zoom) {
+    this.zoom = Math.min(Math.max(zoom, 0.5), 4);
+    this.redraw();
+  }
+}
+
+if (!customElements.get('inkwire-turntable')) customElements.define('inkwire-turntable', InkwireTurntable);

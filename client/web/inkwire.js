@@ -1,0 +1,3 @@
+// The web client's one script: `<script type="module" src="https://SERVER/inkwire.js">` defines
+// <inkwire-turntable> (a product a customer turns). See README "On a web page".
+export { InkwireTurntable } from './elements/turntable.js';

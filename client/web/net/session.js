@@ -1,0 +1,116 @@
+// A thin client's connection to a server over WebSocket (SPEC W1, N3), mirroring
+// client/net/session_client.cpp: hello, join, the session's state, tween data, and assets
+// fetched in chunks (4 requests ahead) into the browser's cache by content hash, each checked
+// against its SHA-256 before use, so a second visit downloads only what changed.
+import { AssetKind, decodeFrame, encode, kMaxChunk } from '../protocol/messages.js';
+
+const kRequestsAhead = 4;
+const kCacheName = 'inkwire-assets-v1';
+const toHex = (bytes) => Array.from(bytes, (b) => b.toString(16).padStart(2, '0')).join('');
+
+export class Session extends EventTarget {
+  // Events: 'snapshot' (detail: the snapshot), 'tween-data' (detail: {pair, data}), 'error'
+  // (detail: the reason), 'close'.
+  constructor(url, session, token = '', clientName = 'inkwire-web') {
+    super();
+    this.session = session;
+    this.token = token;
+    this.bytesSent = 0;
+    this.bytesReceived = 0;
+    this.waiting = new Map();  // hash hex -> {resolve, reject, chunks}
+    this.socket = new WebSocket(url);
+    this.socket.binaryType = 'arraybuffer';
+    this.socket.addEventListener('open', () => this.send({ type: 'hello', client_name: clientName }));
+    this.socket.addEventListener('message', (e) => this.receive(e.data));
+    this.socket.addEventListener('close', () => {
+      for (const w of this.waiting.values()) w.reject(new Error('connection closed'));
+      this.waiting.clear();
+      this.dispatchEvent(new Event('close'));
+    });
+  }
+
+  send(message) {
+    const frame = encode(message);
+    this.bytesSent += frame.length;
+    this.socket.send(frame);
+  }
+
+  close() { this.socket.close(); }
+
+  receive(data) {
+    if (!(data instanceof ArrayBuffer)) return this.fail('the server sent a text message');
+    this.bytesReceived += data.byteLength;
+    let m;
+    try {
+      m = decodeFrame(new Uint8Array(data));
+    } catch (e) {
+      return this.fail(`malformed data from the server: ${e.message}`);
+    }
+    if (m.type === 'welcome') this.send({ type: 'join', session: this.session, token: this.token });
+    else if (m.type === 'ping') this.send({ type: 'pong', nonce: m.nonce });
+    else if (m.type === 'snapshot') this.dispatchEvent(new CustomEvent('snapshot', { detail: m }));
+    else if (m.type === 'tween-data') this.dispatchEvent(new CustomEvent('tween-data', { detail: m }));
+    else if (m.type === 'asset-chunk') this.chunk(m);
+    else if (m.type === 'error') {
+      for (const w of this.waiting.values()) w.reject(new Error(m.reason));
+      this.waiting.clear();
+      this.dispatchEvent(new CustomEvent('error', { detail: m.reason }));
+    }
+  }
+
+  fail(reason) {
+    this.dispatchEvent(new CustomEvent('error', { detail: reason }));
+    this.socket.close();
+  }
+
+  // The asset's bytes: from the cache, or downloaded, checked and cached.
+  async fetchAsset(asset) {
+    const key = `/__inkwire/assets/${toHex(asset.hash)}`;
+    const cache = globalThis.caches ? await caches.open(kCacheName).catch(() => null) : null;
+    const cached = cache && (await cache.match(key));
+    if (cached) return new Uint8Array(await cached.arrayBuffer());
+    const bytes = await this.download(asset);
+    const digest = new Uint8Array(await crypto.subtle.digest('SHA-256', bytes));
+    if (toHex(digest) !== toHex(asset.hash)) throw new Error(`${asset.name} does not match its hash`);
+    if (cache) await cache.put(key, new Response(bytes)).catch(() => {});
+    return bytes;
+  }
+
+  download(asset) {
+    const hex = toHex(asset.hash);
+    return new Promise((resolve, reject) => {
+      const bytes = new Uint8Array(asset.size);
+      let requested = 0, received = 0;
+      const request = () => {
+        while (requested < asset.size && requested - received < kRequestsAhead * kMaxChunk) {
+          const length = Math.min(kMaxChunk, asset.size - requested);
+          this.send({ type: 'asset-request', hash: asset.hash, offset: requested, length });
+          requested += length;
+        }
+      };
+      this.waiting.set(hex, {
+        reject,
+        chunk: (m) => {
+          if (m.data.length === 0 || m.offset + m.data.length > asset.size) return reject(new Error(`bad chunk of ${asset.name}`));
+          bytes.set(m.data, m.offset);
+          received += m.data.length;
+          if (received >= asset.size) {
+            this.waiting.delete(hex);
+            resolve(bytes);
+          } else {
+            request();
+          }
+        },
+      });
+      if (asset.size === 0) return resolve(bytes);
+      request();
+    });
+  }
+
+  chunk(m) {
+    const w = this.waiting.get(toHex(m.hash));
+    if (w) w.chunk(m);
+  }
+}
+
+export { AssetKind };

@@ -1,0 +1,157 @@
+// A product drawn in WebGL2 (SPEC W2), mirroring client/render/tween/tween_renderer.cpp and
+// client/viewer/turntable_view.cpp: sample photos warped along the product's tween data into
+// the view, composed by their mattes in one pass (image_warper.cpp's one-pass view), bilinear
+// on a ring, trilinear on a sphere. Until a view's cell and its photos are there, the nearest
+// photo that is shows, as it is.
+import { pathWeights } from '../../common/tween_data.js';
+import { locateView } from '../../common/view_sphere.js';
+import { buildWarpMesh } from '../../common/warp_mesh.js';
+import { kMatteRange } from './matte_sample.js';
+
+function compile(gl, type, source) {
+  const shader = gl.createShader(type);
+  gl.shaderSource(shader, source);
+  gl.compileShader(shader);
+  if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) throw new Error(`TweenView: shader: ${gl.getShaderInfoLog(shader)}`);
+  return shader;
+}
+
+function program(gl, vertex, fragment, defines) {
+  const prepend = (src) => src.replace(/^(#version[^\n]*\n)/, `$1${defines.map((d) => `#define ${d}\n`).join('')}`);
+  const p = gl.createProgram();
+  gl.attachShader(p, compile(gl, gl.VERTEX_SHADER, prepend(vertex)));
+  gl.attachShader(p, compile(gl, gl.FRAGMENT_SHADER, prepend(fragment)));
+  gl.linkProgram(p);
+  if (!gl.getProgramParameter(p, gl.LINK_STATUS)) throw new Error(`TweenView: link: ${gl.getProgramInfoLog(p)}`);
+  return p;
+}
+
+export async function loadTweenShaders() {
+  const get = async (name) => (await fetch(new URL(`../../shaders/tween/${name}`, import.meta.url))).text();
+  return { vertex: await get('blend.vert'), fragment: await get('blend.frag') };
+}
+
+export class TweenView {
+  // `product`: a snapshot's product block; `shaders`: from loadTweenShaders().
+  constructor(gl, product, shaders) {
+    this.gl = gl;
+    this.product = product;
+    this.programs = [1, 2, 3].map((n) => program(gl, shaders.vertex, shaders.fragment, [`SAMPLES ${n}`, `MATTE_RANGE ${kMatteRange.toFixed(1)}`]));
+    this.textures = new Array(product.directions.length).fill(null);
+    this.cells = new Array(product.cells).fill(null);
+    this.meshes = new Array(product.cells).fill(null);
+    this.plain = this.upload(buildWarpMesh({ samples: [0, 1], points: [] }, product.width, product.height));
+    this.lastCell = -1;
+  }
+
+  get samplesLoaded() { return this.textures.filter(Boolean).length; }
+  get cellsLoaded() { return this.cells.filter(Boolean).length; }
+
+  upload(mesh) {
+    const gl = this.gl;
+    const vertices = new Float32Array(mesh.points.flatMap((p) => [p[0][0], p[0][1], p[1][0], p[1][1], p[2][0], p[2][1]]));
+    const indices = new Uint32Array(mesh.triangles.flat());
+    const vao = gl.createVertexArray();
+    gl.bindVertexArray(vao);
+    const vbo = gl.createBuffer();
+    gl.bindBuffer(gl.ARRAY_BUFFER, vbo);
+    gl.bufferData(gl.ARRAY_BUFFER, vertices, gl.STATIC_DRAW);
+    for (let k = 0; k < 3; ++k) {
+      gl.enableVertexAttribArray(k);
+      gl.vertexAttribPointer(k, 2, gl.FLOAT, false, 24, 8 * k);
+    }
+    const ibo = gl.createBuffer();
+    gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, ibo);
+    gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, indices, gl.STATIC_DRAW);
+    gl.bindVertexArray(null);
+    return { vao, count: indices.length };
+  }
+
+  // `rgba`: the sample's matte texture bytes (matteSample()).
+  setSample(index, rgba) {
+    const gl = this.gl, { width, height } = this.product;
+    const texture = gl.createTexture();
+    gl.bindTexture(gl.TEXTURE_2D, texture);
+    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, width, height, 0, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(rgba.buffer, rgba.byteOffset, rgba.byteLength));
+    for (const [k, v] of [[gl.TEXTURE_MIN_FILTER, gl.LINEAR], [gl.TEXTURE_MAG_FILTER, gl.LINEAR], [gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE],
+                          [gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE]])
+      gl.texParameteri(gl.TEXTURE_2D, k, v);
+    this.textures[index] = texture;
+  }
+
+  addCell(index, cell) {
+    if (index < 0 || index >= this.cells.length || this.cells[index]) return;
+    this.cells[index] = cell;
+    this.meshes[index] = this.upload(buildWarpMesh(cell, this.product.width, this.product.height));
+  }
+
+  // The nearest photo that is there, drawn as it is.
+  nearestLoaded(direction) {
+    let best = -1, bestCos = -2;
+    this.textures.forEach((t, i) => {
+      if (!t) return;
+      const d = this.product.directions[i], c = (d[0] * direction[0] + d[1] * direction[1] + d[2] * direction[2]) / Math.hypot(...direction);
+      if (c > bestCos) bestCos = c, best = i;
+    });
+    return best < 0 ? null : { mesh: this.plain, positions: [1, 0, 0], sources: [{ texture: this.textures[best], slot: 0, weight: 1 }] };
+  }
+
+  plan(direction) {
+    const at = locateView(this.product.directions, this.cells, direction);
+    this.lastCell = at.cell;
+    const fallback = this.nearestLoaded(direction);
+    if (at.cell < 0) return fallback;
+    const cell = this.cells[at.cell], pair = cell.samples.length === 2;
+    const whole = cell.samples.every((s) => this.textures[s]);
+    const holdsNearest = fallback && cell.samples.some((s) => this.textures[s] === fallback.sources[0].texture);
+    if (!whole || !holdsNearest) {
+      this.lastCell = -1;
+      return fallback;
+    }
+    return {
+      mesh: this.meshes[at.cell],
+      positions: pair ? pathWeights(at.t) : at.weights,
+      sources: cell.samples.map((s, k) => ({ texture: this.textures[s], slot: pair ? 2 * k : k, weight: at.weights[k] })),
+    };
+  }
+
+  // Draws the view from `direction` (unit, from the object toward the eye) into the bound
+  // framebuffer of `viewport` [w, h] pixels, `zoom` times the photos' own scale, over what is there.
+  draw(viewport, direction, zoom = 1) {
+    const gl = this.gl, view = this.plan(direction);
+    if (!view) return false;
+    const { width, height } = this.product;
+    const h = viewport[1] * zoom, w = (h * width) / height;
+    const rect = [(viewport[0] - w) / 2, (viewport[1] - h) / 2, w, h];
+    // Image pixel (y down) -> window pixel in rect (y up) -> clip space.
+    const toClip = [(2 * rect[2]) / (width * viewport[0]), (-2 * rect[3]) / (height * viewport[1]), (2 * rect[0]) / viewport[0] - 1,
+                    (2 * (rect[1] + rect[3])) / viewport[1] - 1];
+    const p = this.programs[view.sources.length - 1];
+    gl.useProgram(p);
+    const source = [0, 0, 0], weights = [0, 0, 0];
+    view.sources.forEach((s, k) => {
+      source[k] = s.slot;
+      weights[k] = s.weight;
+      gl.activeTexture(gl.TEXTURE0 + k);
+      gl.bindTexture(gl.TEXTURE_2D, s.texture);
+      gl.uniform1i(gl.getUniformLocation(p, `sample${k}`), k);
+    });
+    gl.uniform3fv(gl.getUniformLocation(p, 'position_weights'), view.positions);
+    gl.uniform3iv(gl.getUniformLocation(p, 'source'), source);
+    gl.uniform3fv(gl.getUniformLocation(p, 'weights'), weights);
+    gl.uniform2f(gl.getUniformLocation(p, 'sample_size'), width, height);
+    gl.uniform4fv(gl.getUniformLocation(p, 'to_clip'), toClip);
+    // Folded triangles are written once: depth-tested at one depth against a cleared buffer.
+    gl.enable(gl.DEPTH_TEST);
+    gl.depthFunc(gl.LESS);
+    gl.disable(gl.CULL_FACE);
+    gl.enable(gl.BLEND);
+    gl.blendFunc(gl.ONE, gl.ONE_MINUS_SRC_ALPHA);
+    gl.bindVertexArray(view.mesh.vao);
+    gl.drawElements(gl.TRIANGLES, view.mesh.count, gl.UNSIGNED_INT, 0);
+    gl.bindVertexArray(null);
+    gl.disable(gl.BLEND);
+    return true;
+  }
+}

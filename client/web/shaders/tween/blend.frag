@@ -1,0 +1,38 @@
+#version 300 es
+// client/shaders/tween/blend.frag for WebGL2, composing by mattes (MATTE): the samples are
+// matte textures (matte_sample.js): colour bled past the outline, alpha the signed distance to
+// the sample's outline. The view's outline is where the weighted distances cross zero; the
+// colour comes from the samples that see the object at the pixel. Premultiplied output.
+// Samplers are indexed by constants only (GLSL ES 3.00), so the samples are unrolled.
+precision highp float;
+in vec2 uv0;
+in vec2 uv1;
+in vec2 uv2;
+uniform sampler2D sample0;
+uniform sampler2D sample1;
+uniform sampler2D sample2;
+uniform vec3 weights;
+out vec4 colour;
+
+float distance_sum = 0.0, total = 0.0;
+vec3 rgb = vec3(0.0);
+
+void add(vec4 texel, float weight) {
+  float d = (texel.a - 0.5) * (2.0 * MATTE_RANGE);
+  distance_sum += weight * d;
+  float w = weight * (0.01 + clamp(d + 0.5, 0.0, 1.0));
+  rgb += w * texel.rgb;
+  total += w;
+}
+
+void main() {
+  add(texture(sample0, uv0), weights.x);
+#if SAMPLES > 1
+  add(texture(sample1, uv1), weights.y);
+#endif
+#if SAMPLES > 2
+  add(texture(sample2, uv2), weights.z);
+#endif
+  float coverage = clamp(distance_sum + 0.5, 0.0, 1.0);
+  colour = vec4(rgb / max(total, 1e-6) * coverage, coverage);
+}
