@@ -14,7 +14,8 @@
 #include "server/web/websocket.hpp"
 
 namespace inkwire {
-const std::map<std::string, std::string_view>& web_client_files();  // generated from client/web/
+const std::map<std::string, std::string_view>& web_client_files();    // generated from client/web/
+const std::map<std::string, std::string_view>& face_template_files();  // generated from common/face/*.json
 }
 
 namespace inkwire::server {
@@ -75,18 +76,19 @@ std::string html_escape(const std::string& s) {
 
 std::string content_type(const std::string& path) {
   if (path.ends_with(".js")) return "text/javascript; charset=utf-8";
+  if (path.ends_with(".json")) return "application/json";
   return "text/plain; charset=utf-8";  // shaders
 }
 
-// A product's page: the element full-size, and the snippet a shop pastes into its own page.
-std::string turntable_page(const std::string& session, const std::string& host) {
-  const std::string snippet = "<script type=\"module\" src=\"http://" + host + "/inkwire.js\"></script>\n<inkwire-turntable server=\"ws://" +
-                              host + "/ws\" session=\"" + session + "\" style=\"width: 480px; height: 480px\"></inkwire-turntable>";
+// A session's page: `element` full-size, and the snippet to paste into one's own page.
+std::string element_page(const std::string& element, const std::string& session, const std::string& host, const std::string& invitation) {
+  const std::string snippet = "<script type=\"module\" src=\"http://" + host + "/inkwire.js\"></script>\n<" + element + " server=\"ws://" +
+                              host + "/ws\" session=\"" + session + "\" style=\"width: 480px; height: 480px\"></" + element + ">";
   return "<!doctype html><html lang=en><meta charset=utf-8><meta name=viewport content=\"width=device-width, initial-scale=1\">"
          "<title>" + html_escape(session) + "</title><style>html, body { margin: 0; height: 100%; font: 14px system-ui, sans-serif; }"
-         " inkwire-turntable { height: calc(100% - 9em); } details { padding: 0.5em 1em; } pre { white-space: pre-wrap; background: #f4f4f4; padding: 0.5em; }"
-         "</style><script type=module src=\"/inkwire.js\"></script><inkwire-turntable session=\"" + html_escape(session) +
-         "\"></inkwire-turntable><details><summary>Put this product on your page</summary><pre>" + html_escape(snippet) + "</pre></details>\n";
+         " " + element + " { height: calc(100% - 9em); } details { padding: 0.5em 1em; } pre { white-space: pre-wrap; background: #f4f4f4; padding: 0.5em; }"
+         "</style><script type=module src=\"/inkwire.js\"></script><" + element + " session=\"" + html_escape(session) + "\"></" + element +
+         "><details><summary>" + invitation + "</summary><pre>" + html_escape(snippet) + "</pre></details>\n";
 }
 
 }  // namespace
@@ -225,7 +227,22 @@ asio::awaitable<void> HttpServer::serve(asio::ip::tcp::socket accepted) {
       co_await reply(response(404, "Not Found", "text/plain", "no product " + path.substr(11) + "\n"));
       co_return;
     }
-    co_await reply(response(200, "OK", "text/html; charset=utf-8", turntable_page(session->name(), request.header("host"))));
+    co_await reply(response(200, "OK", "text/html; charset=utf-8",
+                            element_page("inkwire-turntable", session->name(), request.header("host"), "Put this product on your page")));
+    co_return;
+  }
+  if (path.rfind("/conference/", 0) == 0) {
+    const auto session = server_.find_session(path.substr(12));
+    if (!session || session->state().kind != protocol::SessionKind::Conference) {
+      co_await reply(response(404, "Not Found", "text/plain", "no conference " + path.substr(12) + "\n"));
+      co_return;
+    }
+    co_await reply(response(200, "OK", "text/html; charset=utf-8",
+                            element_page("inkwire-conference", session->name(), request.header("host"), "Put this conference on your page")));
+    co_return;
+  }
+  if (path == "/face/expression_templates.json") {
+    co_await reply(response(200, "OK", content_type(path), std::string(face_template_files().at("expression_templates.json"))));
     co_return;
   }
   if (path == "/") {
@@ -233,7 +250,9 @@ asio::awaitable<void> HttpServer::serve(asio::ip::tcp::socket accepted) {
                        html_escape(server_.config().name) + "</h1><ul>";
     for (const auto& [name, session] : server_.sessions()) {
       const bool product = !session->state().product.directions.empty();
-      body += "<li>" + (product ? "<a href=\"/turntable/" + html_escape(name) + "\">" + html_escape(name) + "</a>" : html_escape(name)) +
+      const bool conference = session->state().kind == protocol::SessionKind::Conference;
+      const std::string link = product ? "/turntable/" : conference ? "/conference/" : "";
+      body += "<li>" + (!link.empty() ? "<a href=\"" + link + html_escape(name) + "\">" + html_escape(name) + "</a>" : html_escape(name)) +
               " (" + protocol::to_string(session->state().kind) + ", " + std::to_string(session->members()) + " members)</li>";
     }
     co_await reply(response(200, "OK", "text/html; charset=utf-8", body + "</ul>\n"));

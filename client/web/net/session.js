@@ -9,8 +9,8 @@ const kCacheName = 'inkwire-assets-v1';
 const toHex = (bytes) => Array.from(bytes, (b) => b.toString(16).padStart(2, '0')).join('');
 
 export class Session extends EventTarget {
-  // Events: 'snapshot' (detail: the snapshot), 'tween-data' (detail: {pair, data}), 'error'
-  // (detail: the reason), 'close'.
+  // Events: 'snapshot' (detail: the snapshot), 'tween-data' (detail: {pair, data}), 'state' (a
+  // style, pose or expression change: detail the message), 'error' (detail: the reason), 'close'.
   constructor(url, session, token = '', clientName = 'inkwire-web') {
     super();
     this.session = session;
@@ -50,6 +50,8 @@ export class Session extends EventTarget {
     else if (m.type === 'ping') this.send({ type: 'pong', nonce: m.nonce });
     else if (m.type === 'snapshot') this.dispatchEvent(new CustomEvent('snapshot', { detail: m }));
     else if (m.type === 'tween-data') this.dispatchEvent(new CustomEvent('tween-data', { detail: m }));
+    else if (m.type === 'expression-code' || m.type === 'style-change' || m.type === 'camera-pose' || m.type === 'object-pose')
+      this.dispatchEvent(new CustomEvent('state', { detail: m }));
     else if (m.type === 'asset-chunk') this.chunk(m);
     else if (m.type === 'error') {
       for (const w of this.waiting.values()) w.reject(new Error(m.reason));

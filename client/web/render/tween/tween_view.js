@@ -16,7 +16,7 @@ function compile(gl, type, source) {
   return shader;
 }
 
-function program(gl, vertex, fragment, defines) {
+export function program(gl, vertex, fragment, defines) {
   const prepend = (src) => src.replace(/^(#version[^\n]*\n)/, `$1${defines.map((d) => `#define ${d}\n`).join('')}`);
   const p = gl.createProgram();
   gl.attachShader(p, compile(gl, gl.VERTEX_SHADER, prepend(vertex)));
@@ -36,7 +36,7 @@ export class TweenView {
   constructor(gl, product, shaders) {
     this.gl = gl;
     this.product = product;
-    this.programs = [1, 2, 3].map((n) => program(gl, shaders.vertex, shaders.fragment, [`SAMPLES ${n}`, `MATTE_RANGE ${kMatteRange.toFixed(1)}`]));
+    this.programs = [1, 2, 3].map((n) => program(gl, shaders.vertex, shaders.fragment, [`SAMPLES ${n}`, 'MATTE', `MATTE_RANGE ${kMatteRange.toFixed(1)}`]));
     this.textures = new Array(product.directions.length).fill(null);
     this.cells = new Array(product.cells).fill(null);
     this.meshes = new Array(product.cells).fill(null);

@@ -1,5 +1,6 @@
 #version 300 es
-// client/shaders/tween/blend.frag for WebGL2, composing by mattes (MATTE): the samples are
+// client/shaders/tween/blend.frag for WebGL2. Without MATTE: the weighted sum of the samples'
+// (premultiplied) colours. With MATTE, composing by mattes: the samples are
 // matte textures (matte_sample.js): colour bled past the outline, alpha the signed distance to
 // the sample's outline. The view's outline is where the weighted distances cross zero; the
 // colour comes from the samples that see the object at the pixel. Premultiplied output.
@@ -14,6 +15,7 @@ uniform sampler2D sample2;
 uniform vec3 weights;
 out vec4 colour;
 
+#ifdef MATTE
 float distance_sum = 0.0, total = 0.0;
 vec3 rgb = vec3(0.0);
 
@@ -24,8 +26,10 @@ void add(vec4 texel, float weight) {
   rgb += w * texel.rgb;
   total += w;
 }
+#endif
 
 void main() {
+#ifdef MATTE
   add(texture(sample0, uv0), weights.x);
 #if SAMPLES > 1
   add(texture(sample1, uv1), weights.y);
@@ -35,4 +39,13 @@ void main() {
 #endif
   float coverage = clamp(distance_sum + 0.5, 0.0, 1.0);
   colour = vec4(rgb / max(total, 1e-6) * coverage, coverage);
+#else
+  colour = weights.x * texture(sample0, uv0);
+#if SAMPLES > 1
+  colour += weights.y * texture(sample1, uv1);
+#endif
+#if SAMPLES > 2
+  colour += weights.z * texture(sample2, uv2);
+#endif
+#endif
 }

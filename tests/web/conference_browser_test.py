@@ -1,0 +1,110 @@
+#!/usr/bin/env python3
+"""<inkwire-conference> in a real headless browser (SPEC W3, W4) against a real inkwire-server on
+127.0.0.1: the neutral photo and its landmarks arrive once; then a member sends expression codes
+(8 bytes each, over plain TCP here) and the element shows them: its canvas matches the C++
+headless client's frame of the same code (PSNR >= 35 dB), and a surprise differs from neutral.
+  conference_browser_test.py BIN_DIR OUT_DIR
+The speaker is libdlib-dev's example photo, analysed once by the server (libdlib-data's model);
+skips with a message when those, chromium, chromedriver or selenium are missing."""
+import base64
+import os
+import shutil
+import socket
+import struct
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(__file__))
+from browser_support import Checks, Server, chromium, psnr, read_image, skip  # skips without the browser
+
+BIN, OUT = sys.argv[1], sys.argv[2]
+PHOTO = "/usr/share/doc/libdlib19.1/examples/faces/Tom_Cruise_avp_2014_4.jpg"  # 565x800
+MODEL = "/usr/share/dlib/shape_predictor_68_face_landmarks.dat"
+for needed in (PHOTO, MODEL):
+    if not os.path.exists(needed):
+        skip(f"{needed} is missing (libdlib-dev, libdlib-data)")
+WIDTH, HEIGHT = 565, 800
+SURPRISE = 4
+checks = Checks()
+
+
+def frame(message_type, payload):
+    return struct.pack("<IH", len(payload), message_type) + payload
+
+
+def text(s):
+    b = s.encode()
+    return struct.pack("<H", len(b)) + b
+
+
+os.makedirs(OUT, exist_ok=True)
+data = os.path.join(OUT, "data")
+shutil.rmtree(data, ignore_errors=True)
+speaker = os.path.join(OUT, "speaker")
+os.makedirs(speaker, exist_ok=True)
+shutil.copy(PHOTO, speaker)
+# Once with the speaker, so the server finds the face and stores the photo and its landmarks;
+# then without, so the only codes are the ones this test sends.
+first = Server(BIN, OUT, data, {"sessions": [{"name": "meeting", "kind": "conference",
+                                                "face": {"source": speaker, "neutral": PHOTO, "fps": 2}}]}, "first")
+for _ in range(100):
+    if any(e.get("event") == "face-source-started" for e in first.events()):
+        break
+    time.sleep(0.1)
+first.stop()
+server = Server(BIN, OUT, data, {"sessions": [{"name": "meeting", "kind": "conference"}], "http": "127.0.0.1:0"})
+director = socket.create_connection(("127.0.0.1", server.tcp))
+director.sendall(frame(1, struct.pack("<IH", 0x574B4E49, 2) + text("director")) + frame(6, text("meeting") + text("")))
+driver = None
+element = "document.querySelector('inkwire-conference')"
+
+
+def browser_frame(name):
+    png = driver.execute_script(f"const e = {element}; e.draw(); return e.canvas.toDataURL('image/png')")
+    path = os.path.join(OUT, f"browser-{name}.png")
+    with open(path, "wb") as f:
+        f.write(base64.b64decode(png.split(",", 1)[1]))
+    return read_image(path, OUT)
+
+
+def client_frame(name):
+    pattern = os.path.join(OUT, f"client-{name}-%04d.png")
+    subprocess.run([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{server.tcp}", "--session", "meeting", "--headless", "--frames", "4",
+                    "--fps", "10", "--size", f"{WIDTH}x{HEIGHT}", "--out", pattern, "--cache", os.path.join(OUT, "cache")],
+                   check=True, stderr=subprocess.DEVNULL)
+    return read_image(pattern.replace("%04d", "0003"), OUT)  # settled: the tween takes 0.1 s
+
+
+try:
+    driver = chromium(OUT, WIDTH + 40, HEIGHT + 140)
+    driver.get(f"http://127.0.0.1:{server.http}/")
+    driver.execute_script(f"""document.body.style.margin = '0';
+      document.body.innerHTML = '<inkwire-conference session="meeting" style="width:{WIDTH}px;height:{HEIGHT}px"></inkwire-conference>';
+      import('/inkwire.js');""")
+    start = time.time()
+    while time.time() - start < 30 and not driver.execute_script(f"return {element}.hasAttribute('loaded')"):
+        time.sleep(0.1)
+    checks.check(driver.execute_script(f"return {element}.hasAttribute('loaded')"), "the element loads the speaker's photo and landmarks")
+    time.sleep(0.3)
+    neutral = browser_frame("neutral")
+    db = psnr(neutral, client_frame("neutral"))
+    checks.check(db >= 35, f"neutral: the browser's face matches the C++ client's at {db:.2f} dB (>= 35)")
+
+    director.sendall(frame(12, struct.pack("<BBHbbbb", SURPRISE, 255, 1, 0, 0, 0, 0)))
+    start = time.time()
+    while time.time() - start < 5 and (driver.execute_script(f"return {element}.expression") or {}).get("code") != SURPRISE:
+        time.sleep(0.05)
+    time.sleep(0.3)
+    checks.check((driver.execute_script(f"return {element}.expression") or {}).get("name") == "surprise", "a surprise code reaches the element")
+    surprise = browser_frame("surprise")
+    db = psnr(surprise, client_frame("surprise"))
+    checks.check(db >= 35, f"surprise: the browser's face matches the C++ client's at {db:.2f} dB (>= 35)")
+    apart = psnr(neutral, surprise)
+    checks.check(apart < 35, f"the surprise moves the face ({apart:.2f} dB from neutral)")
+finally:
+    if driver:
+        driver.quit()
+    director.close()
+    server.stop()
+checks.finish()
