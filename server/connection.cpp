@@ -181,8 +181,8 @@ void Connection::join(const Join& join) {
   send(session_->state());
   cells_pending_ = !session_->tween_frames().empty();
   if (cells_pending_) {
-    // A member that holds every photo already asks for none: its cells go after half a second.
-    cells_timer_ = std::make_shared<asio::steady_timer>(transport_->executor(), std::chrono::milliseconds(500));
+    // A member that holds every photo already asks for none: its cells go after two seconds.
+    cells_timer_ = std::make_shared<asio::steady_timer>(transport_->executor(), std::chrono::seconds(2));
     std::weak_ptr<Connection> weak = shared_from_this();
     cells_timer_->async_wait([weak](std::error_code ec) {
       if (const auto self = weak.lock(); self && !ec) self->send_tween_cells();

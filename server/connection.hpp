@@ -49,7 +49,7 @@ class Connection : public std::enable_shared_from_this<Connection> {
   std::string peer_, client_name_;
   SendQueue queue_;
   std::shared_ptr<Session> session_;
-  // A product's tween data waits until the member has its first photo (or half a second), so
+  // A product's tween data waits until the member has its first photo (or two seconds), so
   // a first view costs the snapshot and one photo.
   bool cells_pending_ = false;
   std::shared_ptr<asio::steady_timer> cells_timer_;

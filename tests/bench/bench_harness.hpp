@@ -50,6 +50,9 @@ class Harness {
   Context& context() { return *context_; }
   // The LOD series, built once on first use.
   std::vector<BenchObject>& lod_series();
+  // Facts about the machine a suite found out (e.g. the browser's GL renderer), for the JSON.
+  void set_machine(const std::string& key, const std::string& value) { machine_notes_[key] = value; }
+  const std::map<std::string, std::string>& machine_notes() const { return machine_notes_; }
 
   // Times `frames` frames of `renderer` (after a short warm-up) drawing `object` over a flat
   // clear while it turns, finishing GL work each frame so the time is the frame's real cost.
@@ -63,6 +66,7 @@ class Harness {
   std::unique_ptr<Context> context_;
   std::unique_ptr<Canvas> canvas_;
   std::vector<BenchObject> lods_;
+  std::map<std::string, std::string> machine_notes_;
 };
 
 using Suite = std::function<std::vector<Result>(Harness&)>;
@@ -79,6 +83,7 @@ std::vector<Result> run_net_suite(Harness& harness);
 std::vector<Result> run_face_suite(Harness& harness);
 std::vector<Result> run_tween_suite(Harness& harness);
 std::vector<Result> run_turntable_suite(Harness& harness);
+std::vector<Result> run_web_suite(Harness& harness);
 std::vector<Result> run_landmarks_suite(Harness& harness);
 
 }  // namespace inkwire::bench

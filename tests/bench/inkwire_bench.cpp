@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
   Options options;
   options.mesh = std::string(INKWIRE_MESH_DIR) + "/bull.off";
   CLI::App app{"inkwire-bench: the study's performance tables, as a table and as JSON"};
-  app.add_option("--suite", suite, "default|comic|sketch|hatching|painterly|tween|turntable|landmarks|face|net|all");
+  app.add_option("--suite", suite, "default|comic|sketch|hatching|painterly|tween|turntable|web|landmarks|face|net|all");
   app.add_option("--frames", options.frames, "frames timed per measurement")->check(CLI::Range(1, 1000000));
   app.add_option("--mesh", options.mesh, "source mesh of the LOD series (default: bull.off from libcgal-demo)");
   app.add_option("--gl", options.gl, "off-screen GL backend: osmesa, egl (surfaceless) or auto");
@@ -89,6 +89,7 @@ int main(int argc, char** argv) {
                       {"gl_renderer", harness.context().gl_renderer()},
                       {"gl_backend", harness.context().backend()},
                       {"threads", std::thread::hardware_concurrency()}};
+    for (const auto& [key, value] : harness.machine_notes()) out["machine"][key] = value;
     out["results"] = nlohmann::json::array();
     for (const Result& r : results) out["results"].push_back(to_json(r));
     std::ofstream(json_path) << out.dump(2) << "\n";

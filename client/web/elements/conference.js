@@ -84,7 +84,7 @@ export class InkwireConference extends HTMLElement {
           loadTweenShaders(),
         ]);
         if (this.session !== session) return;
-        this.gl = this.gl ?? this.canvas.getContext('webgl2', { premultipliedAlpha: true, preserveDrawingBuffer: true, antialias: false, depth: true });
+        this.gl = this.gl ?? this.canvas.getContext('webgl2', { premultipliedAlpha: true, antialias: false, depth: true });
         if (!this.gl) throw new Error('this browser has no WebGL2');
         this.face = new FaceReconstructor(this.gl, image.data, image.width, image.height, landmarks, templates, shaders);
         this.show(pending ?? snapshot.expression);

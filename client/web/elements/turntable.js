@@ -8,7 +8,7 @@
 // auto-rotate ("off" to stop it); property azimuth (degrees); attribute `loaded` once every
 // photo and tween cell is there.
 import { decodeTweenCell } from '../common/tween_data.js';
-import { AssetKind, Session } from '../net/session.js';
+import { AssetKind, bytesBy, Session } from '../net/session.js';
 import { matteSample } from '../render/tween/matte_sample.js';
 import { loadTweenShaders, TweenView } from '../render/tween/tween_view.js';
 
@@ -95,6 +95,8 @@ export class InkwireTurntable extends HTMLElement {
     this.session?.close();
     this.view = null;
     this.removeAttribute('loaded');
+    this.startedAt = performance.now();
+    this.firstViewPhotos = this.firstViewBytes = undefined;
     const server = this.getAttribute('server') ?? `${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/ws`;
     const session = new Session(server, this.getAttribute('session') ?? '', this.getAttribute('token') ?? '');
     this.session = session;
@@ -109,7 +111,7 @@ export class InkwireTurntable extends HTMLElement {
         const snapshot = e.detail;
         if (!snapshot.product.directions.length) throw new Error(`session '${snapshot.session}' has no product to show`);
         this.snapshot = snapshot;
-        this.gl = this.gl ?? this.canvas.getContext('webgl2', { premultipliedAlpha: true, preserveDrawingBuffer: true, antialias: false, depth: true });
+        this.gl = this.gl ?? this.canvas.getContext('webgl2', { premultipliedAlpha: true, antialias: false, depth: true });
         if (!this.gl) throw new Error('this browser has no WebGL2');
         this.view = new TweenView(this.gl, snapshot.product, await loadTweenShaders());
         for (const cell of pendingCells.splice(0)) this.addCell(cell);
@@ -152,7 +154,11 @@ export class InkwireTurntable extends HTMLElement {
       });
       if (next < 0 || this.session !== session) break;
       const matte = mattes[next] ? await pixels(await session.fetchAsset(mattes[next]), product.width, product.height) : null;
-      const photo = await pixels(await session.fetchAsset(photos[next]), product.width, product.height);
+      const photoBytes = await session.fetchAsset(photos[next]);
+      // What the first view waits for: the snapshot, one matte and one photo (the tween data the
+      // server sends after that photo is for the views between photos).
+      if (this.firstViewBytes === undefined) this.firstViewBytes = bytesBy(session, photos[next]);
+      const photo = await pixels(photoBytes, product.width, product.height);
       if (this.session !== session) return;
       this.view.setSample(next, matteSample(photo, matte, product.width, product.height));
       have[next] = true;
@@ -193,8 +199,11 @@ export class InkwireTurntable extends HTMLElement {
     gl.clearColor(1, 1, 1, 1);
     gl.clearDepth(1);
     gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
-    if (this.view.draw([width, height], this.direction(), this.zoom) && this.firstViewPhotos === undefined)
-      this.firstViewPhotos = this.view.samplesLoaded;  // how many photos the first view waited for
+    if (this.view.draw([width, height], this.direction(), this.zoom) && this.firstViewPhotos === undefined) {
+      // What the first view waited for, for measuring: photos, milliseconds since start.
+      this.firstViewPhotos = this.view.samplesLoaded;
+      this.firstViewMs = performance.now() - this.startedAt;
+    }
   }
 
   // Auto-spin until the first touch, unless motion is unwelcome; then inertia after a drag.

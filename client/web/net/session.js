@@ -17,7 +17,8 @@ export class Session extends EventTarget {
     this.token = token;
     this.bytesSent = 0;
     this.bytesReceived = 0;
-    this.waiting = new Map();  // hash hex -> {resolve, reject, chunks}
+    this.waiting = new Map();  // hash hex -> {reject, chunk}
+    this.receivedBy = new Map();  // hash hex -> bytesReceived when its download completed
     this.socket = new WebSocket(url);
     this.socket.binaryType = 'arraybuffer';
     this.socket.addEventListener('open', () => this.send({ type: 'hello', client_name: clientName }));
@@ -98,6 +99,7 @@ export class Session extends EventTarget {
           received += m.data.length;
           if (received >= asset.size) {
             this.waiting.delete(hex);
+            this.receivedBy.set(hex, this.bytesReceived);
             resolve(bytes);
           } else {
             request();
@@ -114,5 +116,8 @@ export class Session extends EventTarget {
     if (w) w.chunk(m);
   }
 }
+
+// The bytes received by the time `asset` was whole (for measuring what a view waited for).
+export function bytesBy(session, asset) { return session.receivedBy.get(toHex(asset.hash)) ?? session.bytesReceived; }
 
 export { AssetKind };

@@ -116,6 +116,16 @@ export class TweenView {
     };
   }
 
+  // A program's uniform locations, looked up once.
+  locations(p) {
+    if (!p.locations) {
+      p.locations = {};
+      for (const name of ['sample0', 'sample1', 'sample2', 'position_weights', 'source', 'weights', 'sample_size', 'to_clip'])
+        p.locations[name] = this.gl.getUniformLocation(p, name);
+    }
+    return p.locations;
+  }
+
   // Draws the view from `direction` (unit, from the object toward the eye) into the bound
   // framebuffer of `viewport` [w, h] pixels, `zoom` times the photos' own scale, over what is there.
   draw(viewport, direction, zoom = 1) {
@@ -128,6 +138,7 @@ export class TweenView {
     const toClip = [(2 * rect[2]) / (width * viewport[0]), (-2 * rect[3]) / (height * viewport[1]), (2 * rect[0]) / viewport[0] - 1,
                     (2 * (rect[1] + rect[3])) / viewport[1] - 1];
     const p = this.programs[view.sources.length - 1];
+    const at = this.locations(p);
     gl.useProgram(p);
     const source = [0, 0, 0], weights = [0, 0, 0];
     view.sources.forEach((s, k) => {
@@ -135,13 +146,13 @@ export class TweenView {
       weights[k] = s.weight;
       gl.activeTexture(gl.TEXTURE0 + k);
       gl.bindTexture(gl.TEXTURE_2D, s.texture);
-      gl.uniform1i(gl.getUniformLocation(p, `sample${k}`), k);
+      gl.uniform1i(at[`sample${k}`], k);
     });
-    gl.uniform3fv(gl.getUniformLocation(p, 'position_weights'), view.positions);
-    gl.uniform3iv(gl.getUniformLocation(p, 'source'), source);
-    gl.uniform3fv(gl.getUniformLocation(p, 'weights'), weights);
-    gl.uniform2f(gl.getUniformLocation(p, 'sample_size'), width, height);
-    gl.uniform4fv(gl.getUniformLocation(p, 'to_clip'), toClip);
+    gl.uniform3fv(at.position_weights, view.positions);
+    gl.uniform3iv(at.source, source);
+    gl.uniform3fv(at.weights, weights);
+    gl.uniform2f(at.sample_size, width, height);
+    gl.uniform4fv(at.to_clip, toClip);
     // Folded triangles are written once: depth-tested at one depth against a cleared buffer.
     gl.enable(gl.DEPTH_TEST);
     gl.depthFunc(gl.LESS);
