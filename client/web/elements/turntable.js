@@ -8,9 +8,10 @@
 // auto-rotate ("off" to stop it); property azimuth (degrees); attribute `loaded` once every
 // photo and tween cell is there.
 import { decodeTweenCell } from '../common/tween_data.js';
-import { AssetKind, bytesBy, Session } from '../net/session.js';
+import { AssetKind, bytesBy } from '../net/session.js';
 import { matteSample } from '../render/tween/matte_sample.js';
 import { loadTweenShaders, TweenView } from '../render/tween/tween_view.js';
+import { decodeImage, SessionElement } from './session_element.js';
 
 const template = `
 <style>
@@ -33,25 +34,19 @@ const template = `
 const kDegreesPerPixel = 0.4;  // as the C++ window turns
 const kAutoSpin = 20;          // degrees per second until the first touch
 
-// Decoded RGBA bytes of an image file's bytes.
+// A product photo or matte's RGBA bytes, checked against the product's size.
 async function pixels(bytes, width, height) {
-  const bitmap = await createImageBitmap(new Blob([bytes]), { premultiplyAlpha: 'none', colorSpaceConversion: 'none' });
-  if (bitmap.width !== width || bitmap.height !== height) throw new Error(`a photo is ${bitmap.width}x${bitmap.height}, not ${width}x${height}`);
-  const canvas = new OffscreenCanvas(width, height);
-  const context = canvas.getContext('2d', { willReadFrequently: true });
-  context.drawImage(bitmap, 0, 0);
-  return context.getImageData(0, 0, width, height).data;
+  const image = await decodeImage(bytes);
+  if (image.width !== width || image.height !== height) throw new Error(`a photo is ${image.width}x${image.height}, not ${width}x${height}`);
+  return image.data;
 }
 
-export class InkwireTurntable extends HTMLElement {
-  static observedAttributes = ['server', 'session', 'token', 'azimuth'];
+export class InkwireTurntable extends SessionElement {
+  static observedAttributes = [...SessionElement.observedAttributes, 'azimuth'];
 
   constructor() {
-    super();
-    this.attachShadow({ mode: 'open' }).innerHTML = template;
-    this.canvas = this.shadowRoot.querySelector('canvas');
+    super(template);
     this.bar = this.shadowRoot.querySelector('.bar');
-    this.message = this.shadowRoot.querySelector('.message');
     this._azimuth = 0;
     this.elevation = 0;
     this.zoom = 1;
@@ -68,40 +63,24 @@ export class InkwireTurntable extends HTMLElement {
 
   connectedCallback() {
     if (!this.hasAttribute('tabindex')) this.tabIndex = 0;
-    this.setAttribute('role', 'img');
     if (!this.hasAttribute('aria-label')) this.setAttribute('aria-label', `${this.getAttribute('session') ?? 'Product'}: drag or use the arrow keys to turn it`);
     this.shadowRoot.querySelector('button').addEventListener('click', () => (document.fullscreenElement ? document.exitFullscreen() : this.requestFullscreen()));
     this.listen();
-    new ResizeObserver(() => this.redraw()).observe(this);
-    this.start();
-  }
-
-  disconnectedCallback() {
-    this.session?.close();
-    this.session = null;
+    super.connectedCallback();
   }
 
   attributeChangedCallback(name, before, after) {
     if (name === 'azimuth') this.azimuth = after;
-    else if (this.isConnected && before !== after && before !== null) this.start();
-  }
-
-  fail(reason) {
-    this.message.textContent = reason;
-    this.dispatchEvent(new CustomEvent('error', { detail: reason }));
+    else super.attributeChangedCallback(name, before, after);
   }
 
   start() {
-    this.session?.close();
     this.view = null;
     this.removeAttribute('loaded');
     this.startedAt = performance.now();
     this.firstViewPhotos = this.firstViewBytes = undefined;
-    const server = this.getAttribute('server') ?? `${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/ws`;
-    const session = new Session(server, this.getAttribute('session') ?? '', this.getAttribute('token') ?? '');
-    this.session = session;
+    const session = this.openSession();
     const pendingCells = [];
-    session.addEventListener('error', (e) => this.fail(e.detail));
     session.addEventListener('tween-data', (e) => {
       if (this.view) this.addCell(e.detail);
       else pendingCells.push(e.detail);
@@ -111,9 +90,7 @@ export class InkwireTurntable extends HTMLElement {
         const snapshot = e.detail;
         if (!snapshot.product.directions.length) throw new Error(`session '${snapshot.session}' has no product to show`);
         this.snapshot = snapshot;
-        this.gl = this.gl ?? this.canvas.getContext('webgl2', { premultipliedAlpha: true, antialias: false, depth: true });
-        if (!this.gl) throw new Error('this browser has no WebGL2');
-        this.view = new TweenView(this.gl, snapshot.product, await loadTweenShaders());
+        this.view = new TweenView(this.webgl(), snapshot.product, await loadTweenShaders());
         for (const cell of pendingCells.splice(0)) this.addCell(cell);
         await this.download(session);
       } catch (error) {
@@ -179,26 +156,10 @@ export class InkwireTurntable extends HTMLElement {
     }
   }
 
-  redraw() {
-    if (this.frameRequested) return;
-    this.frameRequested = true;
-    requestAnimationFrame(() => {
-      this.frameRequested = false;
-      this.draw();
-    });
-  }
-
   // Drawn at once (tests and screenshots read the canvas right after).
   draw() {
-    const gl = this.gl;
-    if (!gl || !this.view) return;
-    const ratio = window.devicePixelRatio || 1;
-    const width = Math.max(1, Math.round(this.canvas.clientWidth * ratio)), height = Math.max(1, Math.round(this.canvas.clientHeight * ratio));
-    if (this.canvas.width !== width || this.canvas.height !== height) this.canvas.width = width, this.canvas.height = height;
-    gl.viewport(0, 0, width, height);
-    gl.clearColor(1, 1, 1, 1);
-    gl.clearDepth(1);
-    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    if (!this.gl || !this.view) return;
+    const [width, height] = this.beginFrame();
     if (this.view.draw([width, height], this.direction(), this.zoom) && this.firstViewPhotos === undefined) {
       // What the first view waited for, for measuring: photos, milliseconds since start.
       this.firstViewPhotos = this.view.samplesLoaded;

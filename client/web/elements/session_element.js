@@ -1,0 +1,84 @@
+// What both elements are made of (STYLE 13: one custom element per use, shared behaviour in one
+// place): a shadow root from a template, a session opened from the `server`, `session` and `token`
+// attributes (the page's own server by default) and closed when the element leaves the page, a
+// one-line message for what went wrong, a WebGL2 canvas sized by the container at the device
+// pixel ratio, and redraws coalesced into animation frames.
+import { Session } from '../net/session.js';
+
+// Decoded RGBA bytes of an image file's bytes, as they are (no colour management, no
+// premultiplying): {width, height, data}.
+export async function decodeImage(bytes) {
+  const bitmap = await createImageBitmap(new Blob([bytes]), { premultiplyAlpha: 'none', colorSpaceConversion: 'none' });
+  const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
+  const context = canvas.getContext('2d', { willReadFrequently: true });
+  context.drawImage(bitmap, 0, 0);
+  return { width: bitmap.width, height: bitmap.height, data: context.getImageData(0, 0, bitmap.width, bitmap.height).data };
+}
+
+export class SessionElement extends HTMLElement {
+  static observedAttributes = ['server', 'session', 'token'];
+
+  constructor(template) {
+    super();
+    this.attachShadow({ mode: 'open' }).innerHTML = template;
+    this.canvas = this.shadowRoot.querySelector('canvas');
+    this.message = this.shadowRoot.querySelector('.message');
+  }
+
+  connectedCallback() {
+    this.setAttribute('role', 'img');
+    new ResizeObserver(() => this.redraw()).observe(this);
+    this.start();
+  }
+
+  disconnectedCallback() {
+    this.session?.close();
+    this.session = null;
+  }
+
+  attributeChangedCallback(name, before, after) {
+    if (this.isConnected && before !== after && before !== null) this.start();
+  }
+
+  fail(reason) {
+    this.message.textContent = reason;
+    this.dispatchEvent(new CustomEvent('error', { detail: reason }));
+  }
+
+  // A new session from the attributes, replacing any before it.
+  openSession() {
+    this.session?.close();
+    const server = this.getAttribute('server') ?? `${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/ws`;
+    this.session = new Session(server, this.getAttribute('session') ?? '', this.getAttribute('token') ?? '');
+    this.session.addEventListener('error', (e) => this.fail(e.detail));
+    return this.session;
+  }
+
+  webgl() {
+    this.gl = this.gl ?? this.canvas.getContext('webgl2', { premultipliedAlpha: true, antialias: false, depth: true });
+    if (!this.gl) throw new Error('this browser has no WebGL2');
+    return this.gl;
+  }
+
+  // Sizes the canvas to its box at the device pixel ratio and clears it to white; [width, height].
+  beginFrame() {
+    const gl = this.gl, ratio = window.devicePixelRatio || 1;
+    const width = Math.max(1, Math.round(this.canvas.clientWidth * ratio)), height = Math.max(1, Math.round(this.canvas.clientHeight * ratio));
+    if (this.canvas.width !== width || this.canvas.height !== height) this.canvas.width = width, this.canvas.height = height;
+    gl.viewport(0, 0, width, height);
+    gl.clearColor(1, 1, 1, 1);
+    gl.clearDepth(1);
+    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    return [width, height];
+  }
+
+  redraw() {
+    if (this.frameRequested) return;
+    this.frameRequested = true;
+    requestAnimationFrame(() => {
+      this.frameRequested = false;
+      this.draw();
+      if (this.animating?.()) this.redraw();
+    });
+  }
+}
