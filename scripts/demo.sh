@@ -159,7 +159,7 @@ if [[ -d "$here/../shared/data/templeRing" ]]; then
   "$bin/inkwire-server" add-product temple --photos "$here/../shared/data/templeRing" --data "$out/network/server-data" \
     > "$out/network/add-product-temple.log"
 fi
-"$bin/inkwire-server" --listen 127.0.0.1:0 --data "$out/network/server-data" --config "$out/network/server.json" \
+"$bin/inkwire-server" --listen 127.0.0.1:0 --http 127.0.0.1:0 --data "$out/network/server-data" --config "$out/network/server.json" \
   2> "$out/network/server.log" &
 server_pid=$!
 trap 'kill $server_pid 2>/dev/null || true' EXIT
@@ -170,6 +170,7 @@ for _ in $(seq 100); do
   sleep 0.1
 done
 [ -n "$port" ] || { echo "demo: the server did not start" >&2; cat "$out/network/server.log" >&2; exit 1; }
+http_port=$(sed -n 's/.*"event":"http-listening".*"port":\([0-9]*\).*/\1/p' "$out/network/server.log")
 client=("$bin/inkwire-client" --connect "127.0.0.1:$port" --headless --cache "$out/network/cache")
 "${client[@]}" --session demo --name viewer --frames 96 --fps 12 --size 480x360 --out "$out/network/viewer.mp4" \
   2> "$out/network/viewer.log" &
@@ -192,6 +193,8 @@ if [[ -d "$here/../shared/data/templeRing" ]]; then
   "${client[@]}" --session temple --name customer --view 0 --frames 120 --fps 24 --size 384x512 --wait-for-product \
     --out "$out/network/temple-product.mp4" 2>> "$out/network/viewer.log"
 fi
+# A customer's browser: the session index, the duck's product page, and a drag of the element.
+/usr/bin/python3 "$here/scripts/web_demo.py" "$http_port" duck "$out/web"
 # The conference: the server analyses the speaker and sends codes only; the listener deforms the
 # neutral photo (fetched once) by them. Then one member asks for paint, and the face is painted.
 "${client[@]}" --session conference --name listener --frames 120 --fps 15 --size 360x480 \
@@ -201,4 +204,4 @@ fi
 kill -TERM $server_pid && wait $server_pid || true
 trap - EXIT
 
-echo "demo: wrote $out/contact-sheet.png, $out/shade-maps.png, $out/paintings.png, $out/styles/, $out/turntable-*.mp4, $out/painted-video.mp4, $out/tween-methods.png, $out/tween/, $out/conference/ (input | reconstruction | painted, with bytes sent in the .json) and $out/network/ (viewer.mp4: a shared session followed over the network; turntable.mp4 and duck-product.mp4: products turned by a customer, every in-between view synthesised; conference.mp4 and conference-painted.mp4: a speaker's face rebuilt from expression codes)"
+echo "demo: wrote $out/contact-sheet.png, $out/shade-maps.png, $out/paintings.png, $out/styles/, $out/turntable-*.mp4, $out/painted-video.mp4, $out/tween-methods.png, $out/tween/, $out/conference/ (input | reconstruction | painted, with bytes sent in the .json) and $out/network/ (viewer.mp4: a shared session followed over the network; turntable.mp4 and duck-product.mp4: products turned by a customer, every in-between view synthesised; $out/web/: the product in a browser; conference.mp4 and conference-painted.mp4: a speaker's face rebuilt from expression codes)"

@@ -1,0 +1,60 @@
+#!/usr/bin/env python3
+"""The demo's web part: a customer's browser (Debian's headless chromium through selenium) on a
+running server's pages. Writes OUT/index.png (the session index), OUT/product-page.png (a
+product's page with its snippet opened), OUT/turntable-drag.mp4 (the element's canvas while a
+pointer drags it round and lets go) and OUT/web.json (the browser's GL renderer, bytes sent
+during the drag).
+  web_demo.py HTTP_PORT SESSION OUT"""
+import base64
+import json
+import os
+import subprocess
+import sys
+import time
+
+from selenium import webdriver
+from selenium.webdriver.chrome.service import Service
+from selenium.webdriver.common.action_chains import ActionChains
+
+port, session, out = sys.argv[1], sys.argv[2], sys.argv[3]
+os.makedirs(out, exist_ok=True)
+options = webdriver.ChromeOptions()
+for a in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run", "--disable-background-networking",
+          "--disable-component-update", "--disable-sync", "--force-device-scale-factor=1", "--window-size=720,820",
+          f"--user-data-dir={os.path.join(out, 'profile')}", "--use-angle=swiftshader", "--enable-unsafe-swiftshader"):
+    options.add_argument(a)
+options.binary_location = "/usr/bin/chromium"
+driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
+try:
+    driver.get(f"http://127.0.0.1:{port}/")
+    driver.save_screenshot(os.path.join(out, "index.png"))
+    driver.get(f"http://127.0.0.1:{port}/turntable/{session}")
+    element = "document.querySelector('inkwire-turntable')"
+    start = time.time()
+    while time.time() - start < 60 and not driver.execute_script(f"return {element}.hasAttribute('loaded')"):
+        time.sleep(0.1)
+    driver.execute_script("document.querySelector('details').open = true")
+    time.sleep(1.0)  # a second of the auto-spin
+    driver.save_screenshot(os.path.join(out, "product-page.png"))
+    frames = os.path.join(out, "frames")
+    os.makedirs(frames, exist_ok=True)
+    sent = driver.execute_script(f"const s = {element}.session; return s.bytesSent + s.bytesReceived")
+    canvas = driver.execute_script(f"return {element}.canvas")
+    chain = ActionChains(driver).move_to_element(canvas).click_and_hold()
+    for _ in range(20):
+        chain = chain.move_by_offset(-8, 0).pause(0.05)
+    chain.release().perform()
+    for i in range(60):  # the drag's end and the inertia, one frame every 1/30 s
+        png = driver.execute_script(f"const e = {element}; e.draw(); return e.canvas.toDataURL('image/png')")
+        with open(os.path.join(frames, f"{i:04d}.png"), "wb") as f:
+            f.write(base64.b64decode(png.split(",", 1)[1]))
+        time.sleep(1 / 30)
+    after = driver.execute_script(f"const s = {element}.session; return s.bytesSent + s.bytesReceived")
+    subprocess.run(["ffmpeg", "-loglevel", "error", "-y", "-framerate", "30", "-i", os.path.join(frames, "%04d.png"), "-pix_fmt", "yuv420p",
+                    "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", os.path.join(out, "turntable-drag.mp4")], check=True)
+    renderer = driver.execute_script("""const gl = document.createElement('canvas').getContext('webgl2');
+      const i = gl.getExtension('WEBGL_debug_renderer_info'); return i ? gl.getParameter(i.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER);""")
+    with open(os.path.join(out, "web.json"), "w") as f:
+        json.dump({"browser_gl_renderer": renderer, "bytes_during_drag": after - sent}, f, indent=1)
+finally:
+    driver.quit()
