@@ -193,8 +193,9 @@ if [[ -d "$here/../shared/data/templeRing" ]]; then
   "${client[@]}" --session temple --name customer --view 0 --frames 120 --fps 24 --size 384x512 --wait-for-product \
     --out "$out/network/temple-product.mp4" 2>> "$out/network/viewer.log"
 fi
-# A customer's browser: the session index, the duck's product page, and a drag of the element.
-/usr/bin/python3 "$here/scripts/web_demo.py" "$http_port" duck "$out/web"
+# A customer's browser: the session index, the duck's product page, a drag of the element, and
+# the conference's page.
+/usr/bin/python3 "$here/scripts/web_demo.py" "$http_port" duck conference "$out/web"
 # The conference: the server analyses the speaker and sends codes only; the listener deforms the
 # neutral photo (fetched once) by them. Then one member asks for paint, and the face is painted.
 "${client[@]}" --session conference --name listener --frames 120 --fps 15 --size 360x480 \
@@ -204,4 +205,4 @@ fi
 kill -TERM $server_pid && wait $server_pid || true
 trap - EXIT
 
-echo "demo: wrote $out/contact-sheet.png, $out/shade-maps.png, $out/paintings.png, $out/styles/, $out/turntable-*.mp4, $out/painted-video.mp4, $out/tween-methods.png, $out/tween/, $out/conference/ (input | reconstruction | painted, with bytes sent in the .json) and $out/network/ (viewer.mp4: a shared session followed over the network; turntable.mp4 and duck-product.mp4: products turned by a customer, every in-between view synthesised; $out/web/: the product in a browser; conference.mp4 and conference-painted.mp4: a speaker's face rebuilt from expression codes)"
+echo "demo: wrote $out/contact-sheet.png, $out/shade-maps.png, $out/paintings.png, $out/styles/, $out/turntable-*.mp4, $out/painted-video.mp4, $out/tween-methods.png, $out/tween/, $out/conference/ (input | reconstruction | painted, with bytes sent in the .json) and $out/network/ (viewer.mp4: a shared session followed over the network; turntable.mp4 and duck-product.mp4: products turned by a customer, every in-between view synthesised; $out/web/: the product and the conference in a browser; conference.mp4 and conference-painted.mp4: a speaker's face rebuilt from expression codes)"

@@ -2,9 +2,10 @@
 """The demo's web part: a customer's browser (Debian's headless chromium through selenium) on a
 running server's pages. Writes OUT/index.png (the session index), OUT/product-page.png (a
 product's page with its snippet opened), OUT/turntable-drag.mp4 (the element's canvas while a
-pointer drags it round and lets go) and OUT/web.json (the browser's GL renderer, bytes sent
-during the drag).
-  web_demo.py HTTP_PORT SESSION OUT"""
+pointer drags it round and lets go), OUT/conference-page.png and OUT/conference.mp4 (a
+conference's page while its speaker talks: the face rebuilt from expression codes) and
+OUT/web.json (the browser's GL renderer, bytes sent during the drag).
+  web_demo.py HTTP_PORT SESSION CONFERENCE OUT"""
 import base64
 import json
 import os
@@ -16,7 +17,7 @@ from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.action_chains import ActionChains
 
-port, session, out = sys.argv[1], sys.argv[2], sys.argv[3]
+port, session, conference, out = sys.argv[1:5]
 os.makedirs(out, exist_ok=True)
 options = webdriver.ChromeOptions()
 for a in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run", "--disable-background-networking",
@@ -52,6 +53,22 @@ try:
     after = driver.execute_script(f"const s = {element}.session; return s.bytesSent + s.bytesReceived")
     subprocess.run(["ffmpeg", "-loglevel", "error", "-y", "-framerate", "30", "-i", os.path.join(frames, "%04d.png"), "-pix_fmt", "yuv420p",
                     "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", os.path.join(out, "turntable-drag.mp4")], check=True)
+    # The conference: its page while the speaker talks, two seconds of the face at 15 fps.
+    driver.get(f"http://127.0.0.1:{port}/conference/{conference}")
+    face = "document.querySelector('inkwire-conference')"
+    start = time.time()
+    while time.time() - start < 30 and not driver.execute_script(f"return {face}.hasAttribute('loaded')"):
+        time.sleep(0.1)
+    faces = os.path.join(out, "face-frames")
+    os.makedirs(faces, exist_ok=True)
+    for i in range(45):
+        png = driver.execute_script(f"const e = {face}; e.draw(); return e.canvas.toDataURL('image/png')")
+        with open(os.path.join(faces, f"{i:04d}.png"), "wb") as f:
+            f.write(base64.b64decode(png.split(",", 1)[1]))
+        time.sleep(1 / 15)
+    driver.save_screenshot(os.path.join(out, "conference-page.png"))
+    subprocess.run(["ffmpeg", "-loglevel", "error", "-y", "-framerate", "15", "-i", os.path.join(faces, "%04d.png"), "-pix_fmt", "yuv420p",
+                    "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", os.path.join(out, "conference.mp4")], check=True)
     renderer = driver.execute_script("""const gl = document.createElement('canvas').getContext('webgl2');
       const i = gl.getExtension('WEBGL_debug_renderer_info'); return i ? gl.getParameter(i.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER);""")
     with open(os.path.join(out, "web.json"), "w") as f:
