@@ -173,7 +173,13 @@ TweenCell exact_cell(const MeshSamples& samples, const SceneObject& object, cons
     bool outline = false;
     for (size_t k = 0; k < cell.size() && !outline; ++k) outline = samples.near_background(cell[k], p[pair ? 2 * k : k]);
     candidates.push_back(p);
-    layout.push_back(pair ? p[1] : (p[0] + p[1] + p[2]) / 3.0f);
+    // Spread where the point is seen: a point that one sample hides lies behind the occluder at
+    // the halfway view, among the occluder's points, where spreading would pass it over.
+    glm::vec2 at = pair ? p[1] : (p[0] + p[1] + p[2]) / 3.0f;
+    if (seen < int(cell.size()))
+      for (size_t k = 0; k < cell.size(); ++k)
+        if (samples.visible_position(cell[k], v)) at = p[pair ? 2 * k : k];
+    layout.push_back(at);
     on_outline.push_back(outline);
   }
   if (candidates.empty()) return out;
