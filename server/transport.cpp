@@ -40,10 +40,12 @@ asio::awaitable<std::error_code> TcpTransport::write_frames(const std::deque<Out
   co_return ec;
 }
 
-void TcpTransport::close() {
+void close_socket(asio::ip::tcp::socket& socket) {
   std::error_code ec;
-  socket_.shutdown(asio::ip::tcp::socket::shutdown_both, ec);
-  socket_.close(ec);
+  socket.shutdown(asio::ip::tcp::socket::shutdown_both, ec);
+  socket.close(ec);
 }
+
+void TcpTransport::close() { close_socket(socket_); }
 
 }  // namespace inkwire::server

@@ -47,5 +47,7 @@ class TcpTransport final : public Transport {
 
 // "address:port" of a socket's peer, or "unknown".
 std::string peer_of(const asio::ip::tcp::socket& socket);
+// Shuts a socket down both ways and closes it, ignoring errors (the peer may be gone).
+void close_socket(asio::ip::tcp::socket& socket);
 
 }  // namespace inkwire::server

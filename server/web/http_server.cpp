@@ -158,9 +158,7 @@ asio::awaitable<void> HttpServer::serve(asio::ip::tcp::socket accepted) {
   watchdog->cancel();
   auto reply = [&](const std::string& text) -> asio::awaitable<void> {
     co_await asio::async_write(socket, asio::buffer(text), no_throw);
-    std::error_code ignored;
-    socket.shutdown(asio::ip::tcp::socket::shutdown_both, ignored);
-    socket.close(ignored);
+    close_socket(socket);
   };
   if (ec) {
     if (ec == asio::error::not_found) co_await reply(response(431, "Request Header Fields Too Large", "text/plain", "request head over 8 KiB\n"));

@@ -119,10 +119,6 @@ asio::awaitable<std::error_code> WebSocketTransport::write_frames(const std::deq
   co_return ec;
 }
 
-void WebSocketTransport::close() {
-  std::error_code ec;
-  socket_.shutdown(asio::ip::tcp::socket::shutdown_both, ec);
-  socket_.close(ec);
-}
+void WebSocketTransport::close() { close_socket(socket_); }
 
 }  // namespace inkwire::server
