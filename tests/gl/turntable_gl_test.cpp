@@ -104,6 +104,12 @@ TEST(TurntableGLTest, AProductArrivingPieceByPieceShowsTheNearestPhotoUntilItsCe
   EXPECT_EQ(tween.counters().at("cell"), -1.0);
   const Image only_far = draw();
   EXPECT_GT(matte_iou(only_far, samples.images[1]), 0.99);
+  // A style change while photos arrive (regression: it re-made textures of samples not there).
+  StyleParams sum(TweenRenderer::params());
+  sum.set("compose", "sum");
+  EXPECT_NO_THROW(tween.configure(sum));
+  EXPECT_NO_THROW(tween.configure(StyleParams(TweenRenderer::params())));
+  EXPECT_GT(matte_iou(draw(), samples.images[1]), 0.99);
   // The nearer one: now it shows.
   tween.set_sample(0, samples.images[0]);
   const Image nearest = draw();

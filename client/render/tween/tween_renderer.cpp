@@ -55,10 +55,15 @@ void TweenRenderer::configure(const StyleParams& p) {
   sample_size_ = p.get_int("sample_size");
   sample_style_ = p.get_text("sample_style");
   // Per-sample passes are the study's additive sum; composing by mattes reads every sample at once.
-  matte_ = p.get_text("compose") == "matte" && one_pass_;
-  if (warper_) warper_->set_matte(matte_);
-  if (warper_ && !model_.images.empty() && textures_.size() == model_.images.size())
-    for (size_t i = 0; i < model_.images.size(); ++i) set_sample(int(i), model_.images[i]);  // textures follow the compose mode
+  const bool matte = p.get_text("compose") == "matte" && one_pass_;
+  if (matte != matte_ && warper_) {
+    matte_ = matte;
+    warper_->set_matte(matte_);
+    // The textures follow the compose mode (matte samples carry distances, not alpha).
+    for (size_t i = 0; i < model_.images.size() && i < textures_.size(); ++i)
+      if (textures_[i]) set_sample(int(i), model_.images[i]);
+  }
+  matte_ = matte;
   if (sample_style_ == "tween") throw Error("sample_style cannot be tween itself");
 }
 
