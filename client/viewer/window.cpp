@@ -26,6 +26,7 @@ namespace {
 struct Orbit {
   float azimuth = 30, elevation = 20, distance = 1.4f;
   bool dragging = false;
+  int photo_step = 0;  // arrow keys pressed since the last frame, in a product turntable (+1 right)
   double last_x = 0, last_y = 0;
   bool changed = false;
 
@@ -149,7 +150,12 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
   orbit.from(client.state().camera);
   glfwSetWindowUserPointer(window, &orbit);
   install_orbit_callbacks(window);
-  glfwSetKeyCallback(window, nullptr);
+  // Keys from GLFW itself: the packaged ImGui (1.86) does not report them to IsKeyPressed.
+  glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int) {
+    if ((action != GLFW_PRESS && action != GLFW_REPEAT) || ImGui::GetIO().WantCaptureKeyboard) return;
+    if (key == GLFW_KEY_RIGHT) ++orbit_of(w)->photo_step;
+    if (key == GLFW_KEY_LEFT) --orbit_of(w)->photo_step;
+  });
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -178,13 +184,12 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
       if (!turntable_started) orbit = Orbit{.azimuth = 0, .elevation = 0, .distance = 1.0f}, turntable_started = true;
       if (!product->all_round()) orbit.elevation = 0;  // the photos go round one ring
       inertia.follow(orbit, dt);
-      if (!ImGui::GetIO().WantCaptureKeyboard) {
-        const int step = ImGui::IsKeyPressed(ImGuiKey_RightArrow) ? 1 : ImGui::IsKeyPressed(ImGuiKey_LeftArrow) ? -1 : 0;
-        if (step) {
-          const int next = (product->nearest_sample(sync.view().orbit()) + step + product->samples()) % product->samples();
-          orbit.azimuth = product->sample_angles(next).x;
-          inertia.stop();
-        }
+      if (orbit.photo_step != 0) {
+        const int n = product->samples();
+        const int next = ((product->nearest_sample(sync.view().orbit()) + orbit.photo_step) % n + n) % n;
+        orbit.azimuth = product->sample_angles(next).x;
+        orbit.photo_step = 0;
+        inertia.stop();
       }
       sync.view().orbit() = {.azimuth = orbit.azimuth, .elevation = orbit.elevation, .zoom = 1.0f / orbit.distance};
       orbit.changed = false;
