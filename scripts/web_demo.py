@@ -9,6 +9,7 @@ OUT/web.json (the browser's GL renderer, bytes sent during the drag).
 import base64
 import json
 import os
+import shutil
 import subprocess
 import sys
 import time
@@ -75,3 +76,6 @@ try:
         json.dump({"browser_gl_renderer": renderer, "bytes_during_drag": after - sent}, f, indent=1)
 finally:
     driver.quit()
+    # Only the pictures, the videos and the figures stay.
+    for scratch in ("profile", "frames", "face-frames"):
+        shutil.rmtree(os.path.join(out, scratch), ignore_errors=True)
