@@ -1,7 +1,9 @@
 #include "server/products/product.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <cstdio>
+
+#include <glm/geometric.hpp>
 
 #include "client/gl/context.hpp"
 #include "client/render/scene_object.hpp"
@@ -24,6 +26,7 @@ Product product_from_photos(const fs::path& folder, const PhotoProductOptions& o
 
 Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions& o, const PairProgress& progress,
                                   const std::string& folder_name) {
+  if (photos.photos.size() < 3) throw Error("a product needs at least 3 photos");
   const fs::path folder = folder_name;
   Product product;
   product.data.width = photos.photos[0].width;
