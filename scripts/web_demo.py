@@ -42,14 +42,20 @@ try:
     os.makedirs(frames, exist_ok=True)
     sent = driver.execute_script(f"const s = {element}.session; return s.bytesSent + s.bytesReceived")
     canvas = driver.execute_script(f"return {element}.canvas")
-    chain = ActionChains(driver).move_to_element(canvas).click_and_hold()
-    for _ in range(20):
-        chain = chain.move_by_offset(-8, 0).pause(0.05)
-    chain.release().perform()
-    for i in range(60):  # the drag's end and the inertia, one frame every 1/30 s
+
+    def capture(i):
         png = driver.execute_script(f"const e = {element}; e.draw(); return e.canvas.toDataURL('image/png')")
         with open(os.path.join(frames, f"{i:04d}.png"), "wb") as f:
             f.write(base64.b64decode(png.split(",", 1)[1]))
+
+    # The pointer goes down, drags a third of a turn in 40 steps, lets go; then the inertia.
+    ActionChains(driver).move_to_element(canvas).click_and_hold().perform()
+    for i in range(40):
+        ActionChains(driver).move_by_offset(-8, 0).perform()
+        capture(i)
+    ActionChains(driver).release().perform()
+    for i in range(40, 70):
+        capture(i)
         time.sleep(1 / 30)
     after = driver.execute_script(f"const s = {element}.session; return s.bytesSent + s.bytesReceived")
     subprocess.run(["ffmpeg", "-loglevel", "error", "-y", "-framerate", "30", "-i", os.path.join(frames, "%04d.png"), "-pix_fmt", "yuv420p",
