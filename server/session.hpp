@@ -36,8 +36,8 @@ class Session {
   // and landmark assets. Called before clients are served.
   void set_face_assets(const protocol::AssetAnnounce& photo, const protocol::AssetAnnounce& landmarks);
 
-  // A turntable's tween data, sent to each member after the snapshot (one message per cell),
-  // or why the product cannot be served (then joining is refused with that reason).
+  // A turntable's tween data, encoded once, one message per cell (a member gets them after its
+  // first photo), or why the product cannot be served (then joining is refused with that reason).
   void set_product(std::vector<protocol::TweenData> cells);
   void set_unavailable(std::string reason) { unavailable_ = std::move(reason); }
   const std::string& unavailable() const { return unavailable_; }

@@ -25,11 +25,14 @@ int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& 
   std::ofstream log;
   if (!o.frame_log.empty()) log.open(o.frame_log);
   const auto period = std::chrono::microseconds(1000000 / std::max(o.fps, 1));
-  if (o.wait_for_product)
-    while (sync.poll(), sync.view().turntable() && !sync.view().turntable()->complete()) {
-      if (!sync.poll()) client.wait_for_update(client.updates(), std::chrono::milliseconds(50));
-      if (!client.connected()) throw Error("connection closed while the product was arriving");
-    }
+  // A product's photos come one per poll; the tween data with the first of them.
+  while (o.wait_for_product) {
+    const bool changed = sync.poll();
+    const TurntableView* product = sync.view().turntable();
+    if (!product || product->complete()) break;
+    if (!client.connected()) throw Error("connection closed while the product was arriving");
+    if (!changed) client.wait_for_update(client.updates(), std::chrono::milliseconds(50));
+  }
   auto tick = std::chrono::steady_clock::now();
   for (int i = 0; i < o.frames; ++i) {
     sync.poll();
