@@ -131,7 +131,6 @@ void TweenRenderer::add_cell(TweenCell cell) {
     if (s >= model_.data.sample_count()) throw Error("tween: a cell names sample " + std::to_string(s) + " of " + std::to_string(model_.data.sample_count()));
   add_cell_mesh(cell);
   model_.data.cells.push_back(std::move(cell));
-  bytes_per_cell_ = model_.data.sample_count() >= 2 ? double(encode_tween(model_.data).size()) / double(model_.data.cells.size()) : 0.0;
 }
 
 int TweenRenderer::samples_loaded() const {
@@ -150,7 +149,6 @@ void TweenRenderer::upload() {
   textures_.resize(model_.images.size());
   for (size_t i = 0; i < model_.images.size(); ++i)
     if (!model_.images[i].empty()) set_sample(int(i), model_.images[i]);
-  bytes_per_cell_ = model_.data.cells.empty() ? 0.0 : double(encode_tween(model_.data).size()) / double(model_.data.cells.size());
   meshes_.clear();
   for (const TweenCell& cell : model_.data.cells) add_cell_mesh(cell);
   plain_mesh_ = warper_->add_mesh(build_warp_mesh(TweenCell{.samples = {0, 1}, .points = {}}, model_.data.width, model_.data.height));
@@ -264,7 +262,10 @@ std::map<std::string, double> TweenRenderer::counters() const {
   c["passes"] = last_passes_;
   c["cell"] = last_cell_;
   c["samples_loaded"] = samples_loaded();
-  if (warper_) c["bytes_per_cell"] = bytes_per_cell_;
+  // Measured when asked (rarely), not each time a cell arrives: the model's tween data as the
+  // codec writes it, per cell.
+  if (warper_ && !model_.data.cells.empty())
+    c["bytes_per_cell"] = double(encode_tween(model_.data).size()) / double(model_.data.cells.size());
   return c;
 }
 

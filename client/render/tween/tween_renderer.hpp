@@ -86,7 +86,6 @@ class TweenRenderer final : public Renderer {
   bool matte_ = true;
   View last_view_;
   int last_cell_ = -1, last_passes_ = 0;
-  double bytes_per_cell_ = 0.0;  // the model's tween data as the codec writes it
 };
 
 }  // namespace inkwire
