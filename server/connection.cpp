@@ -208,13 +208,14 @@ void Connection::leave_session() {
 
 void Connection::serve_asset(const AssetRequest& request) {
   // Assets are served to members of a session that lists them: the token guards them too.
-  if (!session_ || !session_->lists_asset(request.hash)) {
+  const AssetAnnounce* asset = session_ ? session_->find_asset(request.hash) : nullptr;
+  if (!asset) {
     send(ErrorMessage{.code = ErrorCode::NoAsset, .reason = "asset " + to_hex(request.hash) + " is not in this client's session"});
     return;
   }
   try {
     AssetChunk chunk{.hash = request.hash, .offset = request.offset, .data = server_.store().read(request.hash, request.offset, request.length)};
-    const bool photo_done = cells_pending_ && request.offset + chunk.data.size() >= session_->asset_size(request.hash, AssetKind::Samples);
+    const bool photo_done = cells_pending_ && asset->kind == AssetKind::Samples && request.offset + chunk.data.size() >= asset->size;
     send(chunk);
     if (photo_done) send_tween_cells();  // the member's first photo is on its way: the tween data follows it
   } catch (const Error& e) {

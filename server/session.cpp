@@ -7,14 +7,10 @@
 
 namespace inkwire::server {
 
-bool Session::lists_asset(const protocol::Hash& hash) const {
-  return std::any_of(stored_.state.assets.begin(), stored_.state.assets.end(), [&](const auto& a) { return a.hash == hash; });
-}
-
-uint64_t Session::asset_size(const protocol::Hash& hash, protocol::AssetKind kind) const {
-  for (const auto& a : stored_.state.assets)
-    if (a.hash == hash && a.kind == kind) return a.size;
-  return ~uint64_t(0);
+const protocol::AssetAnnounce* Session::find_asset(const protocol::Hash& hash) const {
+  const auto& assets = stored_.state.assets;
+  const auto it = std::find_if(assets.begin(), assets.end(), [&](const auto& a) { return a.hash == hash; });
+  return it == assets.end() ? nullptr : &*it;
 }
 
 void Session::set_face_assets(const protocol::AssetAnnounce& photo, const protocol::AssetAnnounce& landmarks) {

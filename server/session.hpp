@@ -20,9 +20,7 @@ class Session {
   bool token_matches(const std::string& token) const { return stored_.token.empty() || token == stored_.token; }
   const protocol::Snapshot& state() const { return stored_.state; }
   const StoredSession& stored() const { return stored_; }
-  bool lists_asset(const protocol::Hash& hash) const;
-  // The size of the listed asset with that hash if it is of `kind`, else the largest size there is.
-  uint64_t asset_size(const protocol::Hash& hash, protocol::AssetKind kind) const;
+  const protocol::AssetAnnounce* find_asset(const protocol::Hash& hash) const;  // null unless listed
 
   void join(const std::shared_ptr<Connection>& member);
   void leave(const Connection* member);
