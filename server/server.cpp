@@ -121,24 +121,11 @@ void Server::start_face_feeds() {
 void Server::start() {
   start_face_feeds();
   log_info("listening", {{"host", config_.host}, {"port", port()}, {"data", config_.data_dir.string()}, {"sessions", sessions_.size()}});
-  asio::co_spawn(io_, accept_loop(), asio::detached);
+  asio::co_spawn(io_, accept_connections(acceptor_, stopping_, "accept-failed", [this](asio::ip::tcp::socket socket) {
+                   adopt(std::make_unique<TcpTransport>(std::move(socket)));
+                 }), asio::detached);
   asio::co_spawn(io_, persist_loop(), asio::detached);
   if (http_) http_->start();
-}
-
-asio::awaitable<void> Server::accept_loop() {
-  while (!stopping_) {
-    auto [ec, socket] = co_await acceptor_.async_accept(no_throw);
-    if (ec) {
-      if (stopping_) break;
-      // Out of descriptors and the like: log, breathe, keep serving the clients we have.
-      log_warn("accept-failed", {{"reason", ec.message()}});
-      asio::steady_timer pause(io_, std::chrono::milliseconds(100));
-      co_await pause.async_wait(no_throw);
-      continue;
-    }
-    adopt(std::make_unique<TcpTransport>(std::move(socket)));
-  }
 }
 
 asio::awaitable<void> Server::persist_loop() {

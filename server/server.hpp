@@ -48,7 +48,6 @@ class Server {
  private:
   void create_sessions();
   void start_face_feeds();
-  asio::awaitable<void> accept_loop();
   asio::awaitable<void> persist_loop();
 
   asio::io_context& io_;

@@ -2,6 +2,7 @@
 
 #include <asio/experimental/as_tuple.hpp>
 
+#include "common/log.hpp"
 #include "protocol/framing.hpp"
 
 namespace inkwire::server {
@@ -47,5 +48,20 @@ void close_socket(asio::ip::tcp::socket& socket) {
 }
 
 void TcpTransport::close() { close_socket(socket_); }
+
+asio::awaitable<void> accept_connections(asio::ip::tcp::acceptor& acceptor, const bool& stopping, const char* failure_event,
+                                         std::function<void(asio::ip::tcp::socket)> accepted) {
+  while (!stopping) {
+    auto [ec, socket] = co_await acceptor.async_accept(no_throw);
+    if (ec) {
+      if (stopping) break;
+      log_warn(failure_event, {{"reason", ec.message()}});
+      asio::steady_timer pause(acceptor.get_executor(), std::chrono::milliseconds(100));
+      co_await pause.async_wait(no_throw);
+      continue;
+    }
+    accepted(std::move(socket));
+  }
+}
 
 }  // namespace inkwire::server

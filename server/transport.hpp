@@ -3,6 +3,7 @@
 // or one frame per binary WebSocket message (server/web/). The connection's logic, its
 // sessions and its send queue never know which.
 #include <deque>
+#include <functional>
 #include <string>
 #include <system_error>
 
@@ -49,5 +50,11 @@ class TcpTransport final : public Transport {
 std::string peer_of(const asio::ip::tcp::socket& socket);
 // Shuts a socket down both ways and closes it, ignoring errors (the peer may be gone).
 void close_socket(asio::ip::tcp::socket& socket);
+
+// Accepts connections until `stopping` turns true, handing each socket to `accepted`. A failed
+// accept (out of descriptors and the like) is logged as `failure_event` and retried after a
+// breath; the clients already served carry on. Shared by the TCP and HTTP listeners.
+asio::awaitable<void> accept_connections(asio::ip::tcp::acceptor& acceptor, const bool& stopping, const char* failure_event,
+                                         std::function<void(asio::ip::tcp::socket)> accepted);
 
 }  // namespace inkwire::server

@@ -114,27 +114,15 @@ HttpServer::HttpServer(asio::io_context& io, Server& server) : io_(io), server_(
 
 void HttpServer::start() {
   log_info("http-listening", {{"host", server_.config().http_host}, {"port", port()}});
-  asio::co_spawn(io_, accept_loop(), asio::detached);
+  asio::co_spawn(io_, accept_connections(acceptor_, stopping_, "http-accept-failed", [this](asio::ip::tcp::socket socket) {
+                   asio::co_spawn(io_, serve(std::move(socket)), asio::detached);
+                 }), asio::detached);
 }
 
 void HttpServer::stop() {
   stopping_ = true;
   std::error_code ec;
   acceptor_.close(ec);
-}
-
-asio::awaitable<void> HttpServer::accept_loop() {
-  while (!stopping_) {
-    auto [ec, socket] = co_await acceptor_.async_accept(no_throw);
-    if (ec) {
-      if (stopping_) break;
-      log_warn("http-accept-failed", {{"reason", ec.message()}});
-      asio::steady_timer pause(io_, std::chrono::milliseconds(100));
-      co_await pause.async_wait(no_throw);
-      continue;
-    }
-    asio::co_spawn(io_, serve(std::move(socket)), asio::detached);
-  }
 }
 
 asio::awaitable<void> HttpServer::serve(asio::ip::tcp::socket accepted) {

@@ -23,7 +23,6 @@ class HttpServer {
   void stop();
 
  private:
-  asio::awaitable<void> accept_loop();
   asio::awaitable<void> serve(asio::ip::tcp::socket socket);
 
   asio::io_context& io_;
