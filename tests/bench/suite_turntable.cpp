@@ -94,6 +94,15 @@ Result row(const std::string& variant, const std::string& object, int samples, c
   return r;
 }
 
+// The view `renderer` synthesises for `frame` by `method` composed by `compose`, at the samples'
+// resolution (premultiplied).
+Image synthesised(TweenRenderer& renderer, Canvas& canvas, const FrameState& frame, const std::string& method, const std::string& compose) {
+  renderer.configure(style_params("tween", {"method=" + method, "compose=" + compose}).front());
+  canvas.bind();
+  renderer.draw(frame);
+  return renderer.last_view();
+}
+
 // The time and bytes until a client has what a first view needs, on loopback: the snapshot,
 // then the first photo (and its matte). A real server on the stored data, a real client.
 std::pair<double, double> first_view(const fs::path& data, const std::string& session) {
@@ -203,10 +212,7 @@ std::vector<Result> temple_rows(Canvas& canvas) {
     spin.psnr.push_back(psnr(nearest, truth));
     spin.ssim.push_back(ssim(nearest, truth));
     for (auto [method, compose, scores] : {std::tuple{"crossfade", "sum", &fade}, std::tuple{"bilinear", "matte", &tween}}) {
-      renderer.configure(style_params("tween", {std::string("method=") + method, std::string("compose=") + compose}).front());
-      canvas.bind();
-      renderer.draw(frame);
-      const Image view = over_colour(renderer.last_view(), {0, 0, 0}, true);
+      const Image view = over_colour(synthesised(renderer, canvas, frame, method, compose), {0, 0, 0}, true);
       scores->psnr.push_back(psnr(view, truth));
       scores->ssim.push_back(ssim(view, truth));
     }
@@ -284,12 +290,8 @@ std::vector<Result> run_turntable_suite(Harness& harness) {
       const Image truth_on_white = over_colour(truth[size_t(deg)], {255, 255, 255}, false);
       spin.psnr.push_back(psnr(shown, truth_on_white));
       spin.ssim.push_back(ssim(shown, truth_on_white));
-      for (auto [method, compose, scores] : {std::tuple{"crossfade", "sum", &fade}, std::tuple{"bilinear", "matte", &tween}}) {
-        renderer.configure(style_params("tween", {std::string("method=") + method, std::string("compose=") + compose}).front());
-        canvas.bind();
-        renderer.draw(frame);
-        scores->add(renderer.last_view(), truth[size_t(deg)], true);
-      }
+      for (auto [method, compose, scores] : {std::tuple{"crossfade", "sum", &fade}, std::tuple{"bilinear", "matte", &tween}})
+        scores->add(synthesised(renderer, canvas, frame, method, compose), truth[size_t(deg)], true);
     }
     const uint64_t photo_bytes = bytes_of(state, protocol::AssetKind::Samples), matte_bytes = bytes_of(state, protocol::AssetKind::Matte),
                    tween_bytes = bytes_of(state, protocol::AssetKind::Tween), spin_bytes = bytes_of(spin_state, protocol::AssetKind::Image);
