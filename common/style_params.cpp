@@ -49,8 +49,13 @@ ParamSpec bool_param(std::string name, std::string def, std::string help) {
 ParamSpec colour_param(std::string name, std::string def, std::string help) {
   return {std::move(name), ParamType::Colour, std::move(def), std::move(help), 0, 0, {}};
 }
-ParamSpec text_param(std::string name, std::string def, std::string help) {
-  return {std::move(name), ParamType::Text, std::move(def), std::move(help), 0, 0, {}};
+ParamSpec text_param(std::string name, std::string def, std::string help, std::vector<std::string> suggestions) {
+  return {std::move(name), ParamType::Text, std::move(def), std::move(help), 0, 0, std::move(suggestions)};
+}
+ParamSpec file_param(std::string name, std::string def, std::string help, std::vector<std::string> suggestions) {
+  ParamSpec spec = text_param(std::move(name), std::move(def), std::move(help), std::move(suggestions));
+  spec.names_file = true;
+  return spec;
 }
 ParamSpec choice_param(std::string name, std::string def, std::vector<std::string> choices, std::string help) {
   return {std::move(name), ParamType::Choice, std::move(def), std::move(help), 0, 0, std::move(choices)};

@@ -18,14 +18,18 @@ struct ParamSpec {
   std::string default_value;
   std::string help;
   double min = 0.0, max = 0.0;        // Float / Int range, inclusive
-  std::vector<std::string> choices;   // Choice
+  std::vector<std::string> choices;   // Choice: the accepted values; Text: suggestions (any text is accepted)
+  bool names_file = false;            // Text: a path to a file is accepted (a panel offers a path field)
 };
 
 ParamSpec float_param(std::string name, std::string default_value, double min, double max, std::string help);
 ParamSpec int_param(std::string name, std::string default_value, double min, double max, std::string help);
 ParamSpec bool_param(std::string name, std::string default_value, std::string help);
 ParamSpec colour_param(std::string name, std::string default_value, std::string help);
-ParamSpec text_param(std::string name, std::string default_value, std::string help);
+// `suggestions`: values a user would usually pick (a panel offers them); any text is accepted.
+ParamSpec text_param(std::string name, std::string default_value, std::string help, std::vector<std::string> suggestions = {});
+// Text that names a file, or one of `suggestions` (shipped names).
+ParamSpec file_param(std::string name, std::string default_value, std::string help, std::vector<std::string> suggestions = {});
 ParamSpec choice_param(std::string name, std::string default_value, std::vector<std::string> choices, std::string help);
 
 class StyleParams {

@@ -35,7 +35,8 @@ int main(int argc, char** argv) {
                  "after joining, move the session's camera: AZIMUTH,ELEVATION[,DISTANCE in diagonals]; in a turntable session, "
                  "this client's own first view (AZIMUTH[,ELEVATION], nothing sent)");
   app.add_flag("--wait-for-product", o.wait_for_product, "headless, turntable sessions: draw the first frame once every photo is there");
-  app.add_option("--frame-log", o.frame_log, "headless: write one JSON line per frame (frame, revision, style, time)");
+  app.add_option("--frame-log", o.frame_log, "write one JSON line per frame drawn (frame, revision, style, time; the window adds its panel's place)");
+  app.add_option("--msaa", o.msaa, "samples per pixel for antialiased edges (1 = off)")->check(CLI::Range(1, 16));
   app.add_option("--gl", o.gl, "headless GL backend: osmesa, egl or auto");
   try {
     app.parse(argc, argv);

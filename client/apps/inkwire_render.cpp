@@ -68,8 +68,8 @@ void print_styles() {
     for (const ParamSpec& p : s.params()) {
       std::cout << "    " << p.name << " (" << to_string(p.type);
       if (p.type == ParamType::Float || p.type == ParamType::Int) std::cout << " " << p.min << ".." << p.max;
-      if (p.type == ParamType::Choice) {
-        std::cout << " ";
+      if (!p.choices.empty()) {
+        std::cout << (p.type == ParamType::Text ? " such as " : " ");
         for (size_t i = 0; i < p.choices.size(); ++i) std::cout << (i ? "|" : "") << p.choices[i];
       }
       std::cout << ", default " << p.default_value << "): " << p.help << "\n";

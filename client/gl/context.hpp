@@ -34,8 +34,10 @@ std::unique_ptr<Context> create_osmesa_context(int width, int height);
 std::unique_ptr<Context> create_egl_context(int width, int height);
 
 // A GLFW window with a GL 4.5 core context (not forward-compatible, so wide lines work).
-// `visible` false gives a hidden window. Throws inkwire::Error when no display is available.
-std::unique_ptr<Context> create_window_context(int width, int height, const std::string& title, bool visible = true);
+// `visible` false gives a hidden window; a visible one waits for the display's refresh when it
+// presents (vsync). `samples` > 1 asks for a multisampled window (antialiasing), falling back
+// to none when the driver offers none. Throws inkwire::Error when no display is available.
+std::unique_ptr<Context> create_window_context(int width, int height, const std::string& title, bool visible = true, int samples = 1);
 
 // True when a window system is reachable (DISPLAY or WAYLAND_DISPLAY set and GLFW can start).
 bool window_system_available();

@@ -28,7 +28,7 @@ bool init_glfw() {
 
 class GlfwContext final : public Context {
  public:
-  GlfwContext(int width, int height, const std::string& title, bool visible) {
+  GlfwContext(int width, int height, const std::string& title, bool visible, int samples) {
     if (!init_glfw()) throw Error("no window system: DISPLAY is not set or GLFW could not start");
     glfwDefaultWindowHints();
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
@@ -37,9 +37,15 @@ class GlfwContext final : public Context {
     // Not forward-compatible: forward-compatible contexts refuse line widths above 1.
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_FALSE);
     glfwWindowHint(GLFW_VISIBLE, visible ? GLFW_TRUE : GLFW_FALSE);
+    glfwWindowHint(GLFW_SAMPLES, samples > 1 ? samples : 0);
     window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+    if (!window_ && samples > 1) {  // no multisampled visual: a plain window still serves
+      glfwWindowHint(GLFW_SAMPLES, 0);
+      window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+    }
     if (!window_) throw Error("GLFW could not open a window with a GL 4.5 core context");
     make_current();
+    if (visible) glfwSwapInterval(1);  // no more frames than the display shows
   }
   ~GlfwContext() override { glfwDestroyWindow(window_); }
 
@@ -68,8 +74,8 @@ class GlfwContext final : public Context {
 
 bool window_system_available() { return init_glfw(); }
 
-std::unique_ptr<Context> create_window_context(int width, int height, const std::string& title, bool visible) {
-  return std::make_unique<GlfwContext>(width, height, title, visible);
+std::unique_ptr<Context> create_window_context(int width, int height, const std::string& title, bool visible, int samples) {
+  return std::make_unique<GlfwContext>(width, height, title, visible, samples);
 }
 
 }  // namespace inkwire

@@ -16,34 +16,41 @@
 
 namespace inkwire {
 
+// The sketchers pick new lines 12 times a second; brushes move a step every frame drawn, and
+// 24 steps a second is the pace their motion settings were chosen at.
+constexpr double kBoilHz = 12.0, kBrushMotionHz = 24.0;
+
 const std::vector<StyleInfo>& styles() {
   static const std::vector<StyleInfo> all = {
-      {"default", "smooth-shaded, one light, textured where possible: the speed reference", "#d9dde3",
-       &DefaultRenderer::params, [] { return std::make_unique<DefaultRenderer>(); }},
-      {"hidden-line", "silhouette, crease and open edges as lines, hidden parts removed, over paper", "paper",
-       &HiddenLineRenderer::params, [] { return std::make_unique<HiddenLineRenderer>(); }},
-      {"comic", "banded N.L shading from a 1D shade map, thick outline from back faces in wide lines", "paper",
-       [] { return ComicRenderer::params(false); }, [] { return std::make_unique<ComicRenderer>(false); }},
-      {"comic-extended", "2D shade map over (N.L, R.V) with a moving highlight band; fast CPU face orientation", "paper",
-       [] { return ComicRenderer::params(true); }, [] { return std::make_unique<ComicRenderer>(true); }},
-      {"sketch-recursive", "silhouettes and creases drawn 1-4 times as wobbling hand-drawn lines that boil at 12 Hz", "paper",
-       &RecursiveSketcher::params, [] { return std::make_unique<RecursiveSketcher>(); }},
-      {"sketch-segments", "every outline edge drawn with one of a few pre-made sketchy lines, chosen anew 12 times a second",
-       "paper", &SegmentSketcher::params, [] { return std::make_unique<SegmentSketcher>(); }},
-      {"sketch-pencil", "graphite strokes with paper grain along every outline edge, fading in and out", "paper",
-       [] { return TexturedSketcher::params(Medium::Pencil); }, [] { return std::make_unique<TexturedSketcher>(Medium::Pencil); }},
-      {"sketch-charcoal", "broad, crumbling charcoal strokes along every outline edge, fading in and out", "paper",
-       [] { return TexturedSketcher::params(Medium::Charcoal); }, [] { return std::make_unique<TexturedSketcher>(Medium::Charcoal); }},
-      {"sketch-chalk", "dry white chalk strokes on a dark board", "#2e3b35",
-       [] { return TexturedSketcher::params(Medium::Chalk); }, [] { return std::make_unique<TexturedSketcher>(Medium::Chalk); }},
-      {"hatching", "screen-space pencil hatching whose density follows the light; combine with an outline: hatching+sketch-pencil",
-       "paper", &HatchingRenderer::params, [] { return std::make_unique<HatchingRenderer>(); }},
-      {"painterly", "textured brushes that drift over the object, seek it and take their paint from a reference rendering; style files",
-       "canvas", &PainterlyRenderer::params, [] { return std::make_unique<PainterlyRenderer>(); }},
-      {"oil-filter", "the classic oil-paint image filter over a reference rendering: the baseline brushes must beat", "canvas",
-       &OilFilterRenderer::params, [] { return std::make_unique<OilFilterRenderer>(); }},
-      {"tween", "super-realistic: views synthesised by warping sample images (rendered from the mesh, or photos) along control points",
-       "#d9dde3", &TweenRenderer::params, [] { return std::make_unique<TweenRenderer>(); }},
+      {.name = "default", .summary = "smooth-shaded, one light, textured where possible: the speed reference", .default_backdrop = "#d9dde3",
+       .params = &DefaultRenderer::params, .create = [] { return std::make_unique<DefaultRenderer>(); }},
+      {.name = "hidden-line", .summary = "silhouette, crease and open edges as lines, hidden parts removed, over paper", .default_backdrop = "paper",
+       .params = &HiddenLineRenderer::params, .create = [] { return std::make_unique<HiddenLineRenderer>(); }},
+      {.name = "comic", .summary = "banded N.L shading from a 1D shade map, thick outline from back faces in wide lines", .default_backdrop = "paper",
+       .params = [] { return ComicRenderer::params(false); }, .create = [] { return std::make_unique<ComicRenderer>(false); }},
+      {.name = "comic-extended", .summary = "2D shade map over (N.L, R.V) with a moving highlight band; fast CPU face orientation", .default_backdrop = "paper",
+       .params = [] { return ComicRenderer::params(true); }, .create = [] { return std::make_unique<ComicRenderer>(true); }},
+      {.name = "sketch-recursive", .summary = "silhouettes and creases drawn 1-4 times as wobbling hand-drawn lines that boil at 12 Hz", .default_backdrop = "paper",
+       .params = &RecursiveSketcher::params, .create = [] { return std::make_unique<RecursiveSketcher>(); },
+       .redraw_hz = kBoilHz},
+      {.name = "sketch-segments", .summary = "every outline edge drawn with one of a few pre-made sketchy lines, chosen anew 12 times a second", .default_backdrop = "paper",
+       .params = &SegmentSketcher::params, .create = [] { return std::make_unique<SegmentSketcher>(); },
+       .redraw_hz = kBoilHz},
+      {.name = "sketch-pencil", .summary = "graphite strokes with paper grain along every outline edge, fading in and out", .default_backdrop = "paper",
+       .params = [] { return TexturedSketcher::params(Medium::Pencil); }, .create = [] { return std::make_unique<TexturedSketcher>(Medium::Pencil); }},
+      {.name = "sketch-charcoal", .summary = "broad, crumbling charcoal strokes along every outline edge, fading in and out", .default_backdrop = "paper",
+       .params = [] { return TexturedSketcher::params(Medium::Charcoal); }, .create = [] { return std::make_unique<TexturedSketcher>(Medium::Charcoal); }},
+      {.name = "sketch-chalk", .summary = "dry white chalk strokes on a dark board", .default_backdrop = "#2e3b35",
+       .params = [] { return TexturedSketcher::params(Medium::Chalk); }, .create = [] { return std::make_unique<TexturedSketcher>(Medium::Chalk); }},
+      {.name = "hatching", .summary = "screen-space pencil hatching whose density follows the light; combine with an outline: hatching+sketch-pencil", .default_backdrop = "paper",
+       .params = &HatchingRenderer::params, .create = [] { return std::make_unique<HatchingRenderer>(); }},
+      {.name = "painterly", .summary = "textured brushes that drift over the object, seek it and take their paint from a reference rendering; style files", .default_backdrop = "canvas",
+       .params = &PainterlyRenderer::params, .create = [] { return std::make_unique<PainterlyRenderer>(); },
+       .redraw_hz = kBrushMotionHz, .in_effect = &painterly_settings_in_effect},
+      {.name = "oil-filter", .summary = "the classic oil-paint image filter over a reference rendering: the baseline brushes must beat", .default_backdrop = "canvas",
+       .params = &OilFilterRenderer::params, .create = [] { return std::make_unique<OilFilterRenderer>(); }},
+      {.name = "tween", .summary = "super-realistic: views synthesised by warping sample images (rendered from the mesh, or photos) along control points", .default_backdrop = "#d9dde3",
+       .params = &TweenRenderer::params, .create = [] { return std::make_unique<TweenRenderer>(); }},
   };
   return all;
 }
@@ -133,6 +140,30 @@ std::unique_ptr<Renderer> make_renderer(const std::string& name, const std::vect
   }
   if (parts.size() == 1) return std::move(parts.front());
   return std::make_unique<CompositeRenderer>(std::move(parts), std::move(params));
+}
+
+std::map<std::string, std::string> style_settings_in_effect(const std::string& name, const std::vector<std::string>& assignments) {
+  const std::vector<std::string> names = split_parts(name);
+  const std::vector<StyleParams> params = style_params(name, assignments);
+  std::map<std::string, std::string> values;
+  for (size_t i = 0; i < names.size(); ++i) {
+    const StyleInfo& info = find_style(names[i]);
+    std::map<std::string, std::string> part = info.in_effect ? info.in_effect(params[i]) : params[i].values();
+    values.merge(part);  // a name the parts share: the first part's value, as style_param_specs describes it
+  }
+  return values;
+}
+
+double style_redraw_hz(const std::string& name) {
+  double hz = 0.0;
+  for (const std::string& part : split_parts(name)) hz = std::max(hz, find_style(part).redraw_hz);
+  return hz;
+}
+
+std::vector<std::string> style_names() {
+  std::vector<std::string> names;
+  for (const StyleInfo& s : styles()) names.push_back(s.name);
+  return names;
 }
 
 std::string default_backdrop(const std::string& name) { return find_style(split_parts(name).front()).default_backdrop; }

@@ -2,6 +2,7 @@
 // Every registered style: its name, a one-line summary, its parameters with defaults, and how
 // to make its renderer. `inkwire-render --style list` prints this table.
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -16,6 +17,12 @@ struct StyleInfo {
   std::string default_backdrop;  // what --backdrop means when not given
   std::function<std::vector<ParamSpec>()> params;
   std::function<std::unique_ptr<Renderer>()> create;
+  // How often the picture changes on its own when nothing else does (boiling lines, drifting
+  // brushes); 0: a still object is a still picture, so a window need not redraw it.
+  double redraw_hz = 0.0;
+  // The values a configuration really uses where a parameter says "0 takes the style file's"
+  // (painterly): null when every value is used as given.
+  std::function<std::map<std::string, std::string>(const StyleParams&)> in_effect = nullptr;
 };
 
 const std::vector<StyleInfo>& styles();
@@ -36,6 +43,16 @@ std::vector<StyleParams> style_params(const std::string& name, const std::vector
 // one parameter, set in all of them, described by the first). Throws inkwire::Error for an
 // unknown style.
 std::vector<ParamSpec> style_param_specs(const std::string& name);
+
+// Every parameter's value in effect for `name` (joined styles too) configured by `assignments`:
+// defaults, then the assignments, then what placeholders stand for. Throws as style_params().
+std::map<std::string, std::string> style_settings_in_effect(const std::string& name, const std::vector<std::string>& assignments);
+
+// The rate at which a style (the fastest of a joined style's parts) changes a still picture.
+double style_redraw_hz(const std::string& name);
+
+// The registered style names, for parameters that name another style (a painting's reference).
+std::vector<std::string> style_names();
 
 // The backdrop a style (or the first style of a combination) is drawn over by default.
 std::string default_backdrop(const std::string& name);

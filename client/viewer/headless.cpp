@@ -4,11 +4,10 @@
 #include <iostream>
 #include <thread>
 
-#include <nlohmann/json.hpp>
-
 #include "client/gl/canvas.hpp"
 #include "client/gl/context.hpp"
 #include "client/output/frame_writer.hpp"
+#include "client/viewer/frame_log.hpp"
 #include "client/viewer/session_sync.hpp"
 #include "client/viewer/viewer.hpp"
 #include "common/error.hpp"
@@ -19,7 +18,7 @@ int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& 
   if (o.frames <= 0) throw Error("--headless needs --frames N (1..100000)");
   if (o.out.empty()) throw Error("--headless needs --out PATH");
   auto context = create_offscreen_context(o.size.x, o.size.y, o.gl);
-  Canvas canvas(o.size.x, o.size.y, 4);
+  Canvas canvas(o.size.x, o.size.y, o.msaa);
   SessionSync sync(client, cache);
   FrameWriter writer(o.out, o.frames, o.fps, false);
   std::ofstream log;
@@ -42,18 +41,7 @@ int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& 
     canvas.bind();
     sync.view().draw(o.size, double(i) / o.fps, i);
     writer.write(canvas.read());
-    if (log) {
-      // steady_clock is CLOCK_MONOTONIC: comparable across processes on this machine.
-      const auto now_us = std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
-      nlohmann::json line = {{"frame", i}, {"revision", sync.view().revision()}, {"style", sync.view().style()}, {"monotonic_us", now_us}};
-      if (const TurntableView* t = sync.view().turntable())
-        line["product"] = {{"azimuth", sync.view().orbit().azimuth}, {"samples_loaded", t->samples_loaded()},
-                           {"cells_loaded", t->cells_loaded()}, {"bytes_sent", client.bytes_sent()},
-                           {"bytes_received", client.bytes_received()}};
-      if (const auto expression = sync.view().expression())
-        line["expression"] = {{"name", name_of(expression->expression)}, {"intensity", expression->intensity}};
-      log << line.dump() << "\n" << std::flush;
-    }
+    if (log) log << frame_log_line(sync, client, i).dump() << "\n" << std::flush;
     tick += period;
     std::this_thread::sleep_until(tick);
   }

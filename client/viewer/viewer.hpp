@@ -16,8 +16,9 @@ struct ViewerOptions {
   int frames = 0;            // headless: frames to render
   int fps = 24;              // frames per second, paced in real time so changes show as they come
   std::string out;           // headless: PNG, %04d pattern or .mp4
-  std::string frame_log;     // optional JSON lines: one per frame with the revision it shows
+  std::string frame_log;     // optional JSON lines: one per frame drawn, with the revision it shows
   std::string gl = "osmesa"; // headless GL backend
+  int msaa = 4;              // multisamples per pixel: antialiased edges (1 = off)
   // Turntable sessions: the visitor's own first view (azimuth, elevation in degrees); headless,
   // the view then turns a full circle over the frames. Nothing of it is sent.
   float azimuth = 0.0f, elevation = 0.0f;

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <gtest/gtest.h>
 
+#include "client/render/painterly/paint_style.hpp"
 #include "client/render/styles.hpp"
 #include "common/error.hpp"
 #include "common/style_params.hpp"
@@ -69,4 +70,32 @@ TEST(StyleParamsTest, AJoinedStyleListsEveryPartsParametersOnce) {
   for (const auto* part : {&hatching, &pencil})
     for (const std::string& name : *part) EXPECT_EQ(std::count(joined.begin(), joined.end(), name), 1) << name;
   EXPECT_EQ(test::error_of([] { style_param_specs("hatching+no-such-style"); }).find("unknown style 'no-such-style'"), 0u);
+}
+
+// What a panel shows: the values a style really uses, never "0 takes the style file's".
+TEST(StyleSettingsInEffectTest, PainterlyPlaceholdersShowTheStyleFilesValues) {
+  const PaintStyle pointillist = load_paint_style("pointillist");
+  const auto values = style_settings_in_effect("painterly", {"style=pointillist"});
+  EXPECT_EQ(values.at("brushes"), std::to_string(pointillist.brushes));
+  EXPECT_NE(values.at("brushes"), "0");
+  EXPECT_NE(values.at("ttl"), "0");
+  EXPECT_NE(values.at("underpaint"), "-1");
+  EXPECT_NE(values.at("palette"), "style");
+  // A value the user set wins over the file's.
+  EXPECT_EQ(style_settings_in_effect("painterly", {"style=pointillist", "brushes=123"}).at("brushes"), "123");
+}
+
+TEST(StyleSettingsInEffectTest, JoinedStylesListEveryPartsValuesAndRefuseUnknownKeys) {
+  const auto values = style_settings_in_effect("hatching+sketch-pencil", {"variant=multipass"});
+  EXPECT_EQ(values.at("variant"), "multipass");
+  EXPECT_TRUE(values.count("texture_length")) << "the pencil outline's parameters are listed too";
+  EXPECT_THROW(style_settings_in_effect("comic", {"no_such_key=1"}), Error);
+}
+
+TEST(StyleRedrawRateTest, StillStylesNeedNoRedrawAndAnimatedOnesTheirRate) {
+  EXPECT_EQ(style_redraw_hz("comic"), 0.0);
+  EXPECT_EQ(style_redraw_hz("tween"), 0.0);
+  EXPECT_GT(style_redraw_hz("sketch-recursive"), 0.0);
+  EXPECT_GT(style_redraw_hz("painterly"), 0.0);
+  EXPECT_EQ(style_redraw_hz("hatching+sketch-segments"), style_redraw_hz("sketch-segments"));
 }

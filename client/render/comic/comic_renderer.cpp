@@ -48,7 +48,7 @@ ComicRenderer::ComicRenderer(bool extended)
 std::vector<ParamSpec> ComicRenderer::params(bool extended) {
   return {
       choice_param("shade_map", "comic", shade_map_names(), "generated shade map"),
-      text_param("shade_file", "", "shade map image (x: N.L, up: R.V; 128 = own colour, 255 = white); overrides shade_map"),
+      file_param("shade_file", "", "shade map image (x: N.L, up: R.V; 128 = own colour, 255 = white); overrides shade_map"),
       bool_param("shade_smooth", "false", "filter a loaded shade map linearly instead of keeping hard bands"),
       int_param("bands", "3", 1, 16, "diffuse bands of the 'comic', 'lines' and 'warm-cool' maps"),
       text_param("band_edges", "", "N.L where bands change, comma-separated (empty: equal bands)"),

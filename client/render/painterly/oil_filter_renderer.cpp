@@ -13,7 +13,7 @@ OilFilterRenderer::OilFilterRenderer()
 
 std::vector<ParamSpec> OilFilterRenderer::params() {
   return {
-      text_param("reference", "default", "the renderer whose picture is filtered (default, comic-extended, ...)"),
+      text_param("reference", "default", "the style whose picture is filtered", {"default", "comic", "comic-extended", "hidden-line"}),
       int_param("radius", "5", 1, 64, "window radius: (2r+1)^2 pixels; 5 matches the study's 10x10 window"),
       int_param("levels", "20", 2, 256, "intensity bins"),
   };

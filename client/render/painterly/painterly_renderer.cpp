@@ -1,19 +1,48 @@
 #include "client/render/painterly/painterly_renderer.hpp"
 
 #include <algorithm>
+#include <cstdio>
 
+#include "client/render/styles.hpp"
 
 namespace inkwire {
 
 PainterlyRenderer::PainterlyRenderer() = default;
+
+namespace {
+
+// A painting's reference is any style that draws the object itself (not another painting).
+std::vector<std::string> reference_styles() {
+  std::vector<std::string> names = style_names();
+  std::erase_if(names, [](const std::string& n) { return n == "painterly" || n == "oil-filter" || n == "tween"; });
+  return names;
+}
+
+const char* orientation_name(OrientationKind kind) {
+  switch (kind) {
+    case OrientationKind::Random: return "random";
+    case OrientationKind::Constant: return "constant";
+    case OrientationKind::Circular: return "circular";
+    case OrientationKind::Gradient: break;
+  }
+  return "gradient";
+}
+
+std::string number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
+}  // namespace
 
 std::vector<ParamSpec> PainterlyRenderer::params() {
   std::vector<std::string> palettes = {"style"};
   for (const std::string& p : palette_kind_names())
     if (p != "lookup") palettes.push_back(p);  // a lookup needs its image: style files only
   return {
-      text_param("style", "impressionist", "a shipped painting style (impressionist, pointillist, watercolour, neon, sepia-study) or a style file (.json)"),
-      text_param("reference", "default", "the renderer whose picture is painted (default, comic-extended, ...)"),
+      file_param("style", "impressionist", "a shipped painting style or a style file (.json)", shipped_paint_styles()),
+      text_param("reference", "default", "the style whose picture is painted", reference_styles()),
       int_param("brushes", "0", 0, 100000, "number of brushes; 0 takes the style's"),
       float_param("coverage", "0", 0, 0.999, "share of the object the brushes cover between them; 0 takes the style's"),
       choice_param("palette", "style", palettes, "paint colours; 'style' takes the style's"),
@@ -43,6 +72,20 @@ PaintStyle paint_style_from_params(const StyleParams& p) {
   style.motion.randomise_ttl = p.get_bool("randomise_ttl");
   if (const float u = p.get_float("underpaint"); u >= 0) style.underpaint = u;
   return style;
+}
+
+std::map<std::string, std::string> painterly_settings_in_effect(const StyleParams& p) {
+  const PaintStyle style = paint_style_from_params(p);
+  std::map<std::string, std::string> values = p.values();
+  values["brushes"] = std::to_string(style.brushes);
+  values["coverage"] = number(style.coverage);
+  values["palette"] = palette_kind_names()[size_t(style.palette.kind)];
+  values["shades"] = std::to_string(style.palette.shades);
+  values["orientation"] = orientation_name(style.orientation.kind);
+  values["angle"] = number(style.orientation.angle_degrees);
+  values["ttl"] = std::to_string(style.motion.time_to_live);
+  values["underpaint"] = number(style.underpaint);
+  return values;
 }
 
 void PainterlyRenderer::configure(const StyleParams& p) {

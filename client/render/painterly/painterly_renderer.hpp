@@ -33,5 +33,7 @@ class PainterlyRenderer final : public Renderer {
 
 // The style file named by `params` ("style") with the parameters set there applied over it.
 PaintStyle paint_style_from_params(const StyleParams& params);
+// Every parameter's value as the painting uses it: "0 takes the style's" shows the style's.
+std::map<std::string, std::string> painterly_settings_in_effect(const StyleParams& params);
 
 }  // namespace inkwire

@@ -79,7 +79,7 @@ std::vector<ParamSpec> SketchEdgeSource::params(bool fade_by_default) {
   return {
       float_param("min_length", "0.01", 0, 1, "importance: edges shorter than this fraction of the bounding-box diagonal..."),
       float_param("max_angle", "12", 0, 180, "importance: ...and flatter than this many degrees are never drawn"),
-      text_param("flagged_edges", "", "file of vertex-index pairs: edges always drawn"),
+      file_param("flagged_edges", "", "file of vertex-index pairs: edges always drawn"),
       float_param("crease_degrees", "50", 0, 180, "draw creases sharper than this"),
       bool_param("fade", fade_by_default ? "true" : "false", "fade edges in and out near the silhouette instead of popping"),
       float_param("fade_degrees", "5", 0.1, 45, "fading range"),

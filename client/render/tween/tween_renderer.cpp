@@ -38,7 +38,7 @@ std::vector<ParamSpec> TweenRenderer::params() {
       int_param("sphere_level", "2", 0, 3, "geodesic sphere subdivisions for trilinear (0: 12 samples, 1: 42, 2: 162)"),
       int_param("points", "65", 3, 2000, "control points per sample pair or triangle"),
       int_param("sample_size", "256", 32, 2048, "sample images are this many pixels square"),
-      text_param("sample_style", "default", "the style the samples are rendered in"),
+      text_param("sample_style", "default", "the style the samples are rendered in", {"default", "comic", "comic-extended", "hidden-line", "hatching"}),
       choice_param("compose", "matte", {"matte", "sum"},
                    "matte: one outline where the warped samples' mattes agree (no ghosted edge); sum: the plain weighted sum"),
   };

@@ -1,0 +1,19 @@
+#include "client/viewer/frame_log.hpp"
+
+#include <chrono>
+
+namespace inkwire {
+
+nlohmann::json frame_log_line(SessionSync& sync, const SessionClient& client, long frame) {
+  const auto now_us = std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  nlohmann::json line = {{"frame", frame}, {"revision", sync.view().revision()}, {"style", sync.view().style()}, {"monotonic_us", now_us}};
+  if (const TurntableView* t = sync.view().turntable())
+    line["product"] = {{"azimuth", sync.view().orbit().azimuth}, {"samples_loaded", t->samples_loaded()},
+                       {"cells_loaded", t->cells_loaded()}, {"bytes_sent", client.bytes_sent()},
+                       {"bytes_received", client.bytes_received()}};
+  if (const auto expression = sync.view().expression())
+    line["expression"] = {{"name", name_of(expression->expression)}, {"intensity", expression->intensity}};
+  return line;
+}
+
+}  // namespace inkwire

@@ -1,0 +1,94 @@
+#include "client/viewer/window_input.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+#include <imgui.h>
+
+#include "client/viewer/session_view.hpp"
+
+namespace inkwire {
+
+void Orbit::from(const protocol::CameraPose& pose) {
+  const glm::vec3 d = pose.position - pose.target;
+  distance = glm::length(d) / kSceneDiagonal;
+  elevation = glm::degrees(std::asin(std::clamp(d.y / std::max(glm::length(d), 1e-6f), -1.0f, 1.0f)));
+  azimuth = glm::degrees(std::atan2(d.x, d.z));
+}
+
+void Inertia::follow(Orbit& orbit, double dt) {
+  if (dt <= 0.0) return;
+  if (orbit.dragging) {
+    const float v = float((orbit.azimuth - last_azimuth) / dt);
+    velocity = was_dragging ? 0.7f * velocity + 0.3f * v : 0.0f;
+  } else if (std::abs(velocity) > 2.0f) {
+    orbit.azimuth += velocity * float(dt);
+    velocity *= float(std::exp(-dt / 0.4));
+  } else {
+    velocity = 0.0f;
+  }
+  was_dragging = orbit.dragging;
+  last_azimuth = orbit.azimuth;
+}
+
+namespace {
+
+WindowInput& input_of(GLFWwindow* w) { return *static_cast<WindowInput*>(glfwGetWindowUserPointer(w)); }
+
+void on_key(GLFWwindow* w, int key, int, int action, int mods) {
+  WindowInput& in = input_of(w);
+  ++in.events;
+  // Keys typed into the panel's fields are the panel's.
+  if ((action != GLFW_PRESS && action != GLFW_REPEAT) || ImGui::GetIO().WantTextInput) return;
+  switch (key) {
+    case GLFW_KEY_TAB: in.style_step += (mods & GLFW_MOD_SHIFT) ? -1 : 1; break;
+    case GLFW_KEY_RIGHT: ++in.view_step_x; break;
+    case GLFW_KEY_LEFT: --in.view_step_x; break;
+    case GLFW_KEY_UP: ++in.view_step_y; break;
+    case GLFW_KEY_DOWN: --in.view_step_y; break;
+    default: break;
+  }
+}
+
+}  // namespace
+
+void WindowInput::attach(GLFWwindow* window) {
+  glfwSetWindowUserPointer(window, this);
+  glfwSetKeyCallback(window, on_key);
+  glfwSetCharCallback(window, [](GLFWwindow* w, unsigned) { ++input_of(w).events; });
+  glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int button, int action, int) {
+    WindowInput& in = input_of(w);
+    ++in.events;
+    if (button != GLFW_MOUSE_BUTTON_LEFT) return;
+    if (action == GLFW_PRESS && ImGui::GetIO().WantCaptureMouse) return;  // a click on the panel
+    in.orbit.dragging = action == GLFW_PRESS;
+    glfwGetCursorPos(w, &in.orbit.last_x, &in.orbit.last_y);
+  });
+  glfwSetCursorPosCallback(window, [](GLFWwindow* w, double x, double y) {
+    WindowInput& in = input_of(w);
+    ++in.events;
+    Orbit& o = in.orbit;
+    if (!o.dragging) return;
+    o.azimuth -= float(x - o.last_x) * 0.4f;
+    o.elevation = std::clamp(o.elevation + float(y - o.last_y) * 0.4f, -85.0f, 85.0f);
+    o.last_x = x, o.last_y = y;
+    o.changed = true;
+  });
+  glfwSetScrollCallback(window, [](GLFWwindow* w, double, double dy) {
+    WindowInput& in = input_of(w);
+    ++in.events;
+    if (ImGui::GetIO().WantCaptureMouse) return;
+    in.orbit.distance = std::clamp(in.orbit.distance * float(std::pow(0.9, dy)), 0.25f, 20.0f);
+    in.orbit.changed = true;
+  });
+  glfwSetCursorEnterCallback(window, [](GLFWwindow* w, int) { ++input_of(w).events; });
+  glfwSetWindowFocusCallback(window, [](GLFWwindow* w, int) { ++input_of(w).events; });
+  glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) { ++input_of(w).events; });
+  glfwSetWindowRefreshCallback(window, [](GLFWwindow* w) { ++input_of(w).events; });
+}
+
+}  // namespace inkwire

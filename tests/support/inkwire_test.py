@@ -1,0 +1,90 @@
+"""What the Python end-to-end tests share (browser, window): a skip with a message, checks that
+print one line each and a closing 'N passed, N failed', a real inkwire-server on 127.0.0.1 (its
+TCP and HTTP ports read from its log), images read through oiiotool, and PSNR."""
+import json
+import math
+import os
+import subprocess
+import sys
+import time
+
+
+def skip(reason):
+    print(f"SKIPPED: {reason}")
+    sys.exit(0)
+
+
+class Checks:
+    def __init__(self):
+        self.failures, self.count = [], 0
+
+    def check(self, ok, what):
+        print(("ok: " if ok else "FAILED: ") + what)
+        self.count += 1
+        if not ok:
+            self.failures.append(what)
+
+    def finish(self):
+        print(f"{self.count - len(self.failures)} passed, {len(self.failures)} failed")
+        sys.exit(1 if self.failures else 0)
+
+
+class Server:
+    """inkwire-server on free ports with `config` (JSON) and its data in `data`."""
+
+    def __init__(self, bin_dir, out, data, config, name="server"):
+        path = os.path.join(out, f"{name}.json")
+        with open(path, "w") as f:
+            json.dump(config, f)
+        self.log = open(os.path.join(out, f"{name}.log"), "w+")
+        self.process = subprocess.Popen([f"{bin_dir}/inkwire-server", "--listen", "127.0.0.1:0", "--data", data, "--config", path],
+                                        stderr=self.log)
+        self.tcp = self.http = 0
+        for _ in range(300):
+            for event in self.events():
+                if event.get("event") == "listening":
+                    self.tcp = event["port"]
+                if event.get("event") == "http-listening":
+                    self.http = event["port"]
+            if self.tcp and (self.http or "http" not in config):
+                return
+            time.sleep(0.1)
+        raise SystemExit(f"the server did not start: {self.text()}")
+
+    def events(self):
+        self.log.seek(0)
+        return [json.loads(line) for line in self.log if line.startswith("{")]
+
+    def text(self):
+        self.log.seek(0)
+        return self.log.read()
+
+    def stop(self):
+        self.process.terminate()
+        self.process.wait(timeout=10)
+
+
+def read_image(path, scratch):
+    """(width, height, RGB bytes top row first) of an image, through OpenImageIO's oiiotool
+    (Debian's openimageio-tools) writing an uncompressed TGA that a few lines can read."""
+    tga_path = os.path.join(scratch, "tmp.tga")
+    subprocess.run(["oiiotool", path, "--ch", "R,G,B", "-d", "uint8", "-o", tga_path], check=True)
+    with open(tga_path, "rb") as f:
+        tga = f.read()
+    width, height = tga[12] | tga[13] << 8, tga[14] | tga[15] << 8
+    pixels = tga[18 + tga[0]:18 + tga[0] + width * height * 3]
+    rows = [pixels[y * width * 3:(y + 1) * width * 3] for y in range(height)]
+    if not tga[17] & 0x20:  # stored bottom-up
+        rows.reverse()
+    rgb = bytearray()
+    for row in rows:  # BGR -> RGB
+        for x in range(width):
+            rgb += bytes((row[3 * x + 2], row[3 * x + 1], row[3 * x]))
+    return width, height, bytes(rgb)
+
+
+def psnr(a, b):
+    if a[0] != b[0] or a[1] != b[1]:
+        return 0.0
+    se = sum((x - y) ** 2 for x, y in zip(a[2], b[2]))
+    return 99.0 if se == 0 else 10 * math.log10(255 * 255 / (se / len(a[2])))

@@ -1,0 +1,116 @@
+"""The windowed client as a person meets it, under a display (xvfb-run in CI): a real server, a
+real GLFW window on llvmpipe, real key presses (xdotool, through the X server's XTEST) and the
+screen grabbed by ffmpeg's x11grab. Checks that Tab and Shift-Tab switch the style on screen,
+that an arrow key turns the view, that the docked panel covers at most 35% of a 640x480 window
+by default, and that an idle window of a still style uses under 5% of a core over 5 s.
+
+Usage: client_window_test.py BIN_DIR OUT_DIR   (skips with a message without a display,
+xdotool or ffmpeg)."""
+import json
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from inkwire_test import Checks, Server, psnr, read_image, skip  # noqa: E402
+
+BIN, OUT = sys.argv[1], sys.argv[2]
+if not os.environ.get("DISPLAY"):
+    skip("no DISPLAY: run under xvfb-run (scripts/test.sh does)")
+for tool in ("xdotool", "ffmpeg", "oiiotool"):
+    if not shutil.which(tool):
+        skip(f"{tool} is missing (scripts/setup.sh installs it)")
+shutil.rmtree(OUT, ignore_errors=True)
+os.makedirs(OUT)
+MESH = os.path.join(BIN, "..", "packaged-data", "data", "meshes", "cow.off")
+WIDTH, HEIGHT = 640, 480
+
+
+def log_lines(path):
+    with open(path) as f:
+        return [json.loads(line) for line in f if line.strip()]
+
+
+def wait_for(predicate, seconds, what):
+    end = time.time() + seconds
+    while time.time() < end:
+        value = predicate()
+        if value:
+            return value
+        time.sleep(0.2)
+    raise SystemExit(f"timed out waiting for {what}")
+
+
+def cpu_seconds(pid):
+    with open(f"/proc/{pid}/stat") as f:
+        fields = f.read().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
+def grab(name):
+    """The window's picture as the screen shows it (the window sits at the screen's corner)."""
+    path = os.path.join(OUT, name)
+    subprocess.run(["ffmpeg", "-loglevel", "error", "-y", "-f", "x11grab", "-video_size", f"{WIDTH}x{HEIGHT}",
+                    "-i", os.environ["DISPLAY"] + "+0,0", "-frames:v", "1", path], check=True)
+    return read_image(path, OUT)
+
+
+def key(*keys):
+    subprocess.run(["xdotool", "key", "--delay", "50", *keys], check=True)
+
+
+checks = Checks()
+config = {"sessions": [{"name": "look", "kind": "scene", "style": "comic",
+                        "assets": [{"path": os.path.abspath(MESH), "kind": "mesh"}]}]}
+server = Server(BIN, OUT, os.path.join(OUT, "data"), config)
+frame_log = os.path.join(OUT, "frames.jsonl")
+env = dict(os.environ, XDG_CONFIG_HOME=os.path.join(OUT, "config"))  # the panel's first-run state
+client_log = open(os.path.join(OUT, "client.log"), "w")
+client = subprocess.Popen([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{server.tcp}", "--session", "look",
+                           "--size", f"{WIDTH}x{HEIGHT}", "--cache", os.path.join(OUT, "cache"), "--frame-log", frame_log],
+                          stderr=client_log, env=env)
+try:
+    wait_for(lambda: os.path.exists(frame_log) and any(line["style"] == "comic" for line in log_lines(frame_log)), 60, "the first frame")
+    subprocess.run(["xdotool", "mousemove", "5", "5"], check=True)  # over the picture, not the panel
+    time.sleep(1.0)
+    first = log_lines(frame_log)[-1]
+    panel, window = first["panel"], first["window"]
+    share = panel["width"] * panel["height"] / (window[0] * window[1])
+    checks.check(window == [WIDTH, HEIGHT], f"the window is {WIDTH}x{HEIGHT} ({window})")
+    checks.check(0 < share <= 0.35 and not panel["folded"], f"the panel covers {share:.1%} of the window by default (<= 35%)")
+    checks.check(panel["x"] + panel["width"] >= WIDTH - 1, f"the panel is docked to the right edge (x {panel['x']}, width {panel['width']})")
+    comic = grab("1-comic.png")
+
+    # Idle: a still style, nothing moving, nobody typing.
+    time.sleep(1.0)
+    frames_before, cpu_before = len(log_lines(frame_log)), cpu_seconds(client.pid)
+    time.sleep(5.0)
+    idle_cpu = (cpu_seconds(client.pid) - cpu_before) / 5.0
+    idle_frames = len(log_lines(frame_log)) - frames_before
+    checks.check(idle_cpu < 0.05, f"an idle window uses {idle_cpu:.1%} of a core over 5 s (< 5%), drawing {idle_frames} frames")
+
+    key("Tab")
+    after_tab = wait_for(lambda: [line for line in log_lines(frame_log) if line["style"] != "comic"], 10, "a style change after Tab")[-1]
+    checks.check(after_tab["style"] == "comic-extended", f"Tab switches to the next style (comic -> {after_tab['style']})")
+    time.sleep(1.0)
+    extended = grab("2-after-tab.png")
+    checks.check(psnr(comic, extended) < 40, f"the picture on screen changes after Tab (PSNR {psnr(comic, extended):.1f} dB against before, < 40)")
+
+    key("shift+Tab")
+    back = wait_for(lambda: [line for line in log_lines(frame_log)[-3:] if line["style"] == "comic"], 10, "a style change after Shift-Tab")[-1]
+    checks.check(back["style"] == "comic", "Shift-Tab switches back to the previous style")
+    time.sleep(1.0)
+    again = grab("3-after-shift-tab.png")
+    checks.check(psnr(comic, again) > 30, f"back in the first style the picture is the first one again (PSNR {psnr(comic, again):.1f} dB, > 30)")
+
+    key("Right", "Right")
+    time.sleep(1.5)
+    turned = grab("4-after-right.png")
+    checks.check(psnr(again, turned) < 30, f"two Right arrows turn the view (PSNR {psnr(again, turned):.1f} dB against before, < 30)")
+finally:
+    client.terminate()
+    client.wait(timeout=10)
+    server.stop()
+checks.finish()
