@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cstring>
 
-#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "common/error.hpp"
@@ -49,13 +49,31 @@ Image load_image(const std::filesystem::path& file) {
 }
 
 Image load_image_from_memory(std::span<const uint8_t> encoded, const std::string& name) {
-  // OpenImageIO picks the format from the name's extension, then from the bytes' magic numbers.
-  OIIO::Filesystem::IOMemReader reader(const_cast<uint8_t*>(encoded.data()), encoded.size());
-  OIIO::ImageSpec config;
-  config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &reader);
-  auto in = OIIO::ImageInput::open(name, &config);
-  if (!in) throw Error(name + ": " + OIIO::geterror());
-  return read_all(*in, name);
+  // OpenCV decodes from memory by the bytes' magic number (PNG, JPEG, BMP, ...); OpenImageIO's
+  // memory readers do not work for every format in the packaged build.
+  if (encoded.empty()) throw Error(name + ": no image bytes");
+  const cv::Mat bytes(1, int(std::min<size_t>(encoded.size(), INT32_MAX)), CV_8U, const_cast<uint8_t*>(encoded.data()));
+  cv::Mat decoded;
+  try {
+    decoded = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
+  } catch (const cv::Exception&) {  // decoders throw on some malformed data instead of failing
+  }
+  if (decoded.empty()) throw Error(name + ": not an image in a format that can be read (PNG, JPEG, BMP, ...)");
+  if (decoded.cols > kMaxImageSide || decoded.rows > kMaxImageSide)
+    throw Error(name + ": image size " + std::to_string(decoded.cols) + "x" + std::to_string(decoded.rows) + " is outside 1.." +
+                std::to_string(kMaxImageSide));
+  if (decoded.depth() == CV_16U) decoded.convertTo(decoded, CV_8U, 1.0 / 257.0);
+  if (decoded.depth() != CV_8U) throw Error(name + ": image samples are not 8 or 16 bits");
+  cv::Mat rgba;
+  switch (decoded.channels()) {
+    case 1: cv::cvtColor(decoded, rgba, cv::COLOR_GRAY2RGBA); break;
+    case 3: cv::cvtColor(decoded, rgba, cv::COLOR_BGR2RGBA); break;
+    case 4: cv::cvtColor(decoded, rgba, cv::COLOR_BGRA2RGBA); break;
+    default: throw Error(name + ": image has an unsupported channel count");
+  }
+  Image img(rgba.cols, rgba.rows);
+  for (int y = 0; y < rgba.rows; ++y) std::memcpy(&img.pixels[size_t(y) * rgba.cols * 4], rgba.ptr(y), size_t(rgba.cols) * 4);
+  return img;
 }
 
 void save_image(const Image& image, const std::filesystem::path& file, bool keep_alpha) {

@@ -43,6 +43,40 @@ struct PositionHash {
   }
 };
 
+std::string lower_case(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return text;
+}
+
+// `path` itself, else the file in its folder whose name differs only in letter case.
+std::optional<std::filesystem::path> existing_file_any_case(const std::filesystem::path& path) {
+  if (std::filesystem::is_regular_file(path)) return path;
+  std::error_code error;
+  const std::string wanted = lower_case(path.filename().string());
+  for (const auto& entry : std::filesystem::directory_iterator(path.parent_path(), error))
+    if (entry.is_regular_file(error) && lower_case(entry.path().filename().string()) == wanted) return entry.path();
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::filesystem::path> find_texture_file(const std::filesystem::path& model, const std::string& ref) {
+  if (ref.empty() || ref[0] == '*') return std::nullopt;
+  // Files written on Windows name textures with backslashes (".\jeep1.jpg"), from a root
+  // that means the model's own folder ("\..\LWO\earth.jpg"), in any letter case, or with the
+  // author's own folders ("C:\models\tex.png"): read the name as written, relative to the
+  // model, else the file of that name beside the model (where its texture travels with it).
+  std::string portable = ref;
+  std::replace(portable.begin(), portable.end(), '\\', '/');
+  portable.erase(0, portable.find_first_not_of('/'));
+  const std::filesystem::path folder = model.parent_path();
+  for (const std::filesystem::path& path : {folder / portable, folder / std::filesystem::path(portable).filename()})
+    if (std::optional<std::filesystem::path> found = existing_file_any_case(path.lexically_normal())) return found;
+  return std::nullopt;
+}
+
+namespace {
+
 class MeshBuilder {
  public:
   MeshBuilder(const aiScene& scene, const std::filesystem::path& file, ImportReport& report)
@@ -98,35 +132,7 @@ class MeshBuilder {
       }
       return;  // uncompressed embedded texels are rare; such materials render untextured
     }
-    if (ref.empty() || ref[0] == '*') return;
-    // Files written on Windows name textures with backslashes (".\jeep1.jpg"), from a root
-    // that means the model's own folder ("\..\LWO\earth.jpg"), in any letter case, or with the
-    // author's own folders ("C:\models\tex.png"): read the name as written, relative to the
-    // model, else the file of that name beside the model (where its texture travels with it).
-    std::string portable = ref;
-    std::replace(portable.begin(), portable.end(), '\\', '/');
-    portable.erase(0, portable.find_first_not_of('/'));
-    const std::filesystem::path folder = file_.parent_path();
-    for (const std::filesystem::path& path : {folder / portable, folder / std::filesystem::path(portable).filename()})
-      if (const std::optional<std::filesystem::path> found = existing_file_any_case(path.lexically_normal())) {
-        mat.texture_file = *found;
-        return;
-      }
-  }
-
-  // `path` itself, else the file in its folder whose name differs only in letter case.
-  static std::optional<std::filesystem::path> existing_file_any_case(const std::filesystem::path& path) {
-    if (std::filesystem::is_regular_file(path)) return path;
-    std::error_code error;
-    const std::string wanted = lower_case(path.filename().string());
-    for (const auto& entry : std::filesystem::directory_iterator(path.parent_path(), error))
-      if (entry.is_regular_file(error) && lower_case(entry.path().filename().string()) == wanted) return entry.path();
-    return std::nullopt;
-  }
-
-  static std::string lower_case(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return text;
+    if (const std::optional<std::filesystem::path> found = find_texture_file(file_, ref)) mat.texture_file = *found;
   }
 
   uint32_t weld(const glm::vec3& p) {
@@ -252,6 +258,7 @@ void listen_to_assimp() {
 
 Mesh load_mesh(const std::filesystem::path& file, ImportReport* report_out) {
   std::error_code ec;
+  if (std::filesystem::is_directory(file, ec)) throw Error(file.string() + ": is a folder, not a model file");
   if (!std::filesystem::is_regular_file(file, ec)) throw Error(file.string() + ": no such file");
   const uintmax_t bytes = std::filesystem::file_size(file, ec);
   if (ec) throw Error(file.string() + ": cannot read file size");

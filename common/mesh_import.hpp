@@ -3,6 +3,8 @@
 // more), flattening the node hierarchy, triangulating polygons and welding equal positions so
 // the topology is real. Bad files end in inkwire::Error with a one-line reason.
 #include <filesystem>
+#include <optional>
+#include <string>
 
 #include "common/mesh.hpp"
 
@@ -18,5 +20,9 @@ struct ImportReport {
 inline constexpr uintmax_t kMaxMeshFileBytes = 1ull << 30;
 
 Mesh load_mesh(const std::filesystem::path& file, ImportReport* report = nullptr);
+
+// The file a model's texture reference `ref` names (as written relative to the model, else by
+// its name beside the model, in any letter case); none for embedded ("*0") or missing ones.
+std::optional<std::filesystem::path> find_texture_file(const std::filesystem::path& model, const std::string& ref);
 
 }  // namespace inkwire

@@ -107,6 +107,7 @@ fs::path AssetStore::asset_path(const protocol::Hash& hash) const { return dir_ 
 
 AssetAnnounce AssetStore::add_file(const fs::path& source, protocol::AssetKind kind, std::string name) {
   std::error_code ec;
+  if (fs::is_directory(source, ec)) throw Error("asset '" + source.string() + "' is a folder, not a file");
   const auto size = fs::file_size(source, ec);
   if (ec) throw Error("cannot read asset '" + source.string() + "': " + ec.message());
   if (size > protocol::kMaxAssetBytes) throw Error("asset '" + source.string() + "' is larger than 1 GiB");

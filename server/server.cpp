@@ -6,6 +6,7 @@
 #include "common/error.hpp"
 #include "common/face/landmarks_file.hpp"
 #include "common/log.hpp"
+#include "common/model_bundle.hpp"
 #include "server/connection.hpp"
 #include "server/face/face_feed.hpp"
 #include "server/products/product_store.hpp"
@@ -25,11 +26,23 @@ asio::ip::tcp::endpoint endpoint_of(const ServerConfig& config) {
   return {address, config.port};
 }
 
+// A mesh travels as one file: a model of several files (glTF with .bin and images, OBJ with
+// .mtl) is made into one GLB with everything inside, so every client gets it whole.
+protocol::AssetAnnounce add_session_asset(AssetStore& store, const SessionAsset& asset) {
+  if (asset.kind == protocol::AssetKind::Mesh)
+    if (const std::optional<SelfContainedModel> whole = self_contained_model(asset.path)) {
+      std::vector<std::string> gathered;
+      for (const fs::path& p : whole->gathered) gathered.push_back(p.filename().string());
+      log_info("model-made-whole", {{"path", asset.path}, {"as", whole->name}, {"bytes", whole->bytes.size()}, {"files", gathered}});
+      return store.add_bytes(whole->bytes, asset.kind, whole->name);
+    }
+  return store.add_file(asset.path, asset.kind);
+}
+
 }  // namespace
 
-Server::Server(asio::io_context& io, ServerConfig config)
-    : io_(io), config_(std::move(config)), store_(config_.data_dir), acceptor_(io), persist_timer_(io) {
-  create_sessions();
+Server::Server(asio::io_context& io, ServerConfig config) : io_(io), config_(std::move(config)), acceptor_(io), persist_timer_(io) {
+  // Ports first: a busy port fails before anything is created on disk.
   const auto endpoint = endpoint_of(config_);
   std::error_code ec;
   acceptor_.open(endpoint.protocol(), ec);
@@ -38,6 +51,8 @@ Server::Server(asio::io_context& io, ServerConfig config)
   if (!ec) acceptor_.listen(asio::socket_base::max_listen_connections, ec);
   if (ec) throw Error("cannot listen on " + config_.host + ":" + std::to_string(config_.port) + ": " + ec.message());
   if (config_.http) http_ = std::make_unique<HttpServer>(io, *this);
+  store_.emplace(config_.data_dir);
+  create_sessions();
 }
 
 uint16_t Server::http_port() const { return http_ ? http_->port() : 0; }
@@ -46,7 +61,7 @@ Server::~Server() = default;
 
 void Server::create_sessions() {
   // Sessions in the catalogue come back as they were; configured ones it lacks are created.
-  for (StoredSession& stored : store_.sessions()) {
+  for (StoredSession& stored : store_->sessions()) {
     const std::string name = stored.state.session;
     sessions_[name] = std::make_shared<Session>(std::move(stored));
   }
@@ -55,7 +70,7 @@ void Server::create_sessions() {
     StoredSession stored{.token = c.token, .state = {}};
     if (c.product) {
       try {
-        stored.state = find_or_make_product(store_, *c.product, c.name, [&](int done, int total, const std::string& line) {
+        stored.state = find_or_make_product(*store_, *c.product, c.name, [&](int done, int total, const std::string& line) {
           log_info("product-pair", {{"session", c.name}, {"done", done}, {"total", total}, {"pair", line}});
         });
       } catch (const Error& e) {
@@ -68,8 +83,8 @@ void Server::create_sessions() {
     stored.state.style = {.renderer = c.style, .settings = c.settings};
     const Camera camera = scene_orbit_camera(30, 20, 1.4f);
     stored.state.camera = {.sequence = 0, .position = camera.position, .target = camera.target, .up = camera.up, .fov_y_degrees = camera.fov_y_degrees};
-    for (const SessionAsset& a : c.assets) stored.state.assets.push_back(store_.add_file(a.path, a.kind));
-    store_.save_session(stored);
+    for (const SessionAsset& a : c.assets) stored.state.assets.push_back(add_session_asset(*store_, a));
+    store_->save_session(stored);
     log_info("session-created", {{"session", c.name}, {"kind", protocol::to_string(c.kind)}, {"assets", stored.state.assets.size()}});
     sessions_[c.name] = std::make_shared<Session>(std::move(stored));
   }
@@ -77,7 +92,7 @@ void Server::create_sessions() {
   for (auto& [name, session] : sessions_) {
     if (session->state().kind != protocol::SessionKind::Turntable || session->state().product.directions.empty()) continue;
     try {
-      session->set_product(product_tween_messages(store_, session->state()));
+      session->set_product(product_tween_messages(*store_, session->state()));
       log_info("product-loaded", {{"session", name}, {"samples", session->state().product.directions.size()},
                                   {"cells", session->state().product.cells}});
     } catch (const Error& e) {
@@ -100,8 +115,8 @@ void Server::start_face_feeds() {
       const fs::path photo = dir / (c.name + "-neutral.png"), landmarks = dir / (c.name + "-neutral.landmarks.json");
       save_image(feed->neutral(), photo, false);
       save_landmarks(landmarks, feed->landmarks());
-      session->set_face_assets(store_.add_file(photo, protocol::AssetKind::Image),
-                               store_.add_file(landmarks, protocol::AssetKind::Landmarks));
+      session->set_face_assets(store_->add_file(photo, protocol::AssetKind::Image),
+                               store_->add_file(landmarks, protocol::AssetKind::Landmarks));
       persist(*session);
       std::weak_ptr<Session> weak = session;
       feed->start([this, weak](const protocol::ExpressionCode& code) {
@@ -139,7 +154,7 @@ asio::awaitable<void> Server::persist_loop() {
 
 void Server::persist(Session& session) {
   try {
-    store_.save_session(session.stored());
+    store_->save_session(session.stored());
     session.dirty = false;
   } catch (const Error& e) {
     log(LogLevel::Error, "persist-failed", {{"session", session.name()}, {"reason", e.what()}});

@@ -3,6 +3,7 @@
 // their state, serves assets from the store, persists session state, shuts down gracefully.
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -35,7 +36,7 @@ class Server {
 
   // For connections.
   std::shared_ptr<Session> find_session(const std::string& name) const;
-  AssetStore& store() { return store_; }
+  AssetStore& store() { return *store_; }
   const ServerConfig& config() const { return config_; }
   void forget(const Connection* connection);
   // A client arrived over another transport (a WebSocket upgraded on the HTTP listener).
@@ -52,7 +53,7 @@ class Server {
 
   asio::io_context& io_;
   ServerConfig config_;
-  AssetStore store_;
+  std::optional<AssetStore> store_;  // opened once the ports are bound
   asio::ip::tcp::acceptor acceptor_;
   asio::steady_timer persist_timer_;
   std::map<std::string, std::shared_ptr<Session>> sessions_;

@@ -46,6 +46,8 @@ int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& 
     std::this_thread::sleep_until(tick);
   }
   writer.close();
+  // Frames of a blank backdrop are not a recording of the session: say why and fail.
+  if (!sync.view().content_error().empty()) throw Error(sync.view().content_error() + " (the frames written show none of it)");
   if (!sync.view().error().empty()) std::cerr << "inkwire-client: " << sync.view().error() << "\n";
   std::cerr << "inkwire-client: rendered " << o.frames << " frames to " << o.out << "; sent " << client.bytes_sent()
             << " bytes, received " << client.bytes_received() << "\n";

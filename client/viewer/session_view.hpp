@@ -38,6 +38,8 @@ class SessionView {
 
   // Why the mesh, the speaker or the style could not be shown; empty when all is well.
   const std::string& error() const { return content_error_.empty() ? style_error_ : content_error_; }
+  // Why the session's content (mesh, speaker, product) is not shown; empty when it is.
+  const std::string& content_error() const { return content_error_; }
   uint32_t revision() const { return revision_; }
   const std::string& style() const { return style_key_; }
   // The expression shown, in conference sessions.
