@@ -15,6 +15,7 @@
 #include <assimp/LogStream.hpp>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
+#include <assimp/metadata.h>
 #include <assimp/scene.h>
 #include <glm/mat4x4.hpp>
 
@@ -256,7 +257,47 @@ void listen_to_assimp() {
 
 }  // namespace
 
-Mesh load_mesh(const std::filesystem::path& file, ImportReport* report_out) {
+UpAxis parse_up_axis(const std::string& text) {
+  if (text == "auto") return UpAxis::Auto;
+  if (text == "y" || text == "Y") return UpAxis::Y;
+  if (text == "z" || text == "Z") return UpAxis::Z;
+  throw Error("up axis '" + text + "' is not auto, y or z");
+}
+
+const char* to_string(UpAxis up) { return up == UpAxis::Z ? "z" : up == UpAxis::Y ? "y" : "auto"; }
+
+namespace {
+
+// 3D Studio files are Z-up by convention, and assimp turns them Y-up as it reads them.
+bool z_up_format_assimp_turns(const std::filesystem::path& file) { return lower_case(file.extension().string()) == ".3ds"; }
+
+UpAxis scene_up_axis(const aiScene& scene, const std::filesystem::path& file) {
+  int32_t axis = 0;
+  if (scene.mMetaData && scene.mMetaData->Get("UpAxis", axis)) return axis == 2 ? UpAxis::Z : UpAxis::Y;
+  return z_up_format_assimp_turns(file) ? UpAxis::Z : UpAxis::Y;
+}
+
+glm::mat4 upright(const std::filesystem::path& file, UpAxis up) {
+  const glm::mat4 z_to_y(1, 0, 0, 0, 0, 0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1);  // (x, y, z) -> (x, z, -y)
+  if (!z_up_format_assimp_turns(file)) return up == UpAxis::Z ? z_to_y : glm::mat4(1.0f);
+  // Read by assimp, the file's Z is already +Y and its Y is -Z.
+  return up == UpAxis::Y ? glm::transpose(z_to_y) : glm::mat4(1.0f);  // (x, y, z) -> (x, -z, y)
+}
+
+}  // namespace
+
+UpAxis file_up_axis(const std::filesystem::path& file) {
+  if (lower_case(file.extension().string()) != ".fbx") return z_up_format_assimp_turns(file) ? UpAxis::Z : UpAxis::Y;
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFile(file.string(), 0);
+  return scene ? scene_up_axis(*scene, file) : UpAxis::Y;
+}
+
+glm::mat4 upright_transform(const std::filesystem::path& file, UpAxis up) {
+  return upright(file, up == UpAxis::Auto ? file_up_axis(file) : up);
+}
+
+Mesh load_mesh(const std::filesystem::path& file, ImportReport* report_out, UpAxis up) {
   std::error_code ec;
   if (std::filesystem::is_directory(file, ec)) throw Error(file.string() + ": is a folder, not a model file");
   if (!std::filesystem::is_regular_file(file, ec)) throw Error(file.string() + ": no such file");
@@ -290,7 +331,7 @@ Mesh load_mesh(const std::filesystem::path& file, ImportReport* report_out) {
   Mesh mesh;
   try {
     MeshBuilder builder(*scene, file, report);
-    builder.add_node(*scene->mRootNode, glm::mat4(1.0f), 0);
+    builder.add_node(*scene->mRootNode, upright(file, up == UpAxis::Auto ? scene_up_axis(*scene, file) : up), 0);
     mesh = builder.take();
     report.degenerate_dropped = remove_degenerate_and_unused(mesh);
     validate_mesh(mesh);

@@ -49,6 +49,13 @@ std::string format_hint(const fs::path& image) {
   return ext == "jpeg" ? "jpg" : ext.substr(0, 3);
 }
 
+// How a material names the scene's n-th embedded texture: "*n".
+std::string embedded_name(unsigned n) {
+  std::string name = std::to_string(n);
+  name.insert(name.begin(), '*');
+  return name;
+}
+
 // Every texture of every material that names a file: the file read into the scene and the
 // material pointed at it ("*N"), so the exporter writes it into the GLB.
 std::vector<fs::path> embed_textures(aiScene& scene, const fs::path& model) {
@@ -65,7 +72,7 @@ std::vector<fs::path> embed_textures(aiScene& scene, const fs::path& model) {
         const std::optional<fs::path> found = find_texture_file(model, ref.C_Str());
         if (!found) throw Error(model.string() + ": its texture '" + ref.C_Str() + "' is missing");
         if (const auto known = embedded_as.find(*found); known != embedded_as.end()) {
-          const aiString embedded(("*" + std::to_string(known->second)).c_str());
+          const aiString embedded(embedded_name(known->second).c_str());
           material.AddProperty(&embedded, AI_MATKEY_TEXTURE(type, i));
           continue;
         }
@@ -77,7 +84,7 @@ std::vector<fs::path> embed_textures(aiScene& scene, const fs::path& model) {
         std::memcpy(texture->pcData, bytes.data(), bytes.size());
         std::snprintf(texture->achFormatHint, sizeof texture->achFormatHint, "%s", format_hint(*found).c_str());
         texture->mFilename = found->filename().string();
-        const aiString embedded(("*" + std::to_string(textures.size())).c_str());
+        const aiString embedded(embedded_name(unsigned(textures.size())).c_str());
         material.AddProperty(&embedded, AI_MATKEY_TEXTURE(type, i));
         embedded_as[*found] = unsigned(textures.size());
         textures.push_back(texture.release());
@@ -152,8 +159,10 @@ std::vector<uint8_t> with_material_colours(const std::vector<uint8_t>& glb, cons
 
 }  // namespace
 
-std::optional<SelfContainedModel> self_contained_model(const fs::path& file) {
-  load_mesh(file);  // refuses what no client could draw, with the reason
+std::optional<SelfContainedModel> self_contained_model(const fs::path& file, UpAxis up) {
+  load_mesh(file, nullptr, up);  // refuses what no client could draw, with the reason
+  const UpAxis own = file_up_axis(file);
+  if (up == UpAxis::Auto) up = own;
   Assimp::Importer importer;
   auto* io = new RecordingIOSystem;  // the importer owns it
   importer.SetIOHandler(io);
@@ -165,7 +174,14 @@ std::optional<SelfContainedModel> self_contained_model(const fs::path& file) {
     if (opened != self) gathered.push_back(opened);
   const std::vector<fs::path> textures = embed_textures(*scene, file);
   gathered.insert(gathered.end(), textures.begin(), textures.end());
-  if (gathered.empty()) return std::nullopt;
+  // A reader of the file finds its own up axis; a model told otherwise is turned upright here,
+  // so the GLB (Y-up by definition) needs no telling.
+  if (gathered.empty() && up == own) return std::nullopt;
+  const glm::mat4 turn = upright_transform(file, up);
+  aiMatrix4x4 upright;
+  for (int row = 0; row < 4; ++row)
+    for (int column = 0; column < 4; ++column) upright[row][column] = turn[column][row];  // glm is column-major
+  scene->mRootNode->mTransformation = upright * scene->mRootNode->mTransformation;
 
   const std::vector<aiColor4D> colours = material_colours(*scene);
   Assimp::Exporter exporter;

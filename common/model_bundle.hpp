@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "common/mesh_import.hpp"
+
 namespace inkwire {
 
 struct SelfContainedModel {
@@ -16,9 +18,10 @@ struct SelfContainedModel {
   std::vector<std::filesystem::path> gathered;  // the files folded into it besides the model itself
 };
 
-// None when `file` refers to no other file (an OFF, a PLY, a GLB with its textures inside): it
-// already travels whole. Throws inkwire::Error with the path when the model cannot be read, a
-// file it refers to is missing, or no GLB can be written from it.
-std::optional<SelfContainedModel> self_contained_model(const std::filesystem::path& file);
+// None when `file` refers to no other file (an OFF, a PLY, a GLB with its textures inside) and
+// any reader finds `up` by itself: it already travels whole. Otherwise a GLB turned Y-up.
+// Throws inkwire::Error with the path when the model cannot be read, a file it refers to is
+// missing, or no GLB can be written from it.
+std::optional<SelfContainedModel> self_contained_model(const std::filesystem::path& file, UpAxis up = UpAxis::Auto);
 
 }  // namespace inkwire

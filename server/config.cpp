@@ -79,7 +79,7 @@ ServerConfig ServerConfig::embedded_default() {
   const fs::path cgal = INKWIRE_MESH_DIR;
   const fs::path truck = "/usr/share/assimp/models/glTF/CesiumMilkTruck/CesiumMilkTruck.gltf";
   auto session = [&](std::string name, SessionKind kind, const fs::path& model, std::string style) {
-    SessionConfig s{.name = std::move(name), .kind = kind, .token = "", .assets = {}, .style = std::move(style), .settings = {}, .face = {}};
+    SessionConfig s{.name = std::move(name), .kind = kind, .token = "", .assets = {}, .style = std::move(style), .settings = {}, .face = {}, .product = {}};
     if (!model.empty() && fs::exists(model)) s.assets.push_back({model, AssetKind::Mesh});
     if (model.empty() || !s.assets.empty()) c.sessions.push_back(std::move(s));
   };
@@ -118,10 +118,12 @@ ServerConfig ServerConfig::load(const fs::path& file) {
         session.token = s.value("token", "");
         session.style = s.value("style", "default");
         session.settings = s.value("settings", std::vector<std::string>{});
+        session.up = parse_up_axis(s.value("up", "auto"));
         for (const auto& a : s.value("assets", nlohmann::json::array()))
           session.assets.push_back({a.at("path").get<std::string>(), asset_kind_from_string(a.value("kind", "mesh"))});
         if (s.contains("face")) session.face = face_source_from_json(session, s.at("face"));
         if (s.contains("product")) session.product = product_from_json(session, s.at("product"));
+        if (session.product) session.product->mesh_options.up = session.up;
         c.sessions.push_back(std::move(session));
       }
     }

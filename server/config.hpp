@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "protocol/messages.hpp"
+#include "common/mesh_import.hpp"
 #include "server/products/product_store.hpp"
 
 namespace inkwire::server {
@@ -35,6 +36,7 @@ struct SessionConfig {
   std::vector<SessionAsset> assets;
   std::string style = "default";
   std::vector<std::string> settings;  // KEY=VALUE
+  UpAxis up = UpAxis::Auto;           // which way is up in its mesh files ("up": "y" | "z" | "auto")
   std::optional<FaceSourceConfig> face;  // conference sessions only
   std::optional<ProductSource> product;  // turntable sessions: made (once) when the catalogue lacks the session
 };

@@ -27,10 +27,11 @@ asio::ip::tcp::endpoint endpoint_of(const ServerConfig& config) {
 }
 
 // A mesh travels as one file: a model of several files (glTF with .bin and images, OBJ with
-// .mtl) is made into one GLB with everything inside, so every client gets it whole.
-protocol::AssetAnnounce add_session_asset(AssetStore& store, const SessionAsset& asset) {
+// .mtl), or one whose up axis clients would not find by themselves, is made into one Y-up GLB
+// with everything inside, so every client gets it whole and upright.
+protocol::AssetAnnounce add_session_asset(AssetStore& store, const SessionAsset& asset, UpAxis up) {
   if (asset.kind == protocol::AssetKind::Mesh)
-    if (const std::optional<SelfContainedModel> whole = self_contained_model(asset.path)) {
+    if (const std::optional<SelfContainedModel> whole = self_contained_model(asset.path, up)) {
       std::vector<std::string> gathered;
       for (const fs::path& p : whole->gathered) gathered.push_back(p.filename().string());
       log_info("model-made-whole", {{"path", asset.path}, {"as", whole->name}, {"bytes", whole->bytes.size()}, {"files", gathered}});
@@ -83,7 +84,7 @@ void Server::create_sessions() {
     stored.state.style = {.renderer = c.style, .settings = c.settings};
     const Camera camera = scene_orbit_camera(30, 20, 1.4f);
     stored.state.camera = {.sequence = 0, .position = camera.position, .target = camera.target, .up = camera.up, .fov_y_degrees = camera.fov_y_degrees};
-    for (const SessionAsset& a : c.assets) stored.state.assets.push_back(add_session_asset(*store_, a));
+    for (const SessionAsset& a : c.assets) stored.state.assets.push_back(add_session_asset(*store_, a, c.up));
     store_->save_session(stored);
     log_info("session-created", {{"session", c.name}, {"kind", protocol::to_string(c.kind)}, {"assets", stored.state.assets.size()}});
     sessions_[c.name] = std::make_shared<Session>(std::move(stored));

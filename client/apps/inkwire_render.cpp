@@ -26,6 +26,7 @@ struct Options {
   std::string gl = "osmesa", mesh, video, style = "default", pose = "thesis", view, size = "620x500", backdrop, out;
   std::vector<std::string> set;
   size_t lod = 0;
+  std::string up = "auto";
   int frames = 0, fps = 0, msaa = 4;  // 0: one frame (mesh) or the whole video; 24 fps or the video's
 };
 
@@ -90,7 +91,7 @@ int run(const Options& o) {
   const glm::ivec2 size = parse_size(o.size);
   const BackdropSpec backdrop_spec = BackdropSpec::parse(o.backdrop.empty() ? default_backdrop(o.style) : o.backdrop);
 
-  SceneObject object = load_scene_object(o.mesh, o.lod);
+  SceneObject object = load_scene_object(o.mesh, o.lod, 10.0f, parse_up_axis(o.up));
   for (const std::string& w : object.warnings) std::cerr << "inkwire-render: warning: " << w << "\n";
 
   auto context = create_offscreen_context(size.x, size.y, o.gl);
@@ -144,6 +145,8 @@ int main(int argc, char** argv) {
   app.add_option("--mesh", o.mesh, "mesh file (OBJ, PLY, OFF, 3DS, ASE, glTF, ...)");
   app.add_option("--video", o.video, "paint a video instead (style painterly): a file, a folder or %04d pattern of images, camera:N or /dev/videoN");
   app.add_option("--lod", o.lod, "simplify to about this many triangles first");
+  app.add_option("--up", o.up, "which axis is up in the file: y, z or auto (what the file says: glTF Y, 3DS and Blender Z)")
+      ->check(CLI::IsMember({"auto", "y", "z"}));
   app.add_option("--style", o.style, "style name, styles joined by '+' (drawn in turn), or 'list'");
   app.add_option("--set", o.set, "style parameter KEY=VALUE (repeatable)");
   app.add_option("--pose", o.pose, "camera pose: thesis (the study's benchmark viewer)");

@@ -27,8 +27,8 @@ SceneObject make_scene_object(Mesh mesh) {
   return object;
 }
 
-SceneObject load_scene_object(const std::filesystem::path& file, size_t lod_faces, float diagonal) {
-  Mesh mesh = load_mesh(file);
+SceneObject load_scene_object(const std::filesystem::path& file, size_t lod_faces, float diagonal, UpAxis up) {
+  Mesh mesh = load_mesh(file, nullptr, up);
   if (lod_faces > 0) mesh = simplify_to_faces(mesh, lod_faces);
   normalise(mesh, diagonal);
   return make_scene_object(std::move(mesh));

@@ -6,6 +6,7 @@
 
 #include "common/image.hpp"
 #include "common/mesh.hpp"
+#include "common/mesh_import.hpp"
 #include "common/topology.hpp"
 
 namespace inkwire {
@@ -21,6 +22,6 @@ SceneObject make_scene_object(Mesh mesh);
 
 // Loads a mesh file, simplifies it to about `lod_faces` triangles when non-zero, centres it and
 // scales its bounding-box diagonal to `diagonal`. Throws inkwire::Error with a one-line reason.
-SceneObject load_scene_object(const std::filesystem::path& file, size_t lod_faces = 0, float diagonal = 10.0f);
+SceneObject load_scene_object(const std::filesystem::path& file, size_t lod_faces = 0, float diagonal = 10.0f, UpAxis up = UpAxis::Auto);
 
 }  // namespace inkwire

@@ -74,6 +74,9 @@ int main(int argc, char** argv) {
   add->add_option("--matte", source.photo_options.matte, "auto: key a plain backdrop when there is one; key: refuse if not; none")
       ->needs(photos);
   add->add_option("--samples", source.mesh_options.samples, "samples on the ring (default 24)")->needs(mesh);
+  add->add_option_function<std::string>("--up", [&](const std::string& up) { source.mesh_options.up = parse_up_axis(up); },
+                                        "which axis is up in the mesh file: y, z or auto (what the file says)")
+      ->check(CLI::IsMember({"auto", "y", "z"}))->needs(mesh);
   add->add_option("--size", source.mesh_options.size, "sample images are this many pixels square (default 512)")->needs(mesh);
   add->add_option("--sphere", source.mesh_options.sphere_level,
                   "samples on a geodesic sphere instead of a ring: 0, 1 or 2 (12, 42, 162 samples), views from any side")

@@ -85,7 +85,7 @@ Product product_from_mesh(const fs::path& mesh, const MeshProductOptions& o, con
   if (o.size < 32 || o.size > 2048) throw Error("--size must be 32..2048");
   if (o.sphere_level > 2) throw Error("--sphere must be 0, 1 or 2 (12, 42 or 162 samples)");
   auto context = create_offscreen_context(64, 64);
-  const SceneObject object = load_scene_object(mesh, 0, kSceneDiagonal);
+  const SceneObject object = load_scene_object(mesh, 0, kSceneDiagonal, o.up);
   Product product;
   std::vector<glm::vec3> directions = ring_directions(o.samples);
   std::vector<std::vector<uint16_t>> cells = ring_cells(o.samples);

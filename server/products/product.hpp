@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/image.hpp"
+#include "common/mesh_import.hpp"
 #include "common/tween/tween_data.hpp"
 
 namespace inkwire {
@@ -47,6 +48,7 @@ struct MeshProductOptions {
   int size = 512;         // square sample images
   int points = 65;        // exact control points per pair
   std::string style = "default";
+  UpAxis up = UpAxis::Auto;  // which way is up in the mesh file
 };
 
 // Renders a mesh into samples with their render's alpha as mattes and exact control points.

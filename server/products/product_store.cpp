@@ -62,6 +62,10 @@ std::string ProductSource::key() const {
     text = "mesh " + hash_of_file(mesh) + " samples=" + std::to_string(mesh_options.samples) + " size=" +
            std::to_string(mesh_options.size) + " points=" + std::to_string(mesh_options.points) + " style=" + mesh_options.style +
            " sphere=" + std::to_string(mesh_options.sphere_level);
+    if (mesh_options.up != UpAxis::Auto) {  // keys made before "up" existed stay valid
+      text += " up=";
+      text += to_string(mesh_options.up);
+    }
   } else {
     text = "photos step=" + std::to_string(photo_options.step_degrees) + " arc=" + std::to_string(photo_options.arc_degrees) +
            " max_side=" + std::to_string(photo_options.max_side) + " matte=" + photo_options.matte +

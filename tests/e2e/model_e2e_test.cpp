@@ -103,3 +103,31 @@ TEST_F(ModelE2ETest, ABusyPortFailsBeforeAnythingIsCreatedOnDisk) {
   EXPECT_NE(said.find("cannot listen on " + first.address()), std::string::npos) << said;
   EXPECT_FALSE(fs::exists(dir / "second-data")) << "the refused server created its data folder";
 }
+
+// glmark2's horse.3ds was modelled Y-up, though 3D Studio files are Z-up by convention (and
+// assimp turns them so): drawn as the format says it lies on its side; told its file's Y is up
+// it stands, its height along the screen's vertical.
+TEST(ModelUpAxisTest, TheHorseStandsWhenToldWhichOfItsAxesIsUp) {
+  const fs::path horse = "/usr/share/glmark2/models/horse.3ds";
+  if (!fs::exists(horse)) GTEST_SKIP() << horse << " is missing (Debian package glmark2-data)";
+  const fs::path dir = output_dir("up-axis");
+  // The object's extent on screen: the box of pixels that are not the backdrop's colour.
+  const auto extent = [&](const std::string& up) {
+    const fs::path out = dir / ("horse-up-" + up + ".png");
+    Process render("inkwire-render", {"--mesh", horse.string(), "--up", up, "--view", "0,0", "--size", "200x200", "--out", out.string()}, dir / "render.log");
+    EXPECT_EQ(render.wait(), 0) << render.output();
+    const Image image = load_image(out);
+    int x0 = image.width, y0 = image.height, x1 = -1, y1 = -1;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        const uint8_t* p = &image.pixels[(size_t(y) * image.width + x) * 4];
+        if (std::abs(p[0] - image.pixels[0]) + std::abs(p[1] - image.pixels[1]) + std::abs(p[2] - image.pixels[2]) < 12) continue;
+        x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+      }
+    return std::pair{x1 - x0 + 1, y1 - y0 + 1};
+  };
+  const auto [lying_w, lying_h] = extent("auto");
+  const auto [standing_w, standing_h] = extent("y");
+  EXPECT_GT(lying_w, lying_h) << "as the format says, the horse lies along the screen's horizontal";
+  EXPECT_GT(standing_h, 1.2 * standing_w) << "told its Y is up, the horse's height is the screen's vertical";
+}
