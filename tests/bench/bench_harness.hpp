@@ -78,6 +78,7 @@ std::vector<Result> run_default_suite(Harness& harness);
 std::vector<Result> run_comic_suite(Harness& harness);
 std::vector<Result> run_sketch_suite(Harness& harness);
 std::vector<Result> run_hatching_suite(Harness& harness);
+std::vector<Result> run_antialiasing_suite(Harness& harness);
 std::vector<Result> run_painterly_suite(Harness& harness);
 std::vector<Result> run_net_suite(Harness& harness);
 std::vector<Result> run_face_suite(Harness& harness);
