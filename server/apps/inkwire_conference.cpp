@@ -32,7 +32,36 @@ namespace {
 struct Options {
   std::string input, neutral, speaker, script, out, input_out, json_path, paint = "impressionist";
   int fps = 0, repeat = 1, frames = 0, height = 360;
+  int face = 0;  // --speaker: which face, 1 = leftmost; 0: the largest
 };
+
+// The speaker's photo framed on one face: a portrait around it (the face a third of its width),
+// cut from the photo and scaled so the face is about 200 pixels wide, as a webcam would frame it.
+struct FramedFace {
+  Image photo;
+  FaceLandmarks landmarks;
+};
+
+FramedFace frame_on_face(const Image& photo, int which) {
+  FaceAnalyzer analyzer({.detect_every = 1, .detect_width = 0, .upsample = 0});
+  const std::vector<FaceBox> faces = analyzer.detect_in_photo(photo);
+  if (faces.empty()) throw Error("--speaker photo shows no face the detector finds (a frontal face at least ~40 pixels wide)");
+  if (which > int(faces.size()))
+    throw Error("--face " + std::to_string(which) + ": the photo shows " + std::to_string(faces.size()) + " faces (1 is the leftmost)");
+  const FaceBox box = which > 0 ? faces[size_t(which - 1)]
+                                : *std::max_element(faces.begin(), faces.end(), [](const FaceBox& a, const FaceBox& b) { return a.width() < b.width(); });
+  const int side = box.width();
+  const int width = std::min(photo.width, 3 * side), height = std::min(photo.height, 4 * side);
+  const int cx = (box.left + box.right) / 2, cy = (box.top + box.bottom) / 2;
+  const int x = std::clamp(cx - width / 2, 0, photo.width - width), y = std::clamp(cy - height * 9 / 20, 0, photo.height - height);
+  Image portrait = cropped(photo, x, y, width, height);
+  const double scale = 200.0 / side;
+  if (scale < 1.0) portrait = resized(portrait, std::max(2, int(width * scale) & ~1), std::max(2, int(height * scale) & ~1));
+  else portrait = resized(portrait, width & ~1, height & ~1);
+  const double sx = double(portrait.width) / width, sy = double(portrait.height) / height;
+  const FaceBox in_portrait{int((box.left - x) * sx), int((box.top - y) * sy), int((box.right - x) * sx), int((box.bottom - y) * sy)};
+  return {portrait, analyzer.landmarks_in(portrait, in_portrait)};
+}
 
 struct ScriptStep {
   ExpressionState state;
@@ -63,13 +92,11 @@ class Speaker {
  public:
   Speaker(const Options& o) {
     if (!o.speaker.empty()) {
-      photo_ = load_image(o.speaker);
       script_ = parse_script(o.script);
       fps_ = o.fps > 0 ? o.fps : 25;
-      FaceAnalyzer analyzer({.detect_every = 1, .detect_width = 320, .upsample = 0});
-      const auto face = analyzer.analyse(photo_);
-      if (!face) throw Error("--speaker photo shows no face");
-      actor_.emplace(photo_, face->landmarks);
+      FramedFace framed = frame_on_face(load_image(o.speaker), o.face);
+      photo_ = std::move(framed.photo);
+      actor_.emplace(photo_, framed.landmarks);
     } else {
       source_.emplace(o.input);
       fps_ = o.fps > 0 ? o.fps : source_->fps();
@@ -191,7 +218,9 @@ int main(int argc, char** argv) {
                "writes input | reconstruction | painted reconstruction side by side"};
   Options o;
   app.add_option("--input", o.input, "camera:N, /dev/videoN, a video file, a folder of images or a %04d pattern");
-  app.add_option("--speaker", o.speaker, "instead of --input: synthesise the speaker from this photo following --script");
+  app.add_option("--speaker", o.speaker, "instead of --input: a speaker made from this photo (the face found in it, framed), following --script");
+  app.add_option("--face", o.face, "with --speaker: which face of a group photo speaks, 1 = the leftmost (default: the largest)")
+      ->check(CLI::Range(1, 1000));
   app.add_option("--script", o.script, "with --speaker: expression[@intensity]:seconds,... e.g. neutral:1,smile:1,surprise@200:1");
   app.add_option("--neutral", o.neutral, "the speaker's neutral photo (default: the first frame)");
   app.add_option("--out", o.out, "side-by-side video (.mp4) or %04d.png frames")->required();

@@ -25,10 +25,13 @@ ExpressionState classify(const FaceFeatures& face, const FaceFeatures& neutral, 
   const float brow_tilt = face.brow_inner_raise - neutral.brow_inner_raise;
   const bool surprised = brow > t.brow_raise || eyes > t.eyes_wide;
 
-  // An open mouth decides first: laughing and surprised faces also narrow or widen the eyes.
+  // An open mouth decides first: laughing and surprised faces also narrow or widen the eyes. A
+  // widened mouth opened a little is a smile showing its teeth (the development subjects' happy
+  // photos open it 0.10-0.21), opened further a laugh.
   if (mouth_open > t.mouth_open) {
     const uint8_t open = intensity_of(mouth_open, 0.3f);
-    if (widening > t.smile_width) return {Expression::Laugh, std::max(open, intensity_of(widening, 0.2f))};
+    if (widening > t.smile_width && mouth_open > t.laugh_open) return {Expression::Laugh, std::max(open, intensity_of(widening, 0.2f))};
+    if (widening > t.smile_width) return {Expression::Smile, std::max(intensity_of(corner_lift, 0.1f), intensity_of(widening, 0.2f))};
     if (surprised) return {Expression::Surprise, std::max(open, intensity_of(brow, 0.1f))};
     if (widening < -t.round_narrowing) return {Expression::VisemeRound, open};
     return {Expression::VisemeOpen, open};

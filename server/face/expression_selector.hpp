@@ -22,6 +22,7 @@ struct SelectionThresholds {
   float wink_open = 0.8f;
   float eyes_wide = 1.08f;
   float mouth_open = 0.10f;        // inner-lip gap grown by this much: the mouth is open
+  float laugh_open = 0.22f;        // a widened mouth opened this far laughs; less is a smile showing teeth
   float smile_width = 0.08f;       // relative widening of the mouth
   float smile_corner_lift = 0.05f; // (closed mouths only: opening the jaw moves the lips' midline)
   float brow_raise = 0.06f;

@@ -48,6 +48,10 @@ class FaceAnalyzer {
   std::optional<FaceAnalysis> analyse(const Image& frame);
   // The detector alone (reduced and upsampled as the options say), boxes in frame pixels.
   std::vector<FaceBox> detect(const Image& frame);
+  // Every face in a still photo, large or small: the detector run at a scale that fits the
+  // photo (a group photo's small faces at full resolution, a small photo upsampled), not on the
+  // reduced copy video frames use. Boxes in photo pixels, left to right.
+  std::vector<FaceBox> detect_in_photo(const Image& photo);
   // The landmark model alone, placed in `box`.
   FaceLandmarks landmarks_in(const Image& frame, const FaceBox& box);
 

@@ -124,3 +124,28 @@ TEST(ConferenceE2ETest, ClientsShowTheSpeakersExpressionsFromCodesAloneAndPaintT
   ASSERT_GT(seconds, 5.0);
   EXPECT_LT(ended[0]["bytes"].get<double>() * 8 / seconds, 1000.0) << ended[0].dump();
 }
+
+// A group photo as the speaker: the faces are found at the photo's own scale, the largest (or the
+// one asked for) speaks, framed; a scripted smile comes out as a smile, not a laugh; a photo
+// without a face is refused with the program's name and a reason.
+TEST(ConferenceE2ETest, AGroupPhotoSpeaksThroughItsLargestFaceAndASmileStaysASmile) {
+  const fs::path group = fs::path(kSpeakerPhoto).parent_path() / "bald_guys.jpg", dogs = fs::path(kSpeakerPhoto).parent_path() / "dogs.jpg";
+  if (!fs::exists(group) || !fs::exists(kFaceModel)) GTEST_SKIP() << "libdlib-dev's example faces or libdlib-data's model is missing";
+  const fs::path dir = output_dir("conference-group");
+  for (const std::string face : {"", "2"}) {
+    std::vector<std::string> args = {"--speaker", group.string(), "--script", "neutral:0.4,smile:1.2", "--paint", "none",
+                                     "--out", (dir / ("group" + face + ".mp4")).string(), "--json", (dir / ("group" + face + ".json")).string()};
+    if (!face.empty()) args.insert(args.end(), {"--face", face});
+    Process conference("inkwire-conference", args, dir / ("group" + face + ".log"));
+    ASSERT_EQ(conference.wait(std::chrono::seconds(120)), 0) << conference.output();
+    const nlohmann::json stats = nlohmann::json::parse(std::ifstream(dir / ("group" + face + ".json")));
+    EXPECT_EQ(stats["faces_found"], stats["frames"]) << "the framed face is followed in every frame";
+    if (!face.empty()) continue;  // another face of the group speaks too; its expressions are judged below for the largest
+    const auto& shown = stats["frames_per_expression"];
+    EXPECT_GT(shown.value("smile", 0), 10) << shown.dump();
+    EXPECT_EQ(shown.value("laugh", 0), 0) << "a scripted smile came out as a laugh: " << shown.dump();
+  }
+  Process no_face("inkwire-conference", {"--speaker", dogs.string(), "--script", "smile:1", "--out", (dir / "dogs.mp4").string()}, dir / "dogs.log");
+  EXPECT_NE(no_face.wait(std::chrono::seconds(60)), 0);
+  EXPECT_NE(no_face.output().find("inkwire-conference: --speaker photo shows no face"), std::string::npos) << no_face.output();
+}

@@ -145,5 +145,21 @@ TEST(ExpressionTemplates, MalformedFilesAreRejectedWithAReason) {
     }
 }
 
+// A smile that shows its teeth (the development subjects' happy photos open the lips 0.10-0.21
+// inter-ocular units) is a smile; only a mouth opened further laughs.
+TEST(ExpressionSelection, ASmileShowingTeethIsASmileAndAWideOpenOneALaugh) {
+  FaceFeatures neutral;
+  neutral.eye_open_left = neutral.eye_open_right = 0.3f;
+  neutral.mouth_width = 1.0f;
+  FaceFeatures smiling = neutral;
+  smiling.mouth_width = 1.2f;
+  for (const float open : {0.12f, 0.18f}) {
+    smiling.mouth_open = neutral.mouth_open + open;
+    EXPECT_EQ(classify(smiling, neutral).expression, Expression::Smile) << "lips apart by " << open;
+  }
+  smiling.mouth_open = neutral.mouth_open + 0.3f;
+  EXPECT_EQ(classify(smiling, neutral).expression, Expression::Laugh);
+}
+
 }  // namespace
 }  // namespace inkwire
