@@ -145,16 +145,16 @@ int main(int argc, char** argv) {
   app.add_option("--mesh", o.mesh, "mesh file (OBJ, PLY, OFF, 3DS, ASE, glTF, ...)");
   app.add_option("--video", o.video, "paint a video instead (style painterly): a file, a folder or %04d pattern of images, camera:N or /dev/videoN");
   app.add_option("--lod", o.lod, "simplify to about this many triangles first");
-  app.add_option("--up", o.up, "which axis is up in the file: y, z or auto (what the file says: glTF Y, 3DS and Blender Z)")
+  app.add_option("--up", o.up, "which of the file's axes points up: y, z, or auto (what the file or its format says: glTF Y, 3D Studio Z)")
       ->check(CLI::IsMember({"auto", "y", "z"}));
   app.add_option("--style", o.style, "style name, styles joined by '+' (drawn in turn), or 'list'");
   app.add_option("--set", o.set, "style parameter KEY=VALUE (repeatable)");
-  app.add_option("--pose", o.pose, "camera pose: thesis (the study's benchmark viewer)");
+  app.add_option("--pose", o.pose, "camera pose: thesis, the fixed benchmark camera (in front of the object, slightly above, one light from the viewer)");
   app.add_option("--view", o.view, "orbit camera AZIMUTH_DEG,ELEVATION_DEG[,DISTANCE in bounding-box diagonals]");
   app.add_option("--frames", o.frames, "frames to render (the object turns once); with --video, at most this many")->check(CLI::Range(0, 100000));
   app.add_option("--fps", o.fps, "frames per second of animation time and video (default 24, or the video's)")->check(CLI::Range(0, 240));
   app.add_option("--size", o.size, "image size WxH");
-  app.add_option("--msaa", o.msaa, "multisample count (1 = off)")->check(CLI::Range(1, 16));
+  app.add_option("--msaa", o.msaa, "samples per pixel for antialiased edges (default 4; 1 = off)")->check(CLI::Range(1, 16));
   app.add_option("--backdrop", o.backdrop, "paper | paper:FILE | none (transparent) | #rrggbb; default: the style's");
   app.add_option("--gl", o.gl, "off-screen GL backend: osmesa, egl (surfaceless) or auto");
   app.add_option("--out", o.out, "output PNG, PNG pattern with %04d, or .mp4");

@@ -238,7 +238,7 @@ int main(int argc, char** argv) {
   CLI::App app{"inkwire-tween: morph between two faces or objects, or regenerate missing video frames, by tweening"};
   app.require_subcommand(1);
   MorphOptions m;
-  auto* morph_cmd = app.add_subcommand("morph", "morph between two different faces or objects (SPEC T8)");
+  auto* morph_cmd = app.add_subcommand("morph", "morph between two different faces or objects");
   morph_cmd->add_option("--from", m.from, "first image")->required();
   morph_cmd->add_option("--to", m.to, "second image (scaled to the first's size)")->required();
   morph_cmd->add_option("--points", m.points, "corresponding points {\"pairs\": [[ax, ay, bx, by], ...]}; default: face landmarks");
@@ -249,7 +249,7 @@ int main(int argc, char** argv) {
   morph_cmd->add_option("--fps", m.fps, "frame rate")->check(CLI::Range(1, 120));
   morph_cmd->add_option("--json", m.json_path, "write the figures here");
   RestoreOptions r;
-  auto* restore_cmd = app.add_subcommand("restore", "regenerate missing video frames between kept ones (SPEC T9)");
+  auto* restore_cmd = app.add_subcommand("restore", "regenerate missing video frames between kept ones");
   restore_cmd->add_option("--input", r.input, "video file, folder of images or %04d pattern")->required();
   restore_cmd->add_option("--out", r.out, "the restored video (.mp4 or %04d.png)")->required();
   auto* missing = restore_cmd->add_option("--missing", r.missing, "frames to regenerate, e.g. 10-14,30");
