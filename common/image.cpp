@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -126,6 +128,26 @@ Image side_by_side(const std::vector<Image>& panels) {
   for (const Image& p : panels) {
     for (int y = 0; y < p.height; ++y) std::copy_n(p.at(0, y), size_t(p.width) * 4, out.at(x0, y));
     x0 += p.width;
+  }
+  return out;
+}
+
+Image side_by_side(const std::vector<Image>& panels, const std::vector<std::string>& captions) {
+  const Image pictures = side_by_side(panels);
+  constexpr int kStrip = 28;
+  Image out(pictures.width, pictures.height + kStrip, glm::u8vec4(32, 32, 36, 255));
+  std::copy(pictures.pixels.begin(), pictures.pixels.end(), out.pixels.begin() + ptrdiff_t(size_t(out.width) * kStrip * 4));
+  static const std::string font = std::filesystem::exists("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf")
+                                      ? "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf" : "";
+  OIIO::ImageBuf strip(OIIO::ImageSpec(out.width, kStrip, 4, OIIO::TypeDesc::UINT8), out.pixels.data());
+  const float white[4] = {1, 1, 1, 1};
+  int x = 0;
+  for (size_t i = 0; i < panels.size(); ++i) {
+    // Cut to what fits its panel (about 8 pixels a letter at this size), so captions never run together.
+    const size_t fits = size_t(std::max(panels[i].width - 16, 0) / 8);
+    if (i < captions.size() && !captions[i].empty() && fits > 0)
+      OIIO::ImageBufAlgo::render_text(strip, x + 8, 19, captions[i].substr(0, fits), 15, font, white);
+    x += panels[i].width;
   }
   return out;
 }

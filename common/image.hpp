@@ -43,6 +43,9 @@ Image cropped(const Image& image, int x, int y, int width, int height);
 // Images of one height laid left to right (contact sheets, side-by-side videos). Throws
 // inkwire::Error when there are none or their heights differ.
 Image side_by_side(const std::vector<Image>& panels);
+// The same under a strip naming each panel, for sheets and videos read without the command that
+// made them. Text that cannot be drawn (no font) leaves its place in the strip blank.
+Image side_by_side(const std::vector<Image>& panels, const std::vector<std::string>& captions);
 
 // Reverses row order: GL read-backs are bottom-up.
 void flip_rows(Image& image);

@@ -166,6 +166,7 @@ int run(const Options& o) {
   if (!o.input_out.empty()) input_writer.emplace(o.input_out, max_frames, fps, false);
   int frames = 0, faces = 0;
   std::map<std::string, int> shown;
+  const std::vector<std::string> captions = {"speaker", "receiver (codes only)", "painted (" + o.paint + ")"};
   double analysis_ms = 0;
   for (std::optional<Image> frame = std::move(first); frame && (o.frames == 0 || frames < o.frames); frame = speaker.next(), ++frames) {
     const double now = double(frames) / speaker.fps();
@@ -189,7 +190,7 @@ int run(const Options& o) {
       painter->paint(reconstruction);
       panels.push_back(fit_height(paint_canvas.read(), o.height));
     }
-    writer.write(side_by_side(panels));
+    writer.write(side_by_side(panels, captions));
     if (input_writer) input_writer->write(*frame);
   }
   writer.close();

@@ -132,7 +132,7 @@ int morph(const MorphOptions& o) {
     panels.push_back(tween.crossfade(0.5f));
     const int height = std::min(a.height, 360), width = std::max(2, a.width * height / a.height);
     for (Image& p : panels) p = resized(p, width, height);
-    save_image(side_by_side(panels), o.sheet, false);
+    save_image(side_by_side(panels, {"A", "morph 1/4", "morph 1/2", "morph 3/4", "B", "cross-fade 1/2 (for comparison)"}), o.sheet, false);
   }
   const nlohmann::json stats = {{"points", pairs.size()}, {"frames", o.frames}, {"size", {a.width, a.height}}};
   if (!o.json_path.empty()) std::ofstream(o.json_path) << stats.dump(2) << "\n";
@@ -221,7 +221,8 @@ int restore(const RestoreOptions& o) {
   FrameWriter writer(o.out, int(restored.size()), int(std::lround(source.fps())), false);
   for (const Image& f : restored) writer.write(f);
   writer.close();
-  if (!o.sheet.empty() && sheet_panels) save_image(side_by_side(*sheet_panels), o.sheet, false);
+  if (!o.sheet.empty() && sheet_panels)
+    save_image(side_by_side(*sheet_panels, {"dropped frame (truth)", "hold the nearest", "cross-fade", "tween"}), o.sheet, false);
 
   nlohmann::json stats = {{"frames", frames.size()}, {"regenerated", missing.size()}, {"gaps", gaps},
                           {"landmarks_per_gap", gaps ? double(landmark_total) / gaps : 0.0}};
