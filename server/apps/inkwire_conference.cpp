@@ -209,6 +209,8 @@ int run(const Options& o) {
                           {"frames_per_expression", shown}};
   if (!o.json_path.empty()) std::ofstream(o.json_path) << stats.dump(2) << "\n";
   std::cout << stats.dump(2) << "\n";
+  // A video of a photo that never moved is not a conference: say so and fail.
+  if (faces == 0) throw Error("no face found in any of the " + std::to_string(frames) + " frames (the video shows the neutral photo only)");
   return 0;
 }
 

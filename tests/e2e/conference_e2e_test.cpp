@@ -148,4 +148,12 @@ TEST(ConferenceE2ETest, AGroupPhotoSpeaksThroughItsLargestFaceAndASmileStaysASmi
   Process no_face("inkwire-conference", {"--speaker", dogs.string(), "--script", "smile:1", "--out", (dir / "dogs.mp4").string()}, dir / "dogs.log");
   EXPECT_NE(no_face.wait(std::chrono::seconds(60)), 0);
   EXPECT_NE(no_face.output().find("inkwire-conference: --speaker photo shows no face"), std::string::npos) << no_face.output();
+
+  // A camera that never sees a face: frames were written, but no conference took place.
+  fs::create_directories(dir / "empty-room");
+  for (int i = 0; i < 3; ++i) save_image(Image(160, 120, {70, 120, 60, 255}), dir / "empty-room" / ("frame" + std::to_string(i) + ".png"));
+  Process empty_room("inkwire-conference", {"--input", (dir / "empty-room").string(), "--neutral", kSpeakerPhoto.string(), "--paint", "none",
+                                            "--out", (dir / "empty-room.mp4").string()}, dir / "empty-room.log");
+  EXPECT_NE(empty_room.wait(std::chrono::seconds(60)), 0);
+  EXPECT_NE(empty_room.output().find("inkwire-conference: no face found in any of the 3 frames"), std::string::npos) << empty_room.output();
 }
