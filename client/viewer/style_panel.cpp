@@ -141,7 +141,9 @@ std::optional<protocol::StyleChange> StylePanel::draw(const protocol::StyleChang
       in_effect_error_ = e.what();
     }
     // Echoed by the session: no longer pending.
-    std::erase_if(pending_, [&](const auto& kv) { return in_effect_.count(kv.first) && in_effect_[kv.first] == kv.second; });
+    std::erase_if(pending_, [&](const auto& kv) {
+      return std::find(current.settings.begin(), current.settings.end(), kv.first + "=" + kv.second) != current.settings.end();
+    });
   }
   if (specs_.empty() || !ImGui::CollapsingHeader("parameters", ImGuiTreeNodeFlags_DefaultOpen)) return change;
   for (const ParamSpec& p : specs_) {
