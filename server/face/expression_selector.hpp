@@ -18,7 +18,7 @@ struct SelectionThresholds {
   // `wink_closed` with the other over `wink_open` is a wink; over `eyes_wide` on average they widen
   // in surprise.
   float eyes_closed_mean = 0.78f;
-  float wink_closed = 0.7f;
+  float wink_closed = 0.8f;
   float wink_open = 0.8f;
   float eyes_wide = 1.08f;
   float mouth_open = 0.10f;        // inner-lip gap grown by this much: the mouth is open
