@@ -12,11 +12,21 @@ namespace {
 // development faces show for each expression, which is what the templates (255) reproduce.
 uint8_t intensity_of(float amount, float full) { return uint8_t(std::lround(std::clamp(amount / full, 0.0f, 1.0f) * 255.0f)); }
 
+
+// How shut an eye is against the neutral face's, for winks: the lids' landmarks, or where the
+// frames were measured the eye's shade when that fell further (dlib's landmarks do not follow a
+// shut lid, but a shut eye loses its white and its iris).
+float shut_ratio(float lids, float shade, float neutral_shade) {
+  return shade > 0.0f && neutral_shade > 0.0f ? std::min(lids, shade / neutral_shade) : lids;
+}
+
 }  // namespace
 
 ExpressionState classify(const FaceFeatures& face, const FaceFeatures& neutral, const SelectionThresholds& t) {
   const float eye_left = face.eye_open_left / std::max(neutral.eye_open_left, 1e-3f);
   const float eye_right = face.eye_open_right / std::max(neutral.eye_open_right, 1e-3f);
+  const float shut_left = shut_ratio(eye_left, face.eye_shade_left, neutral.eye_shade_left);
+  const float shut_right = shut_ratio(eye_right, face.eye_shade_right, neutral.eye_shade_right);
   const float eyes = 0.5f * (eye_left + eye_right);
   const float mouth_open = face.mouth_open - neutral.mouth_open;
   const float widening = face.mouth_width / std::max(neutral.mouth_width, 1e-3f) - 1.0f;
@@ -36,8 +46,10 @@ ExpressionState classify(const FaceFeatures& face, const FaceFeatures& neutral, 
     if (widening < -t.round_narrowing) return {Expression::VisemeRound, open};
     return {Expression::VisemeOpen, open};
   }
-  if (std::min(eye_left, eye_right) < t.wink_closed && std::max(eye_left, eye_right) > t.wink_open)
-    return {eye_left < eye_right ? Expression::WinkLeft : Expression::WinkRight, intensity_of(1.0f - std::min(eye_left, eye_right), 0.8f)};
+  const bool left_shut = shut_left < shut_right;
+  const float shut = left_shut ? shut_left : shut_right, other_open = left_shut ? eye_right : eye_left;
+  if (shut < t.wink_closed && other_open > t.wink_open)
+    return {left_shut ? Expression::WinkLeft : Expression::WinkRight, intensity_of(1.0f - shut, 0.8f)};
   if (eyes < t.eyes_closed_mean) return {Expression::EyesClosed, intensity_of(1.0f - eyes, 0.8f)};
   if (widening > t.smile_width || corner_lift > t.smile_corner_lift)
     return {Expression::Smile, std::max(intensity_of(corner_lift, 0.1f), intensity_of(widening, 0.2f))};

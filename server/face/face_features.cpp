@@ -1,5 +1,8 @@
 #include "server/face/face_features.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include <glm/geometric.hpp>
 
 namespace inkwire {
@@ -20,9 +23,33 @@ float eye_openness(const FaceLandmarks& p, int first) {
   return gap / glm::distance(at(0), at(3));
 }
 
+// The standard deviation of luma in a box centred on the eye, its width corner to corner and its
+// height half that.
+float eye_shade(const Image& frame, const FaceLandmarks& p, int first) {
+  float x0 = p[size_t(first)].x, x1 = x0, cy = 0;
+  for (int k = 0; k < 6; ++k) {
+    const glm::vec2 q = p[size_t(first + k)];
+    x0 = std::min(x0, q.x), x1 = std::max(x1, q.x), cy += q.y / 6.0f;
+  }
+  const float half = 0.25f * (x1 - x0);
+  const int left = std::max(0, int(x0)), right = std::min(frame.width - 1, int(x1));
+  const int top = std::max(0, int(cy - half)), bottom = std::min(frame.height - 1, int(cy + half));
+  double sum = 0, sum2 = 0;
+  int n = 0;
+  for (int y = top; y <= bottom; ++y)
+    for (int x = left; x <= right; ++x) {
+      const uint8_t* c = frame.at(x, y);
+      const double luma = 0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2];
+      sum += luma, sum2 += luma * luma, ++n;
+    }
+  if (n < 4) return 0.0f;
+  const double mean = sum / n;
+  return float(std::sqrt(std::max(sum2 / n - mean * mean, 0.0)));
+}
+
 }  // namespace
 
-FaceFeatures measure_features(const FaceLandmarks& landmarks) {
+FaceFeatures measure_features(const FaceLandmarks& landmarks, const Image* frame) {
   const FaceLandmarks p = to_face(landmarks, face_frame(landmarks));
   FaceFeatures f;
   f.brow_raise_left = -mean_y(p, kBrowLeftFirst, kBrowLeftLast);
@@ -36,18 +63,24 @@ FaceFeatures measure_features(const FaceLandmarks& landmarks) {
   const float midline = 0.5f * (p[kLipTop].y + p[kLipBottom].y);
   f.corner_lift = midline - 0.5f * (p[kMouthLeft].y + p[kMouthRight].y);
   f.jaw_drop = p[kChin].y - p[kNoseTip].y;
+  if (frame) {
+    f.eye_shade_left = eye_shade(*frame, landmarks, kEyeLeftFirst);
+    f.eye_shade_right = eye_shade(*frame, landmarks, kEyeRightFirst);
+  }
   return f;
 }
 
 FaceFeatures operator+(const FaceFeatures& a, const FaceFeatures& b) {
   return {a.brow_raise_left + b.brow_raise_left, a.brow_raise_right + b.brow_raise_right, a.eye_open_left + b.eye_open_left,
           a.eye_open_right + b.eye_open_right,   a.mouth_open + b.mouth_open,             a.mouth_width + b.mouth_width,
-          a.corner_lift + b.corner_lift,         a.jaw_drop + b.jaw_drop,                 a.brow_inner_raise + b.brow_inner_raise};
+          a.corner_lift + b.corner_lift,         a.jaw_drop + b.jaw_drop,                 a.brow_inner_raise + b.brow_inner_raise,
+          a.eye_shade_left + b.eye_shade_left,   a.eye_shade_right + b.eye_shade_right};
 }
 
 FaceFeatures operator*(float s, const FaceFeatures& f) {
   return {s * f.brow_raise_left, s * f.brow_raise_right, s * f.eye_open_left, s * f.eye_open_right, s * f.mouth_open,
-          s * f.mouth_width,     s * f.corner_lift,      s * f.jaw_drop,      s * f.brow_inner_raise};
+          s * f.mouth_width,     s * f.corner_lift,      s * f.jaw_drop,      s * f.brow_inner_raise,
+          s * f.eye_shade_left,  s * f.eye_shade_right};
 }
 
 }  // namespace inkwire

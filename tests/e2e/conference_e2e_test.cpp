@@ -157,3 +157,18 @@ TEST(ConferenceE2ETest, AGroupPhotoSpeaksThroughItsLargestFaceAndASmileStaysASmi
   EXPECT_NE(empty_room.wait(std::chrono::seconds(60)), 0);
   EXPECT_NE(empty_room.output().find("inkwire-conference: no face found in any of the 3 frames"), std::string::npos) << empty_room.output();
 }
+
+// A wink scripted on a speaker photo is seen by the analysis (the shut eye's shade, where the
+// landmarks do not follow the lid) and shown by the receiver on the same eye.
+TEST(ConferenceE2ETest, AScriptedWinkIsSeenOnTheSameEye) {
+  const fs::path group = fs::path(kSpeakerPhoto).parent_path() / "bald_guys.jpg";
+  if (!fs::exists(group) || !fs::exists(kFaceModel)) GTEST_SKIP() << "libdlib-dev's example faces or libdlib-data's model is missing";
+  const fs::path dir = output_dir("conference-wink");
+  Process conference("inkwire-conference", {"--speaker", group.string(), "--script", "neutral:0.4,wink-left:1.2", "--paint", "none",
+                                            "--out", (dir / "wink.mp4").string(), "--json", (dir / "wink.json").string()},
+                     dir / "wink.log");
+  ASSERT_EQ(conference.wait(std::chrono::seconds(120)), 0) << conference.output();
+  const auto shown = nlohmann::json::parse(std::ifstream(dir / "wink.json"))["frames_per_expression"];
+  EXPECT_GT(shown.value("wink-left", 0), 10) << shown.dump();
+  EXPECT_EQ(shown.value("wink-right", 0), 0) << shown.dump();
+}

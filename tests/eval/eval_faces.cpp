@@ -88,6 +88,12 @@ std::optional<FaceLandmarks> landmarks_of(FaceAnalyzer& analyzer, FaceAnalyzer& 
   return std::nullopt;
 }
 
+// The features of the face in `file` at `points`, its eyes' shade included.
+FaceFeatures features_of(const fs::path& file, const FaceLandmarks& points) {
+  const Image image = load_image(file);
+  return measure_features(points, &image);
+}
+
 FaceAnalyzerOptions still_options(int upsample) { return {.detect_every = 1, .detect_width = 0, .upsample = upsample}; }
 
 nlohmann::json features_json(const FaceFeatures& f) {
@@ -112,7 +118,7 @@ nlohmann::json run_faces(const FacesOptions& options) {
       std::cerr << "faces: subject " << subject << " has no usable normal photo; skipped\n";
       continue;
     }
-    const FaceFeatures neutral = measure_features(*neutral_points);
+    const FaceFeatures neutral = features_of(normal->second, *neutral_points);
     for (const std::string& label : kLabels) {
       const auto photo = by_label.find(label);
       if (photo == by_label.end()) continue;
@@ -122,7 +128,7 @@ nlohmann::json run_faces(const FacesOptions& options) {
       ExpressionState state;
       std::optional<FaceFeatures> features;
       if (points) {
-        features = measure_features(*points);
+        features = features_of(photo->second, *points);
         state = classify(*features, neutral);
         chosen = label_of(state.expression);
       } else {
