@@ -138,14 +138,13 @@ fi
 # every change locally from control messages of a few bytes.
 mkdir -p "$out/network"
 rm -rf "$out/network/server-data"
-speaker_photo=/usr/share/doc/libdlib19.1/examples/faces/Tom_Cruise_avp_2014_4.jpg
 cat > "$out/network/server.json" <<EOF
 { "sessions": [
   { "name": "demo", "kind": "scene", "style": "comic-extended", "assets": [ { "path": "$meshes/cow.off" } ] },
   { "name": "sketchbook", "kind": "scene", "style": "sketch-pencil", "assets": [ { "path": "$meshes/bull.off" } ] },
   { "name": "turntable", "kind": "turntable", "style": "tween", "product": { "mesh": "$truck", "samples": 24, "size": 512 } },
   { "name": "conference", "kind": "conference",
-    "face": { "source": "$out/conference/packaged-speaker-input.mp4", "neutral": "$speaker_photo", "loop": true } } ] }
+    "face": { "source": "$out/conference/packaged-speaker-input.mp4", "loop": true } } ] }
 EOF
 # A shop owner's product: studio photos of the duck turning on a turntable in front of white, every
 # 15 degrees (the view's azimuth falls as the object turns: --step -15), put on the server with one
