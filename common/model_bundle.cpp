@@ -114,6 +114,10 @@ std::vector<aiColor4D> material_colours(const aiScene& scene) {
   return colours;
 }
 
+// A GLB: a 12-byte header ("glTF", version 2, length), then a JSON chunk (length, "JSON", text),
+// then the binary chunk; little-endian throughout.
+constexpr uint32_t kGlbMagic = 0x46546C67u, kGlbVersion = 2, kJsonChunk = 0x4E4F534Au;
+
 uint32_t read_u32(const std::vector<uint8_t>& b, size_t at) {
   return uint32_t(b[at]) | uint32_t(b[at + 1]) << 8 | uint32_t(b[at + 2]) << 16 | uint32_t(b[at + 3]) << 24;
 }
@@ -125,7 +129,7 @@ void append_u32(std::vector<uint8_t>& b, uint32_t v) {
 // extension that readers then prefer: the factor is written back and the extension removed, so
 // the GLB draws as the model did.
 std::vector<uint8_t> with_material_colours(const std::vector<uint8_t>& glb, const std::vector<aiColor4D>& colours) {
-  if (glb.size() < 20 || read_u32(glb, 0) != 0x46546C67u || read_u32(glb, 16) != 0x4E4F534Au)
+  if (glb.size() < 20 || read_u32(glb, 0) != kGlbMagic || read_u32(glb, 16) != kJsonChunk)
     throw Error("the GLB writer made no GLB");
   const uint32_t json_length = read_u32(glb, 12);
   if (20 + size_t(json_length) > glb.size()) throw Error("the GLB writer made a truncated GLB");
@@ -147,11 +151,11 @@ std::vector<uint8_t> with_material_colours(const std::vector<uint8_t>& glb, cons
   json.resize((json.size() + 3) / 4 * 4, ' ');  // chunks are 4-byte aligned, JSON padded with spaces
   std::vector<uint8_t> out;
   const std::vector<uint8_t> rest(glb.begin() + 20 + json_length, glb.end());  // the binary chunk
-  append_u32(out, 0x46546C67u);
-  append_u32(out, 2);
+  append_u32(out, kGlbMagic);
+  append_u32(out, kGlbVersion);
   append_u32(out, uint32_t(12 + 8 + json.size() + rest.size()));
   append_u32(out, uint32_t(json.size()));
-  append_u32(out, 0x4E4F534Au);
+  append_u32(out, kJsonChunk);
   out.insert(out.end(), json.begin(), json.end());
   out.insert(out.end(), rest.begin(), rest.end());
   return out;

@@ -58,7 +58,7 @@ int main(int argc, char** argv) {
   app.add_option("--listen", listen, "HOST:PORT to listen on (default 127.0.0.1:7878; port 0 picks a free one)");
   app.add_option("--http", http, "HOST:PORT for HTTP: WebSocket clients at /ws, /healthz, /metrics, the session index at /");
   app.add_option("--data", data, "data folder: asset files and the SQLite catalogue (default ./inkwire-data)");
-  app.add_option("--config", config_file, "JSON config: listen, data, name, queue_bytes, sessions (see README)");
+  app.add_option("--config", config_file, "JSON config: listen, data, http, sessions and more (every key in docs/config.md)");
   app.add_flag("--quiet", quiet, "log warnings and errors only");
 
   std::string product_name, product_data;
