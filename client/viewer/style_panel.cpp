@@ -154,14 +154,17 @@ std::optional<protocol::StyleChange> StylePanel::draw(const protocol::StyleChang
     ImGui::PushItemWidth(-1);
     const bool edited = parameter(p, value);
     ImGui::PopItemWidth();
-    if (edited) {
-      pending_[p.name] = value;
+    if (edited) pending_[p.name] = value;
+    // A dragged slider goes to the session once, when let go (every client redraws, a painting
+    // scatters its brushes, on each change); lists, boxes and fields at once.
+    const bool let_go = ImGui::IsItemDeactivatedAfterEdit() && pending_.count(p.name);
+    if ((edited && !ImGui::IsItemActive()) || let_go) {
       // The session's own settings with this one replaced: values the user never touched stay
       // unset, so a placeholder ("0 takes the style file's") keeps following its style file.
       protocol::StyleChange next{.renderer = current.renderer, .settings = {}};
       for (const std::string& s : current.settings)
         if (s.substr(0, s.find('=')) != p.name) next.settings.push_back(s);
-      next.settings.push_back(p.name + "=" + value);
+      next.settings.push_back(p.name + "=" + pending_[p.name]);
       change = std::move(next);
     }
     if (ImGui::IsItemHovered() && !p.help.empty()) ImGui::SetTooltip("%s", p.help.c_str());
