@@ -9,7 +9,7 @@
 #include <glm/trigonometric.hpp>
 #include <imgui.h>
 
-#include "client/viewer/session_view.hpp"
+#include "common/camera.hpp"
 
 namespace inkwire {
 
