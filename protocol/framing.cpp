@@ -13,6 +13,14 @@ FrameHeader parse_header(const uint8_t* h) {
   return header;
 }
 
+Message decode_frame(const uint8_t* frame, size_t size) {
+  if (size < kHeaderBytes) throw ProtocolError("a frame of " + std::to_string(size) + " bytes has no whole header");
+  const FrameHeader header = parse_header(frame);
+  if (header.length != size - kHeaderBytes)
+    throw ProtocolError("frame says " + std::to_string(header.length) + " payload bytes, holds " + std::to_string(size - kHeaderBytes));
+  return decode(header.type, frame + kHeaderBytes, header.length);
+}
+
 void FrameDecoder::feed(const uint8_t* data, size_t size) {
   // Drop consumed bytes before growing, so the buffer never holds more than one frame plus the
   // piece just fed.

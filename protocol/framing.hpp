@@ -28,6 +28,9 @@ Bytes encode(const Message& message);
 size_t encoded_size(const Message& message);
 // Reads one payload; throws ProtocolError on any malformed, out-of-range or trailing byte.
 Message decode(MessageType type, const uint8_t* payload, size_t size);
+// Reads one whole frame (header and payload) held in memory, e.g. a stored one; throws
+// ProtocolError unless it is exactly one valid frame.
+Message decode_frame(const uint8_t* frame, size_t size);
 
 // Splits a byte stream that arrives in arbitrary pieces into messages.
 class FrameDecoder {

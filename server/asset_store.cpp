@@ -1,5 +1,8 @@
 #include "server/asset_store.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <fstream>
 
 #include <sqlite3.h>
@@ -8,6 +11,7 @@
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "protocol/framing.hpp"
+#include "server/session_token.hpp"
 
 namespace inkwire::server {
 namespace fs = std::filesystem;
@@ -69,6 +73,25 @@ protocol::Snapshot decode_state(const protocol::Bytes& frame) {
   return std::move(*snapshot);
 }
 
+// Flushes a file (or a folder's entries) to the disk, so a crash right after cannot leave a
+// named asset whose bytes never reached it.
+void sync_to_disk(const fs::path& path, bool folder) {
+  const int fd = ::open(path.c_str(), (folder ? O_DIRECTORY : 0) | O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw Error("cannot open '" + path.string() + "' to flush it");
+  const int rc = ::fsync(fd);
+  ::close(fd);
+  if (rc != 0) throw Error("cannot flush '" + path.string() + "' to disk");
+}
+
+// Renames a fully written and flushed `partial` to `target` and flushes the folder's entry.
+void name_durably(const fs::path& partial, const fs::path& target, const std::string& what) {
+  std::error_code ec;
+  sync_to_disk(partial, false);
+  fs::rename(partial, target, ec);
+  if (ec) throw Error("cannot store asset '" + what + "': " + ec.message());
+  sync_to_disk(target.parent_path(), true);
+}
+
 }  // namespace
 
 AssetStore::AssetStore(const fs::path& dir) : dir_(dir) {
@@ -118,8 +141,8 @@ AssetAnnounce AssetStore::add_file(const fs::path& source, protocol::AssetKind k
     // Copy under a temporary name and rename, so a crash never leaves a half file under a hash.
     const fs::path partial = target.string() + ".partial";
     fs::copy_file(source, partial, fs::copy_options::overwrite_existing, ec);
-    if (!ec) fs::rename(partial, target, ec);
     if (ec) throw Error("cannot store asset '" + source.string() + "': " + ec.message());
+    name_durably(partial, target, source.string());
   }
   Statement(db_, "INSERT OR REPLACE INTO assets (hash, size, kind, name) VALUES (?, ?, ?, ?)")
       .bind(1, to_hex(announce.hash)).bind(2, int64_t(size)).bind(3, int64_t(kind)).bind(4, announce.name).step();
@@ -137,9 +160,7 @@ AssetAnnounce AssetStore::add_bytes(const protocol::Bytes& bytes, protocol::Asse
       out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
       if (!out) throw Error("cannot store asset '" + name + "': write failed");
     }
-    std::error_code ec;
-    fs::rename(partial, target, ec);
-    if (ec) throw Error("cannot store asset '" + name + "': " + ec.message());
+    name_durably(partial, target, name);
   }
   Statement(db_, "INSERT OR REPLACE INTO assets (hash, size, kind, name) VALUES (?, ?, ?, ?)")
       .bind(1, to_hex(announce.hash)).bind(2, int64_t(bytes.size())).bind(3, int64_t(kind)).bind(4, name).step();
@@ -170,6 +191,20 @@ std::optional<AssetAnnounce> AssetStore::find(const protocol::Hash& hash) const 
 protocol::Bytes AssetStore::read(const protocol::Hash& hash, uint64_t offset, uint32_t length) const {
   const auto announce = find(hash);
   if (!announce) throw Error("no asset " + to_hex(hash));
+  // Checked whole against its hash before its first byte is served, and again whenever the
+  // file has been written since: a corrupted file is refused, never sent.
+  std::error_code ec;
+  const auto written = fs::last_write_time(asset_path(hash), ec);
+  if (ec) throw Error("asset file of " + announce->name + " is missing from the store");
+  if (const auto it = verified_.find(hash); it == verified_.end() || it->second != written) {
+    try {
+      read_verified(hash);
+    } catch (const Error& e) {
+      log(LogLevel::Error, "asset-corrupted", {{"asset", announce->name}, {"hash", to_hex(hash)}, {"reason", e.what()}});
+      throw;
+    }
+    verified_[hash] = written;
+  }
   if (offset > announce->size) throw Error("offset " + std::to_string(offset) + " is past the end of asset " + announce->name);
   std::ifstream in(asset_path(hash), std::ios::binary);
   if (!in) throw Error("asset file of " + announce->name + " is missing from the store");
@@ -185,7 +220,7 @@ std::vector<StoredSession> AssetStore::sessions() const {
   Statement q(db_, "SELECT name, token, state FROM sessions ORDER BY name");
   while (q.step()) {
     try {
-      out.push_back({q.text(1), decode_state(q.blob(2))});
+      out.push_back({as_token_hash(q.text(1)), decode_state(q.blob(2))});
     } catch (const Error& e) {
       log_warn("session-state-unreadable", {{"session", q.text(0)}, {"reason", e.what()}});
     }

@@ -2,9 +2,10 @@
 // The server's embedded store (SPEC N2): asset files named by content hash under DIR/assets,
 // and a SQLite catalogue DIR/catalogue.sqlite of assets and sessions (kind, token, last state).
 // Created on first use; survives a killed server (files are renamed into place before the
-// catalogue names them; SQLite runs in WAL mode). Not thread-safe: the server uses it from its
+// catalogue names them, flushed to disk first; SQLite runs in WAL mode). Not thread-safe: the server uses it from its
 // one I/O thread.
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,7 +17,7 @@ struct sqlite3;
 namespace inkwire::server {
 
 struct StoredSession {
-  std::string token;  // empty: anyone may join
+  std::string token;  // hash_token() of the session's token (session_token.hpp); empty: anyone may join
   protocol::Snapshot state;
 };
 
@@ -37,8 +38,9 @@ class AssetStore {
   // The whole asset, read back and checked against its hash. Throws inkwire::Error if it is
   // unknown, missing, or its bytes are no longer what was stored (a corrupted file).
   protocol::Bytes read_verified(const protocol::Hash& hash) const;
-  // Up to `length` bytes at `offset` (fewer at the end). Throws inkwire::Error if the asset is
-  // unknown, its file is missing, or the offset is past its end.
+  // Up to `length` bytes at `offset` (fewer at the end). The whole file is checked against its
+  // hash before it is first served and whenever it changed since. Throws inkwire::Error if the
+  // asset is unknown, its file is missing or corrupted, or the offset is past its end.
   protocol::Bytes read(const protocol::Hash& hash, uint64_t offset, uint32_t length) const;
 
   // Sessions whose stored state this version cannot read (an older protocol) are left out and
@@ -57,6 +59,7 @@ class AssetStore {
   void exec(const char* sql) const;
   std::filesystem::path dir_;
   sqlite3* db_ = nullptr;
+  mutable std::map<protocol::Hash, std::filesystem::file_time_type> verified_;  // and when its file was written
 };
 
 }  // namespace inkwire::server

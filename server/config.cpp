@@ -108,6 +108,10 @@ ServerConfig ServerConfig::load(const fs::path& file) {
     if (j.contains("queue_bytes")) c.queue_bytes = j.at("queue_bytes").get<size_t>();
     if (j.contains("http")) parse_http(j.at("http").get<std::string>(), c);
     if (j.contains("allowed_origins")) c.allowed_origins = j.at("allowed_origins").get<std::vector<std::string>>();
+    if (j.contains("broker")) c.broker = j.at("broker").get<std::string>();
+    if (j.contains("max_connections")) c.max_connections = j.at("max_connections").get<size_t>();
+    if (j.contains("max_connections_per_address")) c.max_connections_per_address = j.at("max_connections_per_address").get<size_t>();
+    if (j.contains("join_failures_allowed")) c.join_failures_allowed = j.at("join_failures_allowed").get<int>();
     if (j.contains("http_head_timeout_seconds")) c.http_head_timeout_seconds = j.at("http_head_timeout_seconds").get<double>();
     if (j.contains("sessions")) {
       c.sessions.clear();
@@ -131,6 +135,8 @@ ServerConfig ServerConfig::load(const fs::path& file) {
     throw Error("config '" + file.string() + "': " + e.what());
   }
   if (!(c.http_head_timeout_seconds > 0.05 && c.http_head_timeout_seconds <= 300)) throw Error("config: http_head_timeout_seconds must be 0.05..300");
+  if (c.max_connections < 1 || c.max_connections_per_address < 1) throw Error("config: max_connections and max_connections_per_address must be at least 1");
+  if (c.join_failures_allowed < 0) throw Error("config: join_failures_allowed must be 0 or more");
   if (c.queue_bytes < 2 * protocol::kMaxPayload) throw Error("config: queue_bytes must be at least two frames (262144)");
   return c;
 }

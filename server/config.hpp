@@ -49,6 +49,9 @@ struct ServerConfig {
   size_t queue_bytes = 4 << 20;      // per client, beyond which a client is too slow
   double hello_timeout_seconds = 5;  // for a new connection to say hello
   double persist_seconds = 1;        // how often changed session state is written to the catalogue
+  size_t max_connections = 4096;             // clients at once, over every transport
+  size_t max_connections_per_address = 64;   // clients at once from one IP address
+  int join_failures_allowed = 3;             // wrong tokens from one address before its joins are slowed
   std::vector<SessionConfig> sessions;
   // The HTTP listener (WebSocket at /ws, /healthz, /metrics, /): off unless given.
   bool http = false;
@@ -56,6 +59,9 @@ struct ServerConfig {
   uint16_t http_port = 8080;
   std::vector<std::string> allowed_origins;  // page origins that may open a WebSocket; empty: the server's own
   double http_head_timeout_seconds = 5;      // for a request head to arrive whole
+  // Several instances: "redis://HOST:PORT" of the broker they share sessions through (and
+  // `name`, unique per instance). Empty: this instance runs alone.
+  std::string broker;
 
   // The embedded default's demo sessions; models that are not installed are left out.
   static ServerConfig embedded_default();

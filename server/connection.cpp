@@ -6,6 +6,7 @@
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "protocol/framing.hpp"
+#include "server/relay/relay.hpp"
 #include "server/server.hpp"
 #include "server/session.hpp"
 
@@ -23,6 +24,7 @@ Connection::Connection(std::unique_ptr<Transport> transport, Server& server, uin
       server_(server),
       id_(id),
       peer_(transport_->peer()),
+      address_(peer_.substr(0, peer_.rfind(':'))),
       queue_(server.config().queue_bytes) {}
 
 void Connection::start() {
@@ -84,6 +86,14 @@ asio::awaitable<void> Connection::read_loop() {
       if (const std::error_code ec = co_await transport_->read_frame(frame)) break;
       const FrameHeader h = parse_header(frame.data());
       Message message = decode(h.type, frame.data() + kHeaderBytes, frame.size() - kHeaderBytes);
+      // An address that guessed tokens waits before each join is looked at (this connection
+      // reads nothing meanwhile; the others are served as usual).
+      if (h.type == MessageType::Join)
+        if (const auto delay = server_.join_delay(address_); delay.count() > 0) {
+          asio::steady_timer pause(transport_->executor(), delay);
+          co_await pause.async_wait(no_throw);
+          if (closing_) break;
+        }
       handle(message);
     } catch (const ProtocolError& e) {
       log_warn("malformed", {{"client", id_}, {"peer", peer_}, {"transport", transport_->name()}, {"reason", e.what()}});
@@ -148,11 +158,7 @@ void Connection::handle(Message& message) {
         send(ErrorMessage{.code = ErrorCode::NotJoined, .reason = std::string(name_of(type_of(message))) + " before joining a session"});
         break;
       }
-      // Style changes are rare and matter after a restart: persisted at once; poses on a timer.
-      if (session_->apply(message, this) && type_of(message) == MessageType::StyleChange) {
-        log_info("style", {{"session", session_->name()}, {"client", id_}, {"renderer", session_->state().style.renderer}});
-        server_.persist(*session_);
-      }
+      server_.relay().publish(*session_, message, id_);
       break;
     default:
       throw ProtocolError(std::string("a client may not send ") + name_of(type_of(message)));
@@ -166,6 +172,7 @@ void Connection::join(const Join& join) {
     return;
   }
   if (!session->token_matches(join.token)) {
+    server_.join_failed(address_);
     log_warn("bad-token", {{"client", id_}, {"peer", peer_}, {"session", join.session}});
     send(ErrorMessage{.code = ErrorCode::BadToken, .reason = "wrong token for session '" + join.session + "'"});
     return;
@@ -174,6 +181,7 @@ void Connection::join(const Join& join) {
     send(ErrorMessage{.code = ErrorCode::NoAsset, .reason = "session '" + join.session + "' cannot be shown: " + session->unavailable()});
     return;
   }
+  if (!join.token.empty()) server_.join_succeeded(address_);
   leave_session();
   session_ = session;
   session_->join(shared_from_this());

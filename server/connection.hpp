@@ -29,6 +29,7 @@ class Connection : public std::enable_shared_from_this<Connection> {
   // Sends an error, then closes once it is written (or after a second if the peer is not reading).
   void close_with(protocol::ErrorCode code, const std::string& reason);
   uint64_t id() const { return id_; }
+  const std::string& address() const { return address_; }  // the peer's IP address
   const Transport& transport() const { return *transport_; }
 
  private:
@@ -46,7 +47,7 @@ class Connection : public std::enable_shared_from_this<Connection> {
   asio::steady_timer wake_;  // the writer sleeps on it; send() cancels it
   Server& server_;
   uint64_t id_;
-  std::string peer_, client_name_;
+  std::string peer_, address_, client_name_;
   SendQueue queue_;
   std::shared_ptr<Session> session_;
   // A product's tween data waits until the member has its first photo (or two seconds), so

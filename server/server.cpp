@@ -10,6 +10,7 @@
 #include "server/connection.hpp"
 #include "server/face/face_feed.hpp"
 #include "server/products/product_store.hpp"
+#include "server/relay/relay.hpp"
 #include "server/transport.hpp"
 #include "server/web/http_server.hpp"
 
@@ -52,6 +53,7 @@ Server::Server(asio::io_context& io, ServerConfig config) : io_(io), config_(std
   if (!ec) acceptor_.listen(asio::socket_base::max_listen_connections, ec);
   if (ec) throw Error("cannot listen on " + config_.host + ":" + std::to_string(config_.port) + ": " + ec.message());
   if (config_.http) http_ = std::make_unique<HttpServer>(io, *this);
+  relay_ = make_relay(*this, config_);  // a broker this build cannot use is refused before the data folder is made
   store_.emplace(config_.data_dir);
   create_sessions();
 }
@@ -68,7 +70,7 @@ void Server::create_sessions() {
   }
   for (const SessionConfig& c : config_.sessions) {
     if (sessions_.count(c.name)) continue;
-    StoredSession stored{.token = c.token, .state = {}};
+    StoredSession stored{.token = hash_token(c.token), .state = {}};
     if (c.product) {
       try {
         stored.state = find_or_make_product(*store_, *c.product, c.name, [&](int done, int total, const std::string& line) {
@@ -89,17 +91,45 @@ void Server::create_sessions() {
     log_info("session-created", {{"session", c.name}, {"kind", protocol::to_string(c.kind)}, {"assets", stored.state.assets.size()}});
     sessions_[c.name] = std::make_shared<Session>(std::move(stored));
   }
-  // Products are checked (every file against its hash) and their tween data readied once.
-  for (auto& [name, session] : sessions_) {
-    if (session->state().kind != protocol::SessionKind::Turntable || session->state().product.directions.empty()) continue;
-    try {
-      session->set_product(product_tween_messages(*store_, session->state()));
-      log_info("product-loaded", {{"session", name}, {"samples", session->state().product.directions.size()},
-                                  {"cells", session->state().product.cells}});
-    } catch (const Error& e) {
-      session->set_unavailable(e.what());
-      log(LogLevel::Error, "product-unavailable", {{"session", name}, {"reason", e.what()}});
-    }
+  for (auto& [name, session] : sessions_) ready_product(*session);
+}
+
+// A product is checked (every file against its hash) and its tween data readied once.
+void Server::ready_product(Session& session) {
+  if (session.state().kind != protocol::SessionKind::Turntable || session.state().product.directions.empty()) return;
+  try {
+    session.set_product(product_tween_messages(*store_, session.state()));
+    log_info("product-loaded", {{"session", session.name()}, {"samples", session.state().product.directions.size()},
+                                {"cells", session.state().product.cells}});
+  } catch (const Error& e) {
+    session.set_unavailable(e.what());
+    log(LogLevel::Error, "product-unavailable", {{"session", session.name()}, {"reason", e.what()}});
+  }
+}
+
+std::shared_ptr<Session> Server::add_session(StoredSession stored) {
+  const std::string name = stored.state.session;
+  if (sessions_.count(name)) return nullptr;
+  try {
+    store_->save_session(stored);
+  } catch (const Error& e) {
+    log(LogLevel::Error, "session-not-added", {{"session", name}, {"reason", e.what()}});
+    return nullptr;
+  }
+  auto session = std::make_shared<Session>(std::move(stored));
+  ready_product(*session);
+  sessions_[name] = session;
+  log_info("session-added", {{"session", name}, {"kind", protocol::to_string(session->state().kind)}, {"assets", session->state().assets.size()}});
+  return session;
+}
+
+void Server::deliver(Session& session, const protocol::Message& change, uint64_t sender, std::optional<uint32_t> revision) {
+  if (!session.apply(change, sender)) return;
+  if (revision) session.set_revision(*revision);
+  // Style changes are rare and matter after a restart: persisted at once; poses on a timer.
+  if (protocol::type_of(change) == protocol::MessageType::StyleChange) {
+    log_info("style", {{"session", session.name()}, {"client", sender}, {"renderer", session.state().style.renderer}});
+    persist(session);
   }
 }
 
@@ -121,8 +151,8 @@ void Server::start_face_feeds() {
       persist(*session);
       std::weak_ptr<Session> weak = session;
       feed->start([this, weak](const protocol::ExpressionCode& code) {
-        asio::post(io_, [weak, code] {
-          if (const auto s = weak.lock()) s->apply(code, nullptr);
+        asio::post(io_, [this, weak, code] {
+          if (const auto s = weak.lock()) relay_->publish(*s, code, 0);
         });
       });
       log_info("face-source-started", {{"session", c.name}, {"source", c.face->source},
@@ -142,6 +172,7 @@ void Server::start() {
                  }), asio::detached);
   asio::co_spawn(io_, persist_loop(), asio::detached);
   if (http_) http_->start();
+  relay_->start();
 }
 
 asio::awaitable<void> Server::persist_loop() {
@@ -167,7 +198,10 @@ std::shared_ptr<Session> Server::find_session(const std::string& name) const {
   return it == sessions_.end() ? nullptr : it->second;
 }
 
-void Server::forget(const Connection* connection) { connections_.erase(connection); }
+void Server::forget(const Connection* connection) {
+  const std::string address = connection->address();  // erasing may end the connection
+  if (connections_.erase(connection) && --connections_per_address_[address] == 0) connections_per_address_.erase(address);
+}
 
 void Server::adopt(std::unique_ptr<Transport> transport) {
   if (stopping_) {
@@ -175,8 +209,35 @@ void Server::adopt(std::unique_ptr<Transport> transport) {
     return;
   }
   auto connection = std::make_shared<Connection>(std::move(transport), *this, next_id_++);
+  size_t& from_address = connections_per_address_[connection->address()];
   connections_[connection.get()] = connection;
+  ++from_address;
   connection->start();
+  // Past a cap the newcomer is told why and let go; everyone already connected carries on.
+  if (connections_.size() > config_.max_connections)
+    connection->close_with(protocol::ErrorCode::Refused, "the server is full (" + std::to_string(config_.max_connections) + " connections)");
+  else if (from_address > config_.max_connections_per_address)
+    connection->close_with(protocol::ErrorCode::Refused, "too many connections from " + connection->address() + " (" +
+                                                              std::to_string(config_.max_connections_per_address) + ")");
+}
+
+std::chrono::milliseconds Server::join_delay(const std::string& address) {
+  const auto it = join_failures_.find(address);
+  if (it == join_failures_.end()) return {};
+  // Forgiven after a quiet while; the map never outgrows the addresses that guessed lately.
+  if (std::chrono::steady_clock::now() - it->second.last > std::chrono::minutes(10)) {
+    join_failures_.erase(it);
+    return {};
+  }
+  const int over = it->second.count - config_.join_failures_allowed;
+  if (over <= 0) return {};
+  return std::chrono::milliseconds(std::min<int64_t>(int64_t(250) << std::min(over - 1, 10), 8000));
+}
+
+void Server::join_failed(const std::string& address) {
+  JoinFailures& f = join_failures_[address];
+  ++f.count;
+  f.last = std::chrono::steady_clock::now();
 }
 
 void Server::stop() {
@@ -187,6 +248,7 @@ void Server::stop() {
   acceptor_.close(ec);
   if (http_) http_->stop();
   persist_timer_.cancel();
+  relay_->stop();
   face_feeds_.clear();  // joins their threads; codes they posted are applied or dropped with the context
   for (auto& [name, session] : sessions_) persist(*session);
   // Copy: closing connections forget themselves.

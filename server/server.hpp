@@ -1,6 +1,7 @@
 #pragma once
 // The Inkwire server (SPEC N1-N4): accepts clients on one Asio I/O thread, keeps sessions and
 // their state, serves assets from the store, persists session state, shuts down gracefully.
+#include <chrono>
 #include <map>
 #include <memory>
 #include <optional>
@@ -18,6 +19,7 @@ namespace inkwire::server {
 class Connection;
 class FaceFeed;
 class HttpServer;
+class Relay;
 class Transport;
 
 class Server {
@@ -40,14 +42,31 @@ class Server {
   const ServerConfig& config() const { return config_; }
   void forget(const Connection* connection);
   // A client arrived over another transport (a WebSocket upgraded on the HTTP listener).
+  // Refused, with the reason, past the connection caps (overall and per address).
   void adopt(std::unique_ptr<Transport> transport);
+
+  // Wrong tokens from one address slow that address's joins down (SPEC D3): none for the first
+  // few, then doubling up to a cap; a right token clears the count.
+  std::chrono::milliseconds join_delay(const std::string& address);
+  void join_failed(const std::string& address);
+  void join_succeeded(const std::string& address) { join_failures_.erase(address); }
   size_t connection_count() const { return connections_.size(); }
   const std::map<std::string, std::shared_ptr<Session>>& sessions() const { return sessions_; }
   void persist(Session& session);
   bool stopping() const { return stopping_; }
+  asio::io_context& io() { return io_; }
+
+  // Changes to sessions go through the relay (one instance, or several through a broker); the
+  // relay hands each back to deliver() in the order every instance agrees on.
+  Relay& relay() { return *relay_; }
+  void deliver(Session& session, const protocol::Message& change, uint64_t sender, std::optional<uint32_t> revision = {});
+  // A session defined elsewhere (another instance): stored in the catalogue and served. Null if
+  // a session of that name exists or it cannot be stored.
+  std::shared_ptr<Session> add_session(StoredSession stored);
 
  private:
   void create_sessions();
+  void ready_product(Session& session);
   void start_face_feeds();
   asio::awaitable<void> persist_loop();
 
@@ -58,8 +77,15 @@ class Server {
   asio::steady_timer persist_timer_;
   std::map<std::string, std::shared_ptr<Session>> sessions_;
   std::map<const Connection*, std::shared_ptr<Connection>> connections_;
+  std::map<std::string, size_t> connections_per_address_;
+  struct JoinFailures {
+    int count = 0;
+    std::chrono::steady_clock::time_point last;
+  };
+  std::map<std::string, JoinFailures> join_failures_;
   std::vector<std::unique_ptr<FaceFeed>> face_feeds_;
   std::unique_ptr<HttpServer> http_;
+  std::unique_ptr<Relay> relay_;
   uint64_t next_id_ = 1;
   bool stopping_ = false;
 };

@@ -39,12 +39,12 @@ void Session::leave(const Connection* member) {
   });
 }
 
-bool Session::apply(const protocol::Message& change, const Connection* sender) {
+bool Session::apply(const protocol::Message& change, uint64_t sender) {
   if (!protocol::apply_state_change(stored_.state, change)) return false;
   dirty = true;
   const auto frame = std::make_shared<const protocol::Bytes>(protocol::encode(change));
   for (const auto& weak : members_)
-    if (const auto member = weak.lock(); member && member.get() != sender) member->send_frame(frame, protocol::type_of(change));
+    if (const auto member = weak.lock(); member && member->id() != sender) member->send_frame(frame, protocol::type_of(change));
   return true;
 }
 

@@ -7,6 +7,7 @@
 
 #include "protocol/messages.hpp"
 #include "server/asset_store.hpp"
+#include "server/session_token.hpp"
 
 namespace inkwire::server {
 
@@ -17,7 +18,7 @@ class Session {
   explicit Session(StoredSession stored) : stored_(std::move(stored)) {}
 
   const std::string& name() const { return stored_.state.session; }
-  bool token_matches(const std::string& token) const { return stored_.token.empty() || token == stored_.token; }
+  bool token_matches(const std::string& token) const { return server::token_matches(stored_.token, token); }
   const protocol::Snapshot& state() const { return stored_.state; }
   const StoredSession& stored() const { return stored_; }
   const protocol::AssetAnnounce* find_asset(const protocol::Hash& hash) const;  // null unless listed
@@ -26,9 +27,13 @@ class Session {
   void leave(const Connection* member);
   size_t members() const { return members_.size(); }
 
-  // Applies a state message (style, camera, object, expression) from `sender`, bumps the
-  // revision and forwards it, encoded once, to every other member. False if it is no change.
-  bool apply(const protocol::Message& change, const Connection* sender);
+  // Applies a state message (style, camera, object, expression) from the member with
+  // connection id `sender` (0: none), bumps the revision and forwards it, encoded once, to every
+  // other member. False if it is no change. Called by the relay (server/relay/), which decides
+  // the order of changes.
+  bool apply(const protocol::Message& change, uint64_t sender);
+  // With a broker, the revision is the broker's count of the session's changes.
+  void set_revision(uint32_t revision) { stored_.state.revision = revision; }
 
   // A conference speaker's neutral photo and landmarks (SPEC F5) replace the session's image
   // and landmark assets. Called before clients are served.

@@ -52,13 +52,15 @@ int add_product(const std::string& name, const server::ProductSource& source, co
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string listen, http, data, config_file;
+  std::string listen, http, data, config_file, broker, name;
   bool quiet = false;
   CLI::App app{"inkwire-server: serves Inkwire sessions (shared scenes, turntables, conferences) to thin clients"};
   app.add_option("--listen", listen, "HOST:PORT to listen on (default 127.0.0.1:7878; port 0 picks a free one)");
   app.add_option("--http", http, "HOST:PORT for HTTP: WebSocket clients at /ws, /healthz, /metrics, the session index at /");
   app.add_option("--data", data, "data folder: asset files and the SQLite catalogue (default ./inkwire-data)");
   app.add_option("--config", config_file, "JSON config: listen, data, http, sessions and more (every key in docs/config.md)");
+  app.add_option("--broker", broker, "redis://HOST:PORT: share sessions with the other instances on that Redis (each with its own --name)");
+  app.add_option("--name", name, "this instance's name, unique among the instances sharing a broker (default inkwire-server)");
   app.add_flag("--quiet", quiet, "log warnings and errors only");
 
   std::string product_name, product_data;
@@ -103,6 +105,8 @@ int main(int argc, char** argv) {
     if (!listen.empty()) server::parse_listen(listen, config);
     if (!http.empty()) server::parse_http(http, config);
     if (!data.empty()) config.data_dir = data;
+    if (!broker.empty()) config.broker = broker;
+    if (!name.empty()) config.name = name;
     // A client vanishing mid-write must not kill the server.
     std::signal(SIGPIPE, SIG_IGN);
     asio::io_context io(1);

@@ -21,7 +21,8 @@ class Process {
  public:
   Process(const std::string& program, const std::vector<std::string>& args, const std::filesystem::path& log)
       : log_(log) {
-    std::vector<std::string> all{std::string(INKWIRE_BIN_DIR) + "/" + program};
+    // A program of build/bin by name, or any other by its absolute path (a broker, say).
+    std::vector<std::string> all{program.starts_with('/') ? program : std::string(INKWIRE_BIN_DIR) + "/" + program};
     all.insert(all.end(), args.begin(), args.end());
     std::vector<char*> argv;
     for (std::string& a : all) argv.push_back(a.data());

@@ -1,0 +1,429 @@
+#include "server/relay/redis_relay.hpp"
+
+#include <hiredis/hiredis.h>
+
+#include <algorithm>
+#include <charconv>
+
+#include "common/content_hash.hpp"
+#include "common/error.hpp"
+#include "common/log.hpp"
+#include "protocol/framing.hpp"
+#include "server/server.hpp"
+
+namespace inkwire::server {
+namespace {
+
+using namespace protocol;
+using namespace std::chrono_literals;
+
+constexpr std::string_view kEvents = "inkwire:events";      // changes, published by kPublish
+constexpr std::string_view kNotices = "inkwire:notices";    // a session was shared: its name
+constexpr std::string_view kSessions = "inkwire:sessions";  // hash: name -> definition
+constexpr uint64_t kMaxSharedAsset = 64 << 20;              // larger assets need a shared data folder
+
+std::string state_key(const std::string& session) { return "inkwire:state:" + session; }
+std::string asset_key(const Hash& hash) { return "inkwire:asset:" + to_hex(hash); }
+
+// Stores a change as its session's latest of its kind, counts it in the session's revision and
+// publishes "REVISION " + ARGV[4] + frame, all at once: the revision orders changes for every
+// instance. KEYS[1] the state hash; ARGV: field, frame, channel, the rest of the header.
+constexpr std::string_view kPublish = R"lua(
+redis.call('HSET', KEYS[1], ARGV[1], ARGV[2])
+local revision = redis.call('HINCRBY', KEYS[1], 'revision', 1)
+redis.call('PUBLISH', ARGV[3], revision .. ' ' .. ARGV[4] .. ARGV[2])
+return revision)lua";
+
+// The session's state whole, seeded with this instance's own when the broker has none.
+// KEYS[1] the state hash; ARGV: revision, REV, then field, frame pairs.
+constexpr std::string_view kSeedAndRead = R"lua(
+if redis.call('EXISTS', KEYS[1]) == 0 then redis.call('HSET', KEYS[1], unpack(ARGV)) end
+return redis.call('HGETALL', KEYS[1]))lua";
+
+std::string field_of(const Message& change) {
+  switch (type_of(change)) {
+    case MessageType::StyleChange: return "style";
+    case MessageType::CameraPose: return "camera";
+    case MessageType::ObjectPose: return "object";
+    case MessageType::ExpressionCode: return "expression";
+    default: throw Error(std::string("a ") + name_of(type_of(change)) + " is not session state");
+  }
+}
+
+// Whether applying `change` would change the snapshot's state.
+bool differs(const Snapshot& s, const Message& change) {
+  if (const auto* m = std::get_if<StyleChange>(&change)) return !(*m == s.style);
+  if (const auto* m = std::get_if<CameraPose>(&change)) return !(*m == s.camera);
+  if (const auto* m = std::get_if<ObjectPose>(&change)) return !(*m == s.object);
+  if (const auto* m = std::get_if<ExpressionCode>(&change)) return !(*m == s.expression);
+  return false;
+}
+
+std::string_view text_of(const redisReply* r) { return r && r->str ? std::string_view(r->str, r->len) : std::string_view(); }
+bool is_error(const redisReply* r) { return !r || r->type == REDIS_REPLY_ERROR; }
+std::string reason_of(const redisReply* r) { return r ? std::string(text_of(r)) : "the broker went away"; }
+
+int64_t now_us() {
+  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
+// "<length>:<bytes>", so names may hold any character.
+std::string counted(const std::string& s) { return std::to_string(s.size()) + ":" + s; }
+
+// Reads what counted() and the publish script wrote; false if the text is not of that form.
+struct Reader {
+  std::string_view rest;
+  bool number(uint64_t& out, char end) {
+    const auto [p, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), out);
+    if (ec != std::errc() || p == rest.data() + rest.size() || *p != end) return false;
+    rest.remove_prefix(size_t(p - rest.data()) + 1);
+    return true;
+  }
+  bool counted(std::string& out) {
+    uint64_t n = 0;
+    if (!number(n, ':') || n > rest.size() || n > 4096) return false;
+    out = std::string(rest.substr(0, n));
+    rest.remove_prefix(n);
+    return true;
+  }
+};
+
+// A session's definition as instances share it: its token and its state as a snapshot frame.
+std::string definition_of(const StoredSession& stored) {
+  const Bytes frame = encode(stored.state);
+  return counted(stored.token) + std::string(frame.begin(), frame.end());
+}
+
+std::optional<StoredSession> session_from_definition(std::string_view text) {
+  Reader r{text};
+  StoredSession stored;
+  if (!r.counted(stored.token)) return std::nullopt;
+  Message message = decode_frame(reinterpret_cast<const uint8_t*>(r.rest.data()), r.rest.size());
+  auto* snapshot = std::get_if<Snapshot>(&message);
+  if (!snapshot) return std::nullopt;
+  stored.state = std::move(*snapshot);
+  return stored;
+}
+
+}  // namespace
+
+BrokerAddress parse_broker(const std::string& url) {
+  constexpr std::string_view scheme = "redis://";
+  if (url.rfind("nats://", 0) == 0) throw Error("broker '" + url + "': this build relays through Redis; give redis://HOST:PORT");
+  if (url.rfind(scheme, 0) != 0) throw Error("broker '" + url + "' is not redis://HOST:PORT");
+  const std::string rest = url.substr(scheme.size());
+  BrokerAddress a;
+  const size_t colon = rest.rfind(':');
+  a.host = rest.substr(0, colon);
+  if (colon != std::string::npos) {
+    const std::string port = rest.substr(colon + 1);
+    unsigned value = 0;
+    const auto [p, ec] = std::from_chars(port.data(), port.data() + port.size(), value);
+    if (ec != std::errc() || p != port.data() + port.size() || value == 0 || value > 65535)
+      throw Error("broker '" + url + "': port '" + port + "' is not 1-65535");
+    a.port = uint16_t(value);
+  }
+  if (a.host.empty()) throw Error("broker '" + url + "' names no host");
+  return a;
+}
+
+RedisRelay::RedisRelay(Server& server, BrokerAddress address)
+    : server_(server), address_(std::move(address)), io_(server.io()), commands_(io_), events_(io_), retry_timer_(io_) {
+  status_.broker = true;
+  status_.connected = false;
+}
+
+RedisRelay::~RedisRelay() { stop(); }
+
+void RedisRelay::start() {
+  log_info("broker-connecting", {{"broker", "redis://" + address_.host + ":" + std::to_string(address_.port)}});
+  connect();
+}
+
+void RedisRelay::stop() {
+  stopped_ = true;
+  ready_ = false;
+  retry_timer_.cancel();
+  commands_.disconnect();
+  events_.disconnect();
+}
+
+RelayStatus RedisRelay::status() const {
+  RelayStatus s = status_;
+  s.connected = ready_;
+  s.outbox = unsent_.size();
+  return s;
+}
+
+void RedisRelay::connect() {
+  connections_up_ = 0;
+  subscriptions_ = 0;
+  const auto up = [this] {
+    if (++connections_up_ < 2) return;
+    if (!events_.subscribe({kEvents, kNotices}, [this](const redisReply* r) { on_subscription(r); }))
+      lost("cannot subscribe");
+  };
+  const auto down = [this](const std::string& reason) { lost(reason); };
+  commands_.connect(address_.host, address_.port, 2s, up, down);
+  events_.connect(address_.host, address_.port, 2s, up, down);
+}
+
+void RedisRelay::lost(const std::string& reason) {
+  if (stopped_ || retry_scheduled_) return;
+  const bool was_ready = std::exchange(ready_, false);
+  retry_scheduled_ = true;
+  // Replies still pending are answered with null now: their changes are applied here and kept.
+  commands_.disconnect();
+  events_.disconnect();
+  for (auto& [name, sync] : syncs_) sync.syncing = false, sync.waiting.clear();
+  log(was_ready ? LogLevel::Warn : LogLevel::Info, was_ready ? "broker-lost" : "broker-unreachable",
+      {{"reason", reason}, {"retry_ms", backoff_.count()}, {"serving", "own members only"}});
+  retry_timer_.expires_after(backoff_);
+  backoff_ = std::min<std::chrono::milliseconds>(backoff_ * 2, 5s);
+  retry_timer_.async_wait([this](std::error_code ec) {
+    retry_scheduled_ = false;
+    if (!ec && !stopped_) connect();
+  });
+}
+
+void RedisRelay::on_subscription(const redisReply* r) {
+  if (!r || r->type != REDIS_REPLY_ARRAY || r->elements < 3) return;  // null: `lost` follows
+  const std::string_view kind = text_of(r->element[0]), channel = text_of(r->element[1]);
+  if (kind == "subscribe") {
+    if (++subscriptions_ == 2) ready();
+    return;
+  }
+  if (kind != "message") return;
+  if (channel == kEvents) on_event(text_of(r->element[2]));
+  else if (channel == kNotices) discover();
+}
+
+void RedisRelay::ready() {
+  ready_ = true;
+  backoff_ = 100ms;
+  if (std::exchange(ever_ready_, true)) ++status_.reconnects;
+  log_info("broker-connected", {{"instance", server_.config().name}, {"unsent", unsent_.size()}});
+  // Every session waits for its resync from here on, so no change is applied out of order. Each
+  // resync sends the changes made here while the broker was away that it does not hold yet.
+  for (const auto& [name, session] : server_.sessions()) syncs_[name].syncing = true;
+  for (const auto& [name, session] : server_.sessions()) share(*session);
+  discover();
+  for (const auto& [name, session] : server_.sessions()) resync(name);
+}
+
+void RedisRelay::publish(Session& session, const Message& change, uint64_t sender) {
+  const std::string field = field_of(change);
+  const Bytes frame = encode(change);
+  if (!ready_) {
+    server_.deliver(session, change, sender);
+    keep_unsent(session.name(), field, frame, sender);
+    return;
+  }
+  send_change(session.name(), field, frame, sender);
+}
+
+void RedisRelay::keep_unsent(const std::string& session, const std::string& field, const Bytes& frame, uint64_t sender) {
+  unsent_[{session, field}] = {frame, sender};
+}
+
+void RedisRelay::send_change(const std::string& session, const std::string& field, const Bytes& frame, uint64_t sender) {
+  const std::string key = state_key(session);
+  const std::string header = std::to_string(now_us()) + " " + std::to_string(sender) + " " + counted(server_.config().name) + counted(session);
+  const std::string_view bytes(reinterpret_cast<const char*>(frame.data()), frame.size());
+  const bool sent = commands_.command({"EVAL", kPublish, "1", key, field, bytes, kEvents, header}, [this, session, field, frame, sender](const redisReply* r) {
+    if (!is_error(r)) return;
+    // Not known to be published: applied here at once, and sent again once the broker is back.
+    log_warn("broker-publish-failed", {{"session", session}, {"field", field}, {"reason", reason_of(r)}});
+    if (const auto s = server_.find_session(session)) {
+      server_.deliver(*s, decode_frame(frame.data(), frame.size()), sender);
+      keep_unsent(session, field, frame, sender);
+    }
+  });
+  if (sent) ++status_.published;
+  else keep_unsent(session, field, frame, sender);
+}
+
+void RedisRelay::on_event(std::string_view payload) {
+  Event e;
+  Reader r{payload};
+  uint64_t revision = 0, published = 0;
+  if (!r.number(revision, ' ') || !r.number(published, ' ') || !r.number(e.sender, ' ') || !r.counted(e.origin) || !r.counted(e.session)) {
+    log_warn("broker-event-malformed", {{"bytes", payload.size()}});
+    return;
+  }
+  try {
+    e.change = decode_frame(reinterpret_cast<const uint8_t*>(r.rest.data()), r.rest.size());
+    field_of(e.change);  // only state changes travel here
+  } catch (const std::exception& ex) {
+    log_warn("broker-event-malformed", {{"session", e.session}, {"reason", ex.what()}});
+    return;
+  }
+  e.revision = uint32_t(revision);
+  e.published_us = int64_t(published);
+  ++status_.received;
+  if (e.origin == server_.config().name) status_.lag_seconds = double(now_us() - e.published_us) / 1e6;
+  const auto session = server_.find_session(e.session);
+  if (!session) return;  // not here (yet): adopted with its state when its notice comes
+  SessionSync& sync = syncs_[e.session];
+  if (sync.syncing) sync.waiting.push_back(std::move(e));
+  else apply_in_order(*session, sync, std::move(e));
+}
+
+void RedisRelay::apply_in_order(Session& session, SessionSync& sync, Event e) {
+  if (e.revision <= sync.revision) return;  // in the state a resync read already
+  if (e.revision != sync.revision + 1) {    // one was missed: read the state whole
+    sync.waiting.push_back(std::move(e));
+    resync(session.name());
+    return;
+  }
+  sync.revision = e.revision;
+  server_.deliver(session, e.change, e.origin == server_.config().name ? e.sender : 0, e.revision);
+}
+
+void RedisRelay::resync(const std::string& name) {
+  const auto session = server_.find_session(name);
+  if (!session) return;
+  syncs_[name].syncing = true;
+  ++status_.resyncs;
+  const Snapshot& s = session->state();
+  std::vector<std::string> own{"revision", std::to_string(s.revision)};
+  for (const Message& m : {Message(s.style), Message(s.camera), Message(s.object), Message(s.expression)}) {
+    const Bytes frame = encode(m);
+    own.push_back(field_of(m));
+    own.emplace_back(frame.begin(), frame.end());
+  }
+  std::vector<std::string_view> args{"EVAL", kSeedAndRead, "1"};
+  const std::string key = state_key(name);
+  args.push_back(key);
+  args.insert(args.end(), own.begin(), own.end());
+  commands_.command(args, [this, name](const redisReply* r) {
+    SessionSync& sync = syncs_[name];
+    const auto session = server_.find_session(name);
+    if (is_error(r) || r->type != REDIS_REPLY_ARRAY || !session) {
+      sync.syncing = false;
+      if (r) log_warn("broker-resync-failed", {{"session", name}, {"reason", reason_of(r)}});
+      return;
+    }
+    uint64_t revision = 0;
+    for (size_t i = 0; i + 1 < r->elements; i += 2) {
+      const std::string_view field = text_of(r->element[i]), value = text_of(r->element[i + 1]);
+      if (field == "revision") {
+        Reader{std::string(value) + " "}.number(revision, ' ');
+        continue;
+      }
+      // A change made here while away: already applied here, and sent below unless the broker has it.
+      if (const auto mine = unsent_.find({name, std::string(field)}); mine != unsent_.end()) {
+        if (std::string_view(reinterpret_cast<const char*>(mine->second.frame.data()), mine->second.frame.size()) == value) unsent_.erase(mine);
+        continue;
+      }
+      try {
+        const Message change = decode_frame(reinterpret_cast<const uint8_t*>(value.data()), value.size());
+        if (field_of(change) != field) continue;
+        if (differs(session->state(), change)) server_.deliver(*session, change, 0);  // members hear only what changed
+      } catch (const std::exception& e) {
+        log_warn("broker-state-malformed", {{"session", name}, {"field", field}, {"reason", e.what()}});
+      }
+    }
+    sync.revision = uint32_t(revision);
+    session->set_revision(sync.revision);
+    sync.syncing = false;
+    for (auto it = unsent_.lower_bound({name, ""}); it != unsent_.end() && it->first.first == name; it = unsent_.erase(it))
+      send_change(name, it->first.second, it->second.frame, it->second.sender);
+    std::vector<Event> waiting = std::exchange(sync.waiting, {});
+    std::sort(waiting.begin(), waiting.end(), [](const Event& a, const Event& b) { return a.revision < b.revision; });
+    for (Event& e : waiting)
+      if (!sync.syncing) apply_in_order(*session, sync, std::move(e));
+  });
+}
+
+void RedisRelay::share(const Session& session) {
+  const std::string name = session.name();
+  commands_.command({"HSETNX", kSessions, name, definition_of(session.stored())}, [this, name](const redisReply* r) {
+    if (is_error(r)) return;
+    if (r->type == REDIS_REPLY_INTEGER && r->integer == 1) {
+      log_info("broker-session-shared", {{"session", name}});
+      commands_.command({"PUBLISH", kNotices, name}, [](const redisReply*) {});
+    }
+  });
+  for (const AssetAnnounce& asset : session.state().assets) share_asset(asset);
+}
+
+void RedisRelay::share_asset(const AssetAnnounce& asset) {
+  if (asset.size > kMaxSharedAsset) {
+    log_warn("broker-asset-not-shared", {{"asset", asset.name}, {"bytes", asset.size}, {"reason", "over 64 MiB: give the instances one data folder"}});
+    return;
+  }
+  const std::string key = asset_key(asset.hash);
+  commands_.command({"EXISTS", key}, [this, key, asset](const redisReply* r) {
+    if (is_error(r) || r->integer != 0) return;
+    try {
+      const Bytes bytes = server_.store().read_verified(asset.hash);
+      commands_.command({"SET", key, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), "NX"}, [](const redisReply*) {});
+    } catch (const Error& e) {
+      log_warn("broker-asset-not-shared", {{"asset", asset.name}, {"reason", e.what()}});
+    }
+  });
+}
+
+void RedisRelay::discover() {
+  commands_.command({"HGETALL", kSessions}, [this](const redisReply* r) {
+    if (is_error(r) || r->type != REDIS_REPLY_ARRAY) return;
+    for (size_t i = 0; i + 1 < r->elements; i += 2) {
+      const std::string name(text_of(r->element[i]));
+      if (!server_.find_session(name) && !adopting_.count(name)) adopt_remote(name, text_of(r->element[i + 1]));
+    }
+  });
+}
+
+// A session another instance shared: its assets are fetched, checked against their hashes and
+// stored, then the session is served here too.
+void RedisRelay::adopt_remote(const std::string& name, std::string_view definition) {
+  std::optional<StoredSession> stored;
+  try {
+    stored = session_from_definition(definition);
+  } catch (const std::exception& e) {
+    log_warn("broker-session-malformed", {{"session", name}, {"reason", e.what()}});
+    return;
+  }
+  if (!stored || stored->state.session != name) {
+    log_warn("broker-session-malformed", {{"session", name}});
+    return;
+  }
+  adopting_.insert(name);
+  auto missing = std::make_shared<std::vector<AssetAnnounce>>();
+  for (const AssetAnnounce& a : stored->state.assets)
+    if (!server_.store().find(a.hash)) missing->push_back(a);
+  auto session = std::make_shared<StoredSession>(std::move(*stored));
+  auto left = std::make_shared<size_t>(missing->size());
+  auto failed = std::make_shared<bool>(false);
+  const auto finish = [this, name, session, failed] {
+    adopting_.erase(name);
+    if (*failed || server_.find_session(name)) return;
+    if (server_.add_session(std::move(*session))) resync(name);
+  };
+  if (missing->empty()) return finish();
+  for (const AssetAnnounce& asset : *missing) {
+    commands_.command({"GET", asset_key(asset.hash)}, [this, name, asset, left, failed, finish](const redisReply* r) {
+      if (is_error(r) || r->type != REDIS_REPLY_STRING) {
+        if (!*failed) log_warn("broker-asset-missing", {{"session", name}, {"asset", asset.name}, {"reason", r ? "not in the broker" : "the broker went away"}});
+        *failed = true;
+      } else {
+        const std::string_view bytes = text_of(r);
+        if (content_hash(bytes.data(), bytes.size()) != asset.hash) {
+          log_warn("broker-asset-corrupted", {{"session", name}, {"asset", asset.name}, {"reason", "does not match its hash"}});
+          *failed = true;
+        } else {
+          try {
+            server_.store().add_bytes(Bytes(bytes.begin(), bytes.end()), asset.kind, asset.name);
+          } catch (const Error& e) {
+            log(LogLevel::Error, "broker-asset-not-stored", {{"session", name}, {"asset", asset.name}, {"reason", e.what()}});
+            *failed = true;
+          }
+        }
+      }
+      if (--*left == 0) finish();
+    });
+  }
+}
+
+}  // namespace inkwire::server

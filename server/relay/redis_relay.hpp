@@ -1,0 +1,93 @@
+#pragma once
+// Sessions shared by several server instances through Redis (SPEC D1; the layout in
+// docs/deploy.md "What the broker holds"):
+// - A change goes to Redis, where one script stores it in the session's state hash, counts it
+//   in the session's revision and publishes it; every instance, the sender's own included,
+//   applies changes in the order of those revisions, so all agree. A gap in the revisions, a
+//   late start or a return of the broker reads the session's state whole (a resync).
+// - Sessions and their assets are shared too: an instance puts its sessions' definitions and
+//   asset bytes into Redis, and makes sessions it lacks from there, each asset checked against
+//   its hash before it is stored.
+// - While the broker is away an instance serves its own members as a single instance would,
+//   keeps the latest change of each kind per session, publishes them when the broker is back
+//   (reconnecting with back-off) and then resynchronises.
+// All of it runs on the server's I/O thread through asynchronous hiredis calls.
+#include <chrono>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <asio.hpp>
+
+#include "server/relay/redis_connection.hpp"
+#include "server/relay/relay.hpp"
+
+namespace inkwire::server {
+
+struct StoredSession;
+
+struct BrokerAddress {
+  std::string host;
+  uint16_t port = 6379;
+};
+// "redis://HOST:PORT" (port optional). Throws inkwire::Error for anything else, naming what
+// this build can use.
+BrokerAddress parse_broker(const std::string& url);
+
+class RedisRelay final : public Relay {
+ public:
+  RedisRelay(Server& server, BrokerAddress address);
+  ~RedisRelay() override;
+  void start() override;
+  void stop() override;
+  void publish(Session& session, const protocol::Message& change, uint64_t sender) override;
+  RelayStatus status() const override;
+
+ private:
+  struct Event {
+    uint32_t revision = 0;
+    int64_t published_us = 0;
+    uint64_t sender = 0;
+    std::string origin, session;
+    protocol::Message change;
+  };
+  struct SessionSync {
+    uint32_t revision = 0;  // the broker's revision applied here
+    bool syncing = false;   // a resync is under way: events wait for it
+    std::vector<Event> waiting;
+  };
+  struct Unsent {
+    protocol::Bytes frame;
+    uint64_t sender = 0;
+  };
+
+  void connect();
+  void lost(const std::string& reason);
+  void on_subscription(const redisReply* reply);
+  void ready();
+  void send_change(const std::string& session, const std::string& field, const protocol::Bytes& frame, uint64_t sender);
+  void keep_unsent(const std::string& session, const std::string& field, const protocol::Bytes& frame, uint64_t sender);
+  void on_event(std::string_view payload);
+  void apply_in_order(Session& session, SessionSync& sync, Event event);
+  void resync(const std::string& session);
+  void share(const Session& session);
+  void share_asset(const protocol::AssetAnnounce& asset);
+  void discover();
+  void adopt_remote(const std::string& name, std::string_view value);
+
+  Server& server_;
+  BrokerAddress address_;
+  asio::io_context& io_;
+  RedisConnection commands_, events_;
+  asio::steady_timer retry_timer_;
+  std::chrono::milliseconds backoff_{100};
+  int connections_up_ = 0, subscriptions_ = 0;
+  bool ready_ = false, retry_scheduled_ = false, stopped_ = false, ever_ready_ = false;
+  std::map<std::string, SessionSync> syncs_;
+  std::map<std::pair<std::string, std::string>, Unsent> unsent_;  // (session, field): latest wins
+  std::set<std::string> adopting_;                                 // remote sessions whose assets are on their way
+  RelayStatus status_;
+};
+
+}  // namespace inkwire::server

@@ -1,0 +1,46 @@
+#pragma once
+// How a change to a session's state reaches its members (ARCHITECTURE "Networking"): on one
+// instance it is applied and forwarded at once (LocalRelay); with several instances it goes
+// through a broker, which orders it among every instance's changes and brings it to all of them
+// (RedisRelay). Connections and face feeds only ever call publish(); they never know which.
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "protocol/messages.hpp"
+
+namespace inkwire::server {
+
+class Server;
+class Session;
+struct ServerConfig;
+
+// What /healthz and /metrics say of the relay.
+struct RelayStatus {
+  bool broker = false;     // a broker is configured
+  bool connected = true;   // ... and reachable now (always true without one)
+  uint64_t published = 0;  // changes handed to the broker
+  uint64_t received = 0;   // changes that came back from it (from every instance)
+  uint64_t resyncs = 0;    // sessions read whole from the broker (after a gap or an outage)
+  uint64_t reconnects = 0;
+  size_t outbox = 0;       // changes made while the broker was away, waiting to go out
+  double lag_seconds = 0;  // last time from publishing a change to its coming back
+};
+
+class Relay {
+ public:
+  virtual ~Relay() = default;
+  virtual void start() = 0;
+  virtual void stop() = 0;
+  // A change (style, camera, object pose, expression) to `session` made by the member with
+  // connection id `sender` (0: the server itself). Every member but the sender gets it, on
+  // every instance, in the same order everywhere.
+  virtual void publish(Session& session, const protocol::Message& change, uint64_t sender) = 0;
+  virtual RelayStatus status() const = 0;
+};
+
+// The relay a config asks for: local without "broker", Redis for "redis://HOST:PORT".
+// Throws inkwire::Error for a broker this build cannot use.
+std::unique_ptr<Relay> make_relay(Server& server, const ServerConfig& config);
+
+}  // namespace inkwire::server
