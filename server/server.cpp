@@ -229,9 +229,9 @@ std::chrono::milliseconds Server::join_delay(const std::string& address) {
     join_failures_.erase(it);
     return {};
   }
-  const int over = it->second.count - config_.join_failures_allowed;
-  if (over <= 0) return {};
-  return std::chrono::milliseconds(std::min<int64_t>(int64_t(250) << std::min(over - 1, 10), 8000));
+  const int over = it->second.count - config_.join_failures_allowed;  // 0: the first join to slow down
+  if (over < 0) return {};
+  return std::chrono::milliseconds(std::min<int64_t>(int64_t(250) << std::min(over, 10), 8000));
 }
 
 void Server::join_failed(const std::string& address) {

@@ -24,12 +24,19 @@ SessionClient::SessionClient(const std::string& host_port, const std::string& cl
   socket_.set_option(asio::ip::tcp::no_delay(true), ec);
   start_reading();
   thread_ = std::thread([this] { io_.run(); });
-  send(Hello{.client_name = client_name.substr(0, kMaxName)});
-  const Message reply = wait_for([](const Message& m) { return std::holds_alternative<Welcome>(m); }, kReplyTimeout);
-  if (const auto* error = std::get_if<ErrorMessage>(&reply)) throw Error("server refused the connection: " + error->reason);
+  try {
+    send(Hello{.client_name = client_name.substr(0, kMaxName)});
+    const Message reply = wait_for([](const Message& m) { return std::holds_alternative<Welcome>(m); }, kReplyTimeout);
+    if (const auto* error = std::get_if<ErrorMessage>(&reply)) throw Error("server refused the connection: " + error->reason);
+  } catch (...) {
+    stop();  // no destructor runs for an object whose constructor threw
+    throw;
+  }
 }
 
-SessionClient::~SessionClient() {
+SessionClient::~SessionClient() { stop(); }
+
+void SessionClient::stop() {
   asio::post(io_, [this] {
     std::error_code ec;
     socket_.shutdown(asio::ip::tcp::socket::shutdown_both, ec);

@@ -58,6 +58,7 @@ class SessionClient {
   uint64_t bytes_received() const { return bytes_received_; }
 
  private:
+  void stop();  // closes the socket and ends the I/O thread
   void start_reading();
   void on_message(protocol::Message message);
   void write_next();

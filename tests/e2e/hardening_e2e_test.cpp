@@ -1,0 +1,147 @@
+// What a public server needs (SPEC D3), end to end on 127.0.0.1: wrong tokens guessed many times
+// in a row are slowed down while the right token still works; connections past the cap per
+// address are refused with the reason; a stored asset corrupted on disk is refused, not served,
+// while the server carries on; tokens are never stored as they are.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <sqlite3.h>
+
+#include "client/net/asset_cache.hpp"
+#include "client/net/session_client.hpp"
+#include "common/content_hash.hpp"
+#include "e2e_support.hpp"
+
+using namespace inkwire;
+using namespace inkwire::e2e;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kMesh = fs::path(INKWIRE_MESH_DIR) / "cow.off";
+
+nlohmann::json config(nlohmann::json extra = nlohmann::json::object()) {
+  nlohmann::json c = {{"sessions", {{{"name", "cows"}, {"kind", "scene"}, {"assets", {{{"path", kMesh.string()}}}}},
+                                    {{"name", "locked"}, {"kind", "scene"}, {"token", "s3cret"}, {"assets", nlohmann::json::array()}}}}};
+  c.update(extra);
+  return c;
+}
+
+// Seconds one join with `token` takes from a fresh connection, and whether it was let in.
+std::pair<double, bool> timed_join(const ServerUnderTest& server, const std::string& token) {
+  SessionClient client(server.address(), "guesser");
+  const auto start = std::chrono::steady_clock::now();
+  bool in = true;
+  try {
+    client.join("locked", token);
+  } catch (const Error&) {
+    in = false;
+  }
+  return {std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), in};
+}
+
+}  // namespace
+
+class HardeningE2ETest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!fs::exists(kMesh)) GTEST_SKIP() << "libcgal-demo's cow.off is not extracted (run scripts/setup.sh)";
+  }
+};
+
+TEST_F(HardeningE2ETest, WrongTokensInARowAreSlowedDownAndTheRightOneStillWorks) {
+  const fs::path dir = output_dir("token-guessing");
+  ServerUnderTest server(dir, config({{"join_failures_allowed", 3}}));
+  // The first few mistakes cost nothing (a person mistyping).
+  for (int i = 0; i < 3; ++i) {
+    const auto [seconds, in] = timed_join(server, "guess" + std::to_string(i));
+    EXPECT_FALSE(in);
+    EXPECT_LT(seconds, 0.2) << "mistake " << i + 1 << " was delayed";
+  }
+  // Then every further join from this address waits longer: 0.25 s, 0.5 s, 1 s.
+  double previous = 0;
+  for (int i = 0; i < 3; ++i) {
+    const auto [seconds, in] = timed_join(server, "guess-more" + std::to_string(i));
+    EXPECT_FALSE(in);
+    EXPECT_GE(seconds, 0.25 * (1 << i) * 0.9) << "guess " << i + 4 << " was not slowed down";
+    EXPECT_GT(seconds, previous);
+    previous = seconds;
+  }
+  // The right token is let in (after the same wait), and clears the count.
+  const auto [seconds, in] = timed_join(server, "s3cret");
+  EXPECT_TRUE(in);
+  EXPECT_LT(timed_join(server, "s3cret").first, 0.2) << "a right token did not clear the slow-down";
+  // Meanwhile other clients are served at once.
+  SessionClient other(server.address(), "other");
+  EXPECT_NO_THROW(other.join("cows", ""));
+}
+
+TEST_F(HardeningE2ETest, TokensAreStoredAsDigestsNeverAsTheyAre) {
+  const fs::path dir = output_dir("token-digest");
+  { ServerUnderTest server(dir, config()); }
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open_v2((dir / "data" / "catalogue.sqlite").c_str(), &db, SQLITE_OPEN_READONLY, nullptr), SQLITE_OK);
+  sqlite3_stmt* q = nullptr;
+  ASSERT_EQ(sqlite3_prepare_v2(db, "SELECT token FROM sessions WHERE name = 'locked'", -1, &q, nullptr), SQLITE_OK);
+  ASSERT_EQ(sqlite3_step(q), SQLITE_ROW);
+  const std::string stored = reinterpret_cast<const char*>(sqlite3_column_text(q, 0));
+  sqlite3_finalize(q);
+  sqlite3_close(db);
+  EXPECT_EQ(stored.find("s3cret"), std::string::npos);
+  EXPECT_EQ(stored, "sha256:" + to_hex(content_hash("s3cret", 6)));
+}
+
+TEST_F(HardeningE2ETest, ConnectionsPastTheCapPerAddressAreRefusedWithTheReason) {
+  const fs::path dir = output_dir("connection-cap");
+  ServerUnderTest server(dir, config({{"max_connections_per_address", 3}}));
+  std::vector<std::unique_ptr<SessionClient>> allowed;
+  for (int i = 0; i < 3; ++i) {
+    allowed.push_back(std::make_unique<SessionClient>(server.address(), "c" + std::to_string(i)));
+    allowed.back()->join("cows", "");
+  }
+  try {
+    SessionClient fourth(server.address(), "fourth");
+    fourth.join("cows", "");
+    ADD_FAILURE() << "a fourth connection from one address was served";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("too many connections"), std::string::npos) << e.what();
+  }
+  // The three are still served, and a place frees when one leaves.
+  allowed.front()->send(protocol::StyleChange{.renderer = "comic", .settings = {}});
+  EXPECT_TRUE(eventually([&] { return allowed.back()->state().style.renderer == "comic"; }));
+  allowed.erase(allowed.begin());
+  EXPECT_TRUE(eventually([&] {
+    try {
+      SessionClient again(server.address(), "again");
+      again.join("cows", "");
+      return true;
+    } catch (const Error&) {
+      return false;
+    }
+  }));
+}
+
+TEST_F(HardeningE2ETest, AnAssetCorruptedOnDiskIsRefusedNotServed) {
+  const fs::path dir = output_dir("corrupted-asset");
+  ServerUnderTest server(dir, config());
+  SessionClient client(server.address(), "client");
+  const protocol::Snapshot state = client.join("cows", "");
+  ASSERT_EQ(state.assets.size(), 1u);
+  // One byte of the stored mesh changes under the running server (a failing disk, a meddler).
+  const fs::path stored = dir / "data" / "assets" / to_hex(state.assets[0].hash);
+  ASSERT_TRUE(fs::exists(stored));
+  {
+    std::fstream f(stored, std::ios::in | std::ios::out | std::ios::binary);
+    f.seekp(100);
+    f.put('#');
+  }
+  AssetCache cache(dir / "cache");
+  try {
+    client.fetch_asset(state.assets[0], cache);
+    ADD_FAILURE() << "a corrupted asset was served";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("does not match its hash"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(log_events(server.process().output(), "asset-corrupted").empty()) << server.process().output();
+  SessionClient other(server.address(), "other");
+  EXPECT_NO_THROW(other.join("cows", "")) << "the server stopped serving after a corrupted asset";
+}
