@@ -40,11 +40,14 @@ void Connection::send(const Message& message) {
 
 void Connection::send_frame(std::shared_ptr<const Bytes> frame, MessageType type) {
   if (closing_) return;
+  const uint64_t replaced = queue_.replaced();
   if (!queue_.push(std::move(frame), type)) {
+    ++server_.counters().too_slow;
     log_warn("too-slow", {{"client", id_}, {"queued_bytes", queue_.bytes()}});
     close_with(ErrorCode::TooSlow, "send queue overflowed: the client is not reading");
     return;
   }
+  server_.counters().replaced += queue_.replaced() - replaced;
   wake_.cancel();
 }
 
@@ -86,6 +89,7 @@ asio::awaitable<void> Connection::read_loop() {
       if (const std::error_code ec = co_await transport_->read_frame(frame)) break;
       const FrameHeader h = parse_header(frame.data());
       Message message = decode(h.type, frame.data() + kHeaderBytes, frame.size() - kHeaderBytes);
+      ++server_.counters().messages_in;
       // An address that guessed tokens waits before each join is looked at (this connection
       // reads nothing meanwhile; the others are served as usual).
       if (h.type == MessageType::Join)
@@ -121,6 +125,7 @@ asio::awaitable<void> Connection::write_loop() {
     // Everything queued goes out in one gathered write.
     const std::deque<Outgoing> batch = queue_.take_all();
     if (co_await transport_->write_frames(batch)) break;
+    server_.counters().messages_out += batch.size();
   }
   shut();
 }

@@ -22,6 +22,15 @@ class HttpServer;
 class Relay;
 class Transport;
 
+// What /metrics counts since the start (touched on the I/O thread only).
+struct ServerCounters {
+  uint64_t messages_in = 0, messages_out = 0;
+  uint64_t replaced = 0;             // state messages overtaken in a queue before they went out (latest wins)
+  uint64_t too_slow = 0;             // clients closed because their queue overflowed
+  uint64_t connections_refused = 0;  // past a connection cap
+  uint64_t joins_refused = 0;        // wrong token
+};
+
 class Server {
  public:
   // Opens the store (creating the demo sessions on first start) and binds the listening socket.
@@ -51,6 +60,7 @@ class Server {
   void join_failed(const std::string& address);
   void join_succeeded(const std::string& address) { join_failures_.erase(address); }
   size_t connection_count() const { return connections_.size(); }
+  ServerCounters& counters() { return counters_; }
   const std::map<std::string, std::shared_ptr<Session>>& sessions() const { return sessions_; }
   void persist(Session& session);
   bool stopping() const { return stopping_; }
@@ -86,6 +96,7 @@ class Server {
   std::vector<std::unique_ptr<FaceFeed>> face_feeds_;
   std::unique_ptr<HttpServer> http_;
   std::unique_ptr<Relay> relay_;
+  ServerCounters counters_;
   uint64_t next_id_ = 1;
   bool stopping_ = false;
 };

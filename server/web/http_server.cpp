@@ -10,7 +10,9 @@
 
 #include "common/error.hpp"
 #include "common/log.hpp"
+#include "server/relay/relay.hpp"
 #include "server/server.hpp"
+#include "server/web/metrics.hpp"
 #include "server/web/websocket.hpp"
 
 namespace inkwire {
@@ -190,17 +192,14 @@ asio::awaitable<void> HttpServer::serve(asio::ip::tcp::socket accepted) {
     co_return;
   }
   if (path == "/healthz") {
-    co_await reply(response(server_.stopping() ? 503 : 200, server_.stopping() ? "Service Unavailable" : "OK", "text/plain",
-                            server_.stopping() ? "stopping\n" : "ok\n"));
+    // Without its broker an instance still serves its own members: healthy, and it says so.
+    const RelayStatus relay = server_.relay().status();
+    const std::string body = server_.stopping() ? "stopping\n" : relay.connected ? "ok\n" : "ok, broker away: serving this instance's members only\n";
+    co_await reply(response(server_.stopping() ? 503 : 200, server_.stopping() ? "Service Unavailable" : "OK", "text/plain", body));
     co_return;
   }
   if (path == "/metrics") {
-    std::string body = "# HELP inkwire_connections Open client connections (TCP and WebSocket).\n# TYPE inkwire_connections gauge\n";
-    body += "inkwire_connections " + std::to_string(server_.connection_count()) + "\n";
-    body += "# HELP inkwire_session_members Members of each session.\n# TYPE inkwire_session_members gauge\n";
-    for (const auto& [name, session] : server_.sessions())
-      body += "inkwire_session_members{session=\"" + name + "\"} " + std::to_string(session->members()) + "\n";
-    co_await reply(response(200, "OK", "text/plain; version=0.0.4", body));
+    co_await reply(response(200, "OK", "text/plain; version=0.0.4", metrics_text(server_)));
     co_return;
   }
   if (const auto file = web_client_files().find(path.substr(1)); path.size() > 1 && file != web_client_files().end()) {

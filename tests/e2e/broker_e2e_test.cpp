@@ -61,8 +61,11 @@ class BrokerUnderTest {
 };
 
 nlohmann::json instance_config(const std::string& name, const BrokerUnderTest& broker, nlohmann::json sessions) {
-  return {{"name", name}, {"broker", broker.url()}, {"sessions", std::move(sessions)}};
+  return {{"name", name}, {"broker", broker.url()}, {"http", "127.0.0.1:0"}, {"sessions", std::move(sessions)}};
 }
+
+std::string metrics_of(ServerUnderTest& server) { return http_get(http_port(server), "GET /metrics HTTP/1.1\r\nHost: x\r\n\r\n"); }
+std::string health_of(ServerUnderTest& server) { return http_get(http_port(server), "GET /healthz HTTP/1.1\r\nHost: x\r\n\r\n"); }
 
 // Instance one defines the session "cows"; instance two defines none and learns it from the broker.
 nlohmann::json cows() { return {{{"name", "cows"}, {"kind", "scene"}, {"style", "default"}, {"assets", {{{"path", kMesh.string()}}}}}}; }
@@ -141,9 +144,15 @@ TEST_F(BrokerE2ETest, ABrokerKilledAndRestartedLosesNothingAndChangesFlowAgain) 
   a.send(orbit_pose(40, 10, 1.4f, 1));
   ASSERT_TRUE(eventually([&] { return b.state().camera.sequence == 1; })) << "no change crossed before the broker went away";
 
+  EXPECT_NE(metrics_of(one).find("inkwire_broker_up 1"), std::string::npos) << metrics_of(one);
   broker.kill();
   ASSERT_TRUE(eventually([&] { return count_events(one, "broker-lost") >= 1 && count_events(two, "broker-lost") >= 1; }))
       << one.process().output() << two.process().output();
+  // An operator sees it, and a load balancer keeps sending members: the instance still serves.
+  EXPECT_NE(metrics_of(one).find("inkwire_broker_up 0"), std::string::npos) << metrics_of(one);
+  const std::string health = health_of(one);
+  EXPECT_NE(health.find("200 OK"), std::string::npos) << health;
+  EXPECT_NE(health.find("broker away"), std::string::npos) << health;
   // Made while the broker is away: instance one's own members still get it at once...
   SessionClient a2(one.address(), "a2");
   a2.join("cows", "");
@@ -157,6 +166,10 @@ TEST_F(BrokerE2ETest, ABrokerKilledAndRestartedLosesNothingAndChangesFlowAgain) 
   ASSERT_TRUE(eventually([&] { return count_events(one, "broker-connected") >= 2 && count_events(two, "broker-connected") >= 2; }, std::chrono::seconds(30)))
       << one.process().output() << two.process().output();
   EXPECT_TRUE(eventually([&] { return b.state().style.renderer == "hatching"; })) << "the change made while the broker was away was lost";
+  const std::string metrics = metrics_of(one);
+  EXPECT_NE(metrics.find("inkwire_broker_up 1"), std::string::npos) << metrics;
+  EXPECT_NE(metrics.find("inkwire_broker_reconnects_total 1"), std::string::npos) << metrics;
+  EXPECT_NE(metrics.find("inkwire_broker_unsent 0"), std::string::npos) << metrics;
   a.send(orbit_pose(200, 25, 1.2f, 2));
   EXPECT_TRUE(eventually([&] { return b.state().camera.sequence == 2 && b2.state().camera.sequence == 2; })) << "changes do not flow after the broker came back";
   // Every member agrees on the whole state, and the count of changes: none was lost or counted twice.

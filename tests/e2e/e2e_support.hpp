@@ -70,6 +70,27 @@ class ServerUnderTest {
   int port_ = 0, starts_ = 0;
 };
 
+inline int http_port(ServerUnderTest& server) {
+  int port = 0;
+  eventually([&] {
+    for (const auto& j : log_events(server.process().output(), "http-listening")) port = j.value("port", 0);
+    return port != 0;
+  });
+  return port;
+}
+
+// A plain HTTP exchange: the whole answer, up to the server closing.
+inline std::string http_get(int port, const std::string& request) {
+  asio::io_context io;
+  asio::ip::tcp::socket s(io);
+  s.connect({asio::ip::make_address("127.0.0.1"), uint16_t(port)});
+  asio::write(s, asio::buffer(request));
+  std::string answer;
+  std::error_code ec;
+  asio::read(s, asio::dynamic_buffer(answer), ec);
+  return answer;
+}
+
 // A headless client of `session` writing DIR/NAME-%04d.png and the frame log DIR/NAME.jsonl.
 inline std::unique_ptr<Process> headless_client(const ServerUnderTest& server, const std::string& session, const fs::path& dir,
                                                 const std::string& name, int frames, int fps) {

@@ -24,27 +24,6 @@ nlohmann::json web_config() {
           {"sessions", {{{"name", "cows"}, {"kind", "scene"}, {"assets", {{{"path", kMesh.string()}}}}}}}};
 }
 
-int http_port(ServerUnderTest& server) {
-  int port = 0;
-  eventually([&] {
-    for (const auto& j : log_events(server.process().output(), "http-listening")) port = j.value("port", 0);
-    return port != 0;
-  });
-  return port;
-}
-
-// A plain HTTP exchange: the whole answer, up to the server closing.
-std::string http_get(int port, const std::string& request) {
-  asio::io_context io;
-  tcp::socket s(io);
-  s.connect({asio::ip::make_address("127.0.0.1"), uint16_t(port)});
-  asio::write(s, asio::buffer(request));
-  std::string answer;
-  std::error_code ec;
-  asio::read(s, asio::dynamic_buffer(answer), ec);
-  return answer;
-}
-
 // A minimal WebSocket client: the upgrade, masked frames out, whole frames in.
 class WebSocket {
  public:

@@ -1,0 +1,69 @@
+#include "server/web/metrics.hpp"
+
+#include "server/relay/relay.hpp"
+#include "server/server.hpp"
+
+namespace inkwire::server {
+namespace {
+
+class MetricsText {
+ public:
+  // One metric's HELP and TYPE lines, then its samples through sample().
+  MetricsText& metric(const std::string& name, const char* type, const char* help) {
+    text_ += "# HELP " + name + " " + help + "\n# TYPE " + name + " " + type + "\n";
+    return *this;
+  }
+  template <class Number>
+  MetricsText& sample(const std::string& name, Number value, const std::string& labels = "") {
+    text_ += name + (labels.empty() ? "" : "{" + labels + "}") + " " + std::to_string(value) + "\n";
+    return *this;
+  }
+  template <class Number>
+  MetricsText& one(const std::string& name, const char* type, const char* help, Number value) {
+    return metric(name, type, help).sample(name, value);
+  }
+  std::string take() { return std::move(text_); }
+
+ private:
+  std::string text_;
+};
+
+}  // namespace
+
+std::string metric_label(const std::string& value) {
+  std::string out;
+  for (const char c : value) {
+    if (c == '\\' || c == '"') out += '\\', out += c;
+    else if (c == '\n') out += "\\n";
+    else out += c;
+  }
+  return out;
+}
+
+std::string metrics_text(Server& server) {
+  const ServerCounters& c = server.counters();
+  MetricsText m;
+  m.one("inkwire_connections", "gauge", "Open client connections (TCP and WebSocket).", server.connection_count());
+  m.one("inkwire_sessions", "gauge", "Sessions this instance serves.", server.sessions().size());
+  m.metric("inkwire_session_members", "gauge", "Members of each session on this instance.");
+  for (const auto& [name, session] : server.sessions()) m.sample("inkwire_session_members", session->members(), "session=\"" + metric_label(name) + "\"");
+  m.one("inkwire_messages_in_total", "counter", "Messages received from clients.", c.messages_in);
+  m.one("inkwire_messages_out_total", "counter", "Messages written to clients.", c.messages_out);
+  m.one("inkwire_queue_replaced_total", "counter", "State messages overtaken by a newer one in a client's queue (latest wins).", c.replaced);
+  m.one("inkwire_queue_overflow_total", "counter", "Clients closed because they did not read their queue.", c.too_slow);
+  m.one("inkwire_connections_refused_total", "counter", "Connections refused past a connection cap.", c.connections_refused);
+  m.one("inkwire_joins_refused_total", "counter", "Joins refused for a wrong token.", c.joins_refused);
+  const RelayStatus r = server.relay().status();
+  if (r.broker) {
+    m.one("inkwire_broker_up", "gauge", "1 while the broker is reachable; 0 while this instance serves its own members only.", int(r.connected));
+    m.one("inkwire_broker_published_total", "counter", "Changes handed to the broker.", r.published);
+    m.one("inkwire_broker_received_total", "counter", "Changes the broker delivered (from every instance).", r.received);
+    m.one("inkwire_broker_resyncs_total", "counter", "Session states read whole from the broker.", r.resyncs);
+    m.one("inkwire_broker_reconnects_total", "counter", "Times the broker came back after it was lost.", r.reconnects);
+    m.one("inkwire_broker_unsent", "gauge", "Changes made while the broker was away, waiting for it.", r.outbox);
+    m.one("inkwire_broker_lag_seconds", "gauge", "From publishing this instance's latest change to its return from the broker.", r.lag_seconds);
+  }
+  return m.take();
+}
+
+}  // namespace inkwire::server
