@@ -52,6 +52,7 @@ struct ServerConfig {
   size_t max_connections = 4096;             // clients at once, over every transport
   size_t max_connections_per_address = 64;   // clients at once from one IP address
   int join_failures_allowed = 3;             // wrong tokens from one address before its joins are slowed
+  bool limit_loopback = false;               // the per-address limits apply to 127.0.0.1 and ::1 too
   std::vector<SessionConfig> sessions;
   // The HTTP listener (WebSocket at /ws, /healthz, /metrics, /): off unless given.
   bool http = false;

@@ -214,13 +214,20 @@ void Server::adopt(std::unique_ptr<Transport> transport) {
   ++from_address;
   connection->start();
   // Past a cap the newcomer is told why and let go; everyone already connected carries on.
-  const bool full = connections_.size() > config_.max_connections, crowded = from_address > config_.max_connections_per_address;
+  const bool full = connections_.size() > config_.max_connections;
+  const bool crowded = limited(connection->address()) && from_address > config_.max_connections_per_address;
   if (full || crowded) ++counters_.connections_refused;
   if (full)
     connection->close_with(protocol::ErrorCode::Refused, "the server is full (" + std::to_string(config_.max_connections) + " connections)");
   else if (crowded)
     connection->close_with(protocol::ErrorCode::Refused, "too many connections from " + connection->address() + " (" +
                                                               std::to_string(config_.max_connections_per_address) + ")");
+}
+
+bool Server::limited(const std::string& address) const {
+  std::error_code ec;
+  const auto ip = asio::ip::make_address(address, ec);
+  return config_.limit_loopback || ec || !ip.is_loopback();
 }
 
 std::chrono::milliseconds Server::join_delay(const std::string& address) {
@@ -238,6 +245,7 @@ std::chrono::milliseconds Server::join_delay(const std::string& address) {
 
 void Server::join_failed(const std::string& address) {
   ++counters_.joins_refused;
+  if (!limited(address)) return;
   JoinFailures& f = join_failures_[address];
   ++f.count;
   f.last = std::chrono::steady_clock::now();

@@ -59,6 +59,9 @@ class Server {
   std::chrono::milliseconds join_delay(const std::string& address);
   void join_failed(const std::string& address);
   void join_succeeded(const std::string& address) { join_failures_.erase(address); }
+  // Whether the per-address limits apply to `address`: not to this machine's own (a local
+  // proxy speaks for many people) unless the config says so.
+  bool limited(const std::string& address) const;
   size_t connection_count() const { return connections_.size(); }
   ServerCounters& counters() { return counters_; }
   const std::map<std::string, std::shared_ptr<Session>>& sessions() const { return sessions_; }

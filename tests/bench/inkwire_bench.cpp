@@ -85,6 +85,9 @@ int main(int argc, char** argv) {
     print_table(results);
 
     nlohmann::json out;
+    // A suite may have made contexts of its own (a server rendering a product's samples): the
+    // harness's is made current again before it is asked what it runs on.
+    harness.context().make_current();
     out["machine"] = {{"cpu", cpu_model()},
                       {"gl_renderer", harness.context().gl_renderer()},
                       {"gl_backend", harness.context().backend()},

@@ -15,131 +15,20 @@
 #include <asio/experimental/as_tuple.hpp>
 
 #include "bench_harness.hpp"
+#include "net_load.hpp"
 #include "client/net/session_client.hpp"
 #include "protocol/framing.hpp"
 #include "server/server.hpp"
 
 namespace inkwire::bench {
+
+// Two instances on one broker, and the brokers alone (suite_net_instances.cpp).
+std::vector<Result> run_net_instance_rows(const std::string& data_dir);
+
 namespace {
 
 using namespace protocol;
-using Clock = std::chrono::steady_clock;
 constexpr auto no_throw = asio::experimental::as_tuple(asio::use_awaitable);
-
-struct LoadShape {
-  int clients, sessions, hz;
-  double seconds;
-};
-
-// Everything the simulated clients share; touched only on the clients' I/O thread.
-struct Load {
-  LoadShape shape;
-  std::vector<std::vector<Clock::time_point>> sent;  // [session][sequence]
-  std::vector<double> latencies_ms;
-  int64_t stalls = 0, delivered = 0, joined = 0, failed = 0;
-  Clock::time_point start, stop;
-};
-
-// Takes the frame already encoded: GCC 12 mishandles temporaries (a Message built in the
-// argument list) that live across a co_await.
-asio::awaitable<void> write_frame(asio::ip::tcp::socket& s, const Bytes& frame) {
-  co_await asio::async_write(s, asio::buffer(frame), no_throw);
-}
-
-// Reads whatever has arrived in one receive and splits it into messages, as the server and
-// the real client do: a simulated client should cost what a real one costs.
-class MessageReader {
- public:
-  explicit MessageReader(asio::ip::tcp::socket& socket) : socket_(socket), chunk_(4096) {}
-  asio::awaitable<std::optional<Message>> next() {
-    for (;;) {
-      if (std::optional<Message> m = frames_.next()) co_return m;
-      auto [ec, n] = co_await socket_.async_read_some(asio::buffer(chunk_), no_throw);
-      if (ec) co_return std::nullopt;
-      frames_.feed(chunk_.data(), n);
-    }
-  }
-
- private:
-  asio::ip::tcp::socket& socket_;
-  std::vector<uint8_t> chunk_;
-  FrameDecoder frames_;
-};
-
-// One simulated client: joins its session; the session's first client sends poses at R Hz,
-// the others time each pose's delivery and count gaps over three periods as stalls.
-asio::awaitable<void> simulated_client(asio::ip::tcp::endpoint server, Load& load, int index) {
-  const int session = index % load.shape.sessions;
-  const bool sender = index < load.shape.sessions;
-  asio::ip::tcp::socket s(co_await asio::this_coro::executor);
-  auto [ec] = co_await s.async_connect(server, no_throw);
-  if (ec) {
-    ++load.failed;
-    co_return;
-  }
-  s.set_option(asio::ip::tcp::no_delay(true));
-  MessageReader reader(s);
-  const Bytes hello = encode(Hello{.client_name = "load-" + std::to_string(index)});
-  const Bytes join = encode(Join{.session = "s" + std::to_string(session), .token = ""});
-  co_await write_frame(s, hello);
-  co_await write_frame(s, join);
-  for (int got = 0; got < 2;) {  // welcome, snapshot
-    auto m = co_await reader.next();
-    if (!m || std::holds_alternative<ErrorMessage>(*m)) {
-      ++load.failed;
-      co_return;
-    }
-    ++got;
-  }
-  ++load.joined;
-  if (sender) {
-    asio::steady_timer timer(s.get_executor());
-    // Wait until everyone has joined, then send for the measured time.
-    while (load.joined + load.failed < load.shape.clients) {
-      timer.expires_after(std::chrono::milliseconds(5));
-      co_await timer.async_wait(no_throw);
-    }
-    const auto period = std::chrono::microseconds(1000000 / load.shape.hz);
-    // Senders are spread over the period as independent clients would be, not phase-locked.
-    auto next = Clock::now() + period * session / load.shape.sessions;
-    for (uint32_t seq = 0; seq < load.sent[size_t(session)].size(); ++seq) {
-      next += period;
-      timer.expires_at(next);
-      co_await timer.async_wait(no_throw);
-      CameraPose pose{.sequence = seq, .position = {0, 1, 10}, .target = {0, 0, 0}, .up = {0, 1, 0}, .fov_y_degrees = 45};
-      const Bytes frame = encode(pose);
-      load.sent[size_t(session)][seq] = Clock::now();
-      co_await write_frame(s, frame);
-    }
-    co_return;
-  }
-  Clock::time_point last{};
-  const auto stall = std::chrono::microseconds(3 * 1000000 / load.shape.hz);
-  for (;;) {
-    auto m = co_await reader.next();
-    if (!m) co_return;
-    const auto* pose = std::get_if<CameraPose>(&*m);
-    if (!pose) continue;
-    const auto now = Clock::now();
-    load.latencies_ms.push_back(std::chrono::duration<double, std::milli>(now - load.sent[size_t(session)][pose->sequence]).count());
-    ++load.delivered;
-    if (last != Clock::time_point{} && now - last > stall) ++load.stalls;
-    last = now;
-    if (pose->sequence + 1 == load.sent[size_t(session)].size()) co_return;
-  }
-}
-
-double thread_cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return double(t.tv_sec) + double(t.tv_nsec) * 1e-9;
-}
-
-double percentile(std::vector<double> v, double p) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  return v[std::min(v.size() - 1, size_t(p * double(v.size())))];
-}
 
 server::ServerConfig load_server_config(const std::string& data_dir, int sessions) {
   server::ServerConfig config;
@@ -163,12 +52,10 @@ Result run_load(const LoadShape& shape, const std::string& data_dir) {
     server_cpu_seconds = thread_cpu_seconds();
   });
 
-  Load load;
-  load.shape = shape;
-  load.sent.assign(size_t(shape.sessions), std::vector<Clock::time_point>(size_t(shape.seconds * shape.hz)));
+  Load load(shape, 1);
   asio::io_context client_io(1);
   const asio::ip::tcp::endpoint endpoint{asio::ip::make_address("127.0.0.1"), server.port()};
-  for (int i = 0; i < shape.clients; ++i) asio::co_spawn(client_io, simulated_client(endpoint, load, i), asio::detached);
+  for (int i = 0; i < shape.clients; ++i) asio::co_spawn(client_io, simulated_client({endpoint}, load, i), asio::detached);
   const auto start = Clock::now();
   const double clients_cpu0 = thread_cpu_seconds();
   client_io.run();
@@ -179,12 +66,12 @@ Result run_load(const LoadShape& shape, const std::string& data_dir) {
 
   Result r;
   r.suite = "net", r.renderer = "net", r.object = "-";
-  r.variant = "clients=" + std::to_string(shape.clients) + ",sessions=" + std::to_string(shape.sessions) + ",hz=" + std::to_string(shape.hz);
-  const double expected = double(shape.clients - shape.sessions) * double(load.sent[0].size());
+  r.variant = shape.variant();
+  const double expected = load.expected();
   r.counters = {{"clients", shape.clients}, {"sessions", shape.sessions}, {"joined", double(load.joined)},
                 {"msgs_per_second", double(load.delivered) / seconds}, {"delivered_fraction", double(load.delivered) / expected},
-                {"p50_ms", percentile(load.latencies_ms, 0.50)}, {"p99_ms", percentile(load.latencies_ms, 0.99)},
-                {"max_ms", percentile(load.latencies_ms, 1.0)}, {"stalls", double(load.stalls)},
+                {"p50_ms", percentile(load.latencies_ms[0], 0.50)}, {"p99_ms", percentile(load.latencies_ms[0], 0.99)},
+                {"max_ms", percentile(load.latencies_ms[0], 1.0)}, {"stalls", double(load.stalls)},
                 {"bytes_per_message", double(encoded_size(CameraPose{}))},
                 // Each side's CPU time over the run as a share of one core (joins included):
                 // how busy server and clients really are, which p99 alone does not tell.
@@ -277,6 +164,7 @@ std::vector<Result> run_net_suite(Harness& harness) {
     std::fprintf(stderr, "  net %s: %.0f msgs/s, p50 %.2f ms, p99 %.2f ms, stalls %.0f, delivered %.3f\n", results.back().variant.c_str(),
                  c.at("msgs_per_second"), c.at("p50_ms"), c.at("p99_ms"), c.at("stalls"), c.at("delivered_fraction"));
   }
+  for (Result& r : run_net_instance_rows(base)) results.push_back(std::move(r));
   results.push_back(turntable_interaction(base + "/turntable"));
   results.push_back(machine_pauses(5));
   const auto& pauses = results.back().counters;

@@ -19,8 +19,9 @@ namespace {
 
 const fs::path kMesh = fs::path(INKWIRE_MESH_DIR) / "cow.off";
 
+// The test's clients are on this machine: the per-address limits are asked to apply to it.
 nlohmann::json config(nlohmann::json extra = nlohmann::json::object()) {
-  nlohmann::json c = {{"sessions", {{{"name", "cows"}, {"kind", "scene"}, {"assets", {{{"path", kMesh.string()}}}}},
+  nlohmann::json c = {{"limit_loopback", true}, {"sessions", {{{"name", "cows"}, {"kind", "scene"}, {"assets", {{{"path", kMesh.string()}}}}},
                                     {{"name", "locked"}, {"kind", "scene"}, {"token", "s3cret"}, {"assets", nlohmann::json::array()}}}}};
   c.update(extra);
   return c;
@@ -144,4 +145,17 @@ TEST_F(HardeningE2ETest, AnAssetCorruptedOnDiskIsRefusedNotServed) {
   EXPECT_FALSE(log_events(server.process().output(), "asset-corrupted").empty()) << server.process().output();
   SessionClient other(server.address(), "other");
   EXPECT_NO_THROW(other.join("cows", "")) << "the server stopped serving after a corrupted asset";
+}
+
+TEST_F(HardeningE2ETest, ThisMachinesOwnAddressIsNotCappedUnlessAsked) {
+  // A proxy on the server's own machine speaks for many people from 127.0.0.1.
+  const fs::path dir = output_dir("loopback-uncapped");
+  nlohmann::json c = config({{"max_connections_per_address", 3}});
+  c.erase("limit_loopback");
+  ServerUnderTest server(dir, c);
+  std::vector<std::unique_ptr<SessionClient>> clients;
+  for (int i = 0; i < 5; ++i) {
+    clients.push_back(std::make_unique<SessionClient>(server.address(), "c" + std::to_string(i)));
+    EXPECT_NO_THROW(clients.back()->join("cows", "")) << "connection " << i + 1;
+  }
 }
