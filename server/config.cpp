@@ -113,6 +113,8 @@ ServerConfig ServerConfig::load(const fs::path& file) {
     if (j.contains("max_connections_per_address")) c.max_connections_per_address = j.at("max_connections_per_address").get<size_t>();
     if (j.contains("join_failures_allowed")) c.join_failures_allowed = j.at("join_failures_allowed").get<int>();
     if (j.contains("limit_loopback")) c.limit_loopback = j.at("limit_loopback").get<bool>();
+    if (j.contains("plain_off_loopback")) c.plain_off_loopback = j.at("plain_off_loopback").get<bool>();
+    if (j.contains("tls")) c.tls = TlsConfig{.certificate = j.at("tls").at("certificate").get<std::string>(), .key = j.at("tls").at("key").get<std::string>()};
     if (j.contains("http_head_timeout_seconds")) c.http_head_timeout_seconds = j.at("http_head_timeout_seconds").get<double>();
     if (j.contains("sessions")) {
       c.sessions.clear();

@@ -41,6 +41,12 @@ struct SessionConfig {
   std::optional<ProductSource> product;  // turntable sessions: made (once) when the catalogue lacks the session
 };
 
+// TLS on both listeners (SPEC D3): PEM files, read at start.
+struct TlsConfig {
+  std::filesystem::path certificate;  // the server's certificate chain
+  std::filesystem::path key;          // its private key
+};
+
 struct ServerConfig {
   std::string host = "127.0.0.1";
   uint16_t port = 7878;  // 0: any free port (logged at start)
@@ -60,6 +66,8 @@ struct ServerConfig {
   uint16_t http_port = 8080;
   std::vector<std::string> allowed_origins;  // page origins that may open a WebSocket; empty: the server's own
   double http_head_timeout_seconds = 5;      // for a request head to arrive whole
+  std::optional<TlsConfig> tls;      // TLS on the native and the HTTP listener
+  bool plain_off_loopback = false;   // allow plain listeners off 127.0.0.1 (behind a TLS proxy)
   // Several instances: "redis://HOST:PORT" of the broker they share sessions through (and
   // `name`, unique per instance). Empty: this instance runs alone.
   std::string broker;

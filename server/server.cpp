@@ -27,6 +27,21 @@ asio::ip::tcp::endpoint endpoint_of(const ServerConfig& config) {
   return {address, config.port};
 }
 
+// Plain TCP is for this machine (SPEC D3): a listener others can reach carries TLS, unless the
+// config says a TLS proxy in front does it.
+void refuse_plain_off_loopback(const ServerConfig& c) {
+  if (c.tls || c.plain_off_loopback) return;
+  const auto loopback = [](const std::string& host) {
+    std::error_code ec;
+    const auto ip = asio::ip::make_address(host == "localhost" ? "127.0.0.1" : host, ec);
+    return !ec && ip.is_loopback();
+  };
+  for (const auto& [host, what] : {std::pair{c.host, "listen"}, std::pair{c.http ? c.http_host : std::string("127.0.0.1"), "http"}})
+    if (!loopback(host))
+      throw Error(std::string(what) + " on " + host + " is reachable from other machines: give \"tls\" (certificate and key) in the config, "
+                  "or \"plain_off_loopback\": true when a TLS proxy stands in front");
+}
+
 // A mesh travels as one file: a model of several files (glTF with .bin and images, OBJ with
 // .mtl), or one whose up axis clients would not find by themselves, is made into one Y-up GLB
 // with everything inside, so every client gets it whole and upright.
@@ -44,6 +59,9 @@ protocol::AssetAnnounce add_session_asset(AssetStore& store, const SessionAsset&
 }  // namespace
 
 Server::Server(asio::io_context& io, ServerConfig config) : io_(io), config_(std::move(config)), acceptor_(io), persist_timer_(io) {
+  // What can be refused is refused before anything is bound or created on disk.
+  if (config_.tls) tls_ = server_tls_context(config_.tls->certificate, config_.tls->key);
+  refuse_plain_off_loopback(config_);
   // Ports first: a busy port fails before anything is created on disk.
   const auto endpoint = endpoint_of(config_);
   std::error_code ec;
@@ -167,8 +185,9 @@ void Server::start_face_feeds() {
 void Server::start() {
   start_face_feeds();
   log_info("listening", {{"host", config_.host}, {"port", port()}, {"data", config_.data_dir.string()}, {"sessions", sessions_.size()}});
-  asio::co_spawn(io_, accept_connections(acceptor_, stopping_, "accept-failed", [this](asio::ip::tcp::socket socket) {
-                   adopt(std::make_unique<TcpTransport>(std::move(socket)));
+  const auto handshake = std::chrono::milliseconds(int64_t(config_.hello_timeout_seconds * 1000));
+  asio::co_spawn(io_, accept_connections(acceptor_, stopping_, "accept-failed", [this, handshake](asio::ip::tcp::socket socket) {
+                   secure_then(std::move(socket), tls_, handshake, [this](ByteStream stream) { adopt(std::make_unique<TcpTransport>(std::move(stream))); });
                  }), asio::detached);
   asio::co_spawn(io_, persist_loop(), asio::detached);
   if (http_) http_->start();

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <asio.hpp>
+#include <asio/ssl.hpp>
 
 #include "server/asset_store.hpp"
 #include "server/config.hpp"
@@ -68,6 +69,7 @@ class Server {
   void persist(Session& session);
   bool stopping() const { return stopping_; }
   asio::io_context& io() { return io_; }
+  std::shared_ptr<asio::ssl::context> tls() const { return tls_; }  // null: plain TCP
 
   // Changes to sessions go through the relay (one instance, or several through a broker); the
   // relay hands each back to deliver() in the order every instance agrees on.
@@ -85,6 +87,7 @@ class Server {
 
   asio::io_context& io_;
   ServerConfig config_;
+  std::shared_ptr<asio::ssl::context> tls_;
   std::optional<AssetStore> store_;  // opened once the ports are bound
   asio::ip::tcp::acceptor acceptor_;
   asio::steady_timer persist_timer_;

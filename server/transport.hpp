@@ -2,13 +2,16 @@
 // How a connection's protocol frames travel (ARCHITECTURE "Transports"): as they are over TCP,
 // or one frame per binary WebSocket message (server/web/). The connection's logic, its
 // sessions and its send queue never know which.
+#include <chrono>
 #include <deque>
+#include <memory>
 #include <functional>
 #include <string>
 #include <system_error>
 
 #include <asio.hpp>
 
+#include "common/byte_stream.hpp"
 #include "protocol/messages.hpp"
 #include "server/send_queue.hpp"
 
@@ -29,27 +32,31 @@ class Transport {
   virtual asio::any_io_executor executor() = 0;
 };
 
-// Frames as they are, over a TCP socket (protocol/SPEC.md "Framing").
+// Frames as they are, over TCP, plain or TLS (protocol/SPEC.md "Framing").
 class TcpTransport final : public Transport {
  public:
-  explicit TcpTransport(asio::ip::tcp::socket socket);
+  explicit TcpTransport(ByteStream stream);
   asio::awaitable<std::error_code> read_frame(protocol::Bytes& frame) override;
   asio::awaitable<std::error_code> write_frames(const std::deque<Outgoing>& frames) override;
-  void close() override;
+  void close() override { stream_.close(); }
   std::string peer() const override { return peer_; }
-  std::string name() const override { return "tcp"; }
-  asio::any_io_executor executor() override { return socket_.get_executor(); }
+  std::string name() const override { return stream_.tls() ? "tls" : "tcp"; }
+  asio::any_io_executor executor() override { return stream_.get_executor(); }
 
  private:
-  asio::ip::tcp::socket socket_;
+  ByteStream stream_;
   std::string peer_;
   std::vector<asio::const_buffer> buffers_;
 };
 
 // "address:port" of a socket's peer, or "unknown".
 std::string peer_of(const asio::ip::tcp::socket& socket);
-// Shuts a socket down both ways and closes it, ignoring errors (the peer may be gone).
-void close_socket(asio::ip::tcp::socket& socket);
+
+// Hands an accepted socket on as a stream: at once for plain TCP; with `tls`, once its TLS
+// handshake is done within `timeout`. A peer that does not complete it (plain TCP on a TLS
+// port, a bad certificate request, silence) is logged and let go; nobody else waits for it.
+void secure_then(asio::ip::tcp::socket socket, std::shared_ptr<asio::ssl::context> tls, std::chrono::milliseconds timeout,
+                 std::function<void(ByteStream)> ready);
 
 // Accepts connections until `stopping` turns true, handing each socket to `accepted`. A failed
 // accept (out of descriptors and the like) is logged as `failure_event` and retried after a

@@ -9,12 +9,13 @@
 #include "client/gl/context.hpp"
 #include "client/viewer/session_view.hpp"
 #include "client/viewer/viewer.hpp"
+#include "common/byte_stream.hpp"
 #include "common/error.hpp"
 
 using namespace inkwire;
 
 int main(int argc, char** argv) {
-  std::string connect = "127.0.0.1:7878", session, token, size = "640x480", cache_dir, style, view, name = "inkwire-client";
+  std::string connect = "127.0.0.1:7878", session, token, size = "640x480", cache_dir, style, view, name = "inkwire-client", ca;
   std::vector<std::string> settings;
   bool headless = false;
   ViewerOptions o;
@@ -22,6 +23,9 @@ int main(int argc, char** argv) {
   app.add_option("--connect", connect, "server HOST:PORT");
   app.add_option("--session", session, "session name")->required();
   app.add_option("--token", token, "the session's token, if it has one");
+  bool tls = false;
+  app.add_flag("--tls", tls, "connect over TLS (a server with \"tls\" in its config); its certificate must name the --connect host");
+  app.add_option("--ca", ca, "with --tls: PEM file of the certificate authority (or the server's own certificate) to trust instead of the system's");
   app.add_flag("--headless", headless, "render to files instead of a window (the default without a display)");
   app.add_option("--frames", o.frames, "headless: frames to render")->check(CLI::Range(1, 100000));
   app.add_option("--fps", o.fps, "frames per second (paced in real time)")->check(CLI::Range(1, 240));
@@ -49,7 +53,8 @@ int main(int argc, char** argv) {
     if (!settings.empty() && style.empty()) throw Error("--set needs --style");
     std::signal(SIGPIPE, SIG_IGN);
     AssetCache cache(cache_dir.empty() ? AssetCache::default_dir() : std::filesystem::path(cache_dir));
-    SessionClient client(connect, name);
+    if (!ca.empty() && !tls) throw Error("--ca needs --tls");
+    SessionClient client(connect, name, tls ? client_tls_context(ca) : nullptr);
     const protocol::Snapshot joined = client.join(session, token);
     if (!style.empty()) client.send(protocol::StyleChange{.renderer = style, .settings = settings});
     if (!view.empty() && !joined.product.directions.empty()) {

@@ -13,21 +13,44 @@ constexpr int kRequestsAhead = 4;  // protocol/SPEC.md: at most 4 asset requests
 
 }  // namespace
 
-SessionClient::SessionClient(const std::string& host_port, const std::string& client_name) {
+namespace {
+
+ByteStream plain_or_tls(asio::io_context& io, asio::ssl::context* tls) {
+  return tls ? ByteStream(asio::ip::tcp::socket(io), *tls) : ByteStream(asio::ip::tcp::socket(io));
+}
+
+}  // namespace
+
+SessionClient::SessionClient(const std::string& host_port, const std::string& client_name, std::shared_ptr<asio::ssl::context> tls)
+    : tls_(std::move(tls)), stream_(plain_or_tls(io_, tls_.get())) {
   const size_t colon = host_port.rfind(':');
   if (colon == std::string::npos || colon == 0) throw Error("--connect '" + host_port + "' is not HOST:PORT");
+  const std::string host = host_port.substr(0, colon);
   std::error_code ec;
   asio::ip::tcp::resolver resolver(io_);
-  const auto endpoints = resolver.resolve(host_port.substr(0, colon), host_port.substr(colon + 1), ec);
-  if (!ec) asio::connect(socket_, endpoints, ec);
+  const auto endpoints = resolver.resolve(host, host_port.substr(colon + 1), ec);
+  if (!ec) asio::connect(stream_.socket(), endpoints, ec);
   if (ec) throw Error("cannot connect to " + host_port + ": " + ec.message());
-  socket_.set_option(asio::ip::tcp::no_delay(true), ec);
+  stream_.socket().set_option(asio::ip::tcp::no_delay(true), ec);
+  if (auto* tls_stream = stream_.tls_stream()) {
+    // The name the certificate must carry, and the one the server is asked for (SNI).
+    tls_stream->set_verify_callback(asio::ssl::host_name_verification(host));
+    SSL_set_tlsext_host_name(tls_stream->native_handle(), host.c_str());
+    tls_stream->handshake(asio::ssl::stream_base::client, ec);
+    if (ec) throw Error("TLS with " + host_port + " failed: " + ec.message());
+  }
   start_reading();
   thread_ = std::thread([this] { io_.run(); });
   try {
     send(Hello{.client_name = client_name.substr(0, kMaxName)});
     const Message reply = wait_for([](const Message& m) { return std::holds_alternative<Welcome>(m); }, kReplyTimeout);
     if (const auto* error = std::get_if<ErrorMessage>(&reply)) throw Error("server refused the connection: " + error->reason);
+  } catch (const Error& e) {
+    stop();  // no destructor runs for an object whose constructor threw
+    // A TLS listener drops a plain client without a word: say what to try.
+    if (!tls_ && std::string(e.what()).starts_with("connection closed"))
+      throw Error(std::string(e.what()) + " before the server's welcome (if it speaks TLS, connect with --tls)");
+    throw;
   } catch (...) {
     stop();  // no destructor runs for an object whose constructor threw
     throw;
@@ -39,14 +62,13 @@ SessionClient::~SessionClient() { stop(); }
 void SessionClient::stop() {
   asio::post(io_, [this] {
     std::error_code ec;
-    socket_.shutdown(asio::ip::tcp::socket::shutdown_both, ec);
-    socket_.close(ec);
+    stream_.close();
   });
   if (thread_.joinable()) thread_.join();
 }
 
 void SessionClient::start_reading() {
-  socket_.async_read_some(asio::buffer(read_buffer_), [this](std::error_code ec, size_t n) {
+  stream_.async_read_some(asio::buffer(read_buffer_), [this](std::error_code ec, size_t n) {
     if (ec) {
       std::lock_guard lock(mutex_);
       connected_ = false;
@@ -63,7 +85,7 @@ void SessionClient::start_reading() {
       last_error_ = std::string("malformed data from the server: ") + e.what();
       connected_ = false;
       changed_.notify_all();
-      socket_.close(ec);
+      stream_.close();
       return;
     }
     start_reading();
@@ -119,7 +141,7 @@ void SessionClient::write_next() {
     return;
   }
   writing_ = true;
-  asio::async_write(socket_, asio::buffer(outbox_.front()), [this](std::error_code ec, size_t) {
+  asio::async_write(stream_, asio::buffer(outbox_.front()), [this](std::error_code ec, size_t) {
     outbox_.pop_front();
     if (ec) {
       outbox_.clear();

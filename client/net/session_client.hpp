@@ -16,15 +16,17 @@
 #include <asio.hpp>
 
 #include "client/net/asset_cache.hpp"
+#include "common/byte_stream.hpp"
 #include "protocol/framing.hpp"
 
 namespace inkwire {
 
 class SessionClient {
  public:
-  // Connects to HOST:PORT and completes the handshake; throws inkwire::Error with the server's
-  // reason (e.g. a version mismatch) or the socket's.
-  SessionClient(const std::string& host_port, const std::string& client_name);
+  // Connects to HOST:PORT (over TLS when `tls` is given: the server's certificate must be
+  // trusted by it and name HOST) and completes the handshake; throws inkwire::Error with the
+  // server's reason (e.g. a version mismatch), TLS's or the socket's.
+  SessionClient(const std::string& host_port, const std::string& client_name, std::shared_ptr<asio::ssl::context> tls = nullptr);
   ~SessionClient();
   SessionClient(const SessionClient&) = delete;
   SessionClient& operator=(const SessionClient&) = delete;
@@ -65,7 +67,8 @@ class SessionClient {
   protocol::Message wait_for(std::function<bool(const protocol::Message&)> wanted, std::chrono::milliseconds timeout);
 
   asio::io_context io_;
-  asio::ip::tcp::socket socket_{io_};
+  std::shared_ptr<asio::ssl::context> tls_;
+  ByteStream stream_;
   std::thread thread_;
   std::array<uint8_t, 16384> read_buffer_{};
   protocol::FrameDecoder decoder_;

@@ -111,8 +111,17 @@ BrokerAddress parse_broker(const std::string& url) {
   constexpr std::string_view scheme = "redis://";
   if (url.rfind("nats://", 0) == 0) throw Error("broker '" + url + "': this build relays through Redis; give redis://HOST:PORT");
   if (url.rfind(scheme, 0) != 0) throw Error("broker '" + url + "' is not redis://HOST:PORT");
-  const std::string rest = url.substr(scheme.size());
+  std::string rest = url.substr(scheme.size());
   BrokerAddress a;
+  // redis://[[USER]:PASSWORD@]HOST[:PORT]
+  if (const size_t at = rest.rfind('@'); at != std::string::npos) {
+    const std::string credentials = rest.substr(0, at);
+    const size_t colon = credentials.find(':');
+    if (colon == std::string::npos) throw Error("broker URL: credentials go as :PASSWORD@ or USER:PASSWORD@");
+    a.user = credentials.substr(0, colon);
+    a.password = credentials.substr(colon + 1);
+    rest = rest.substr(at + 1);
+  }
   const size_t colon = rest.rfind(':');
   a.host = rest.substr(0, colon);
   if (colon != std::string::npos) {
@@ -136,7 +145,7 @@ RedisRelay::RedisRelay(Server& server, BrokerAddress address)
 RedisRelay::~RedisRelay() { stop(); }
 
 void RedisRelay::start() {
-  log_info("broker-connecting", {{"broker", "redis://" + address_.host + ":" + std::to_string(address_.port)}});
+  log_info("broker-connecting", {{"broker", "redis://" + address_.host + ":" + std::to_string(address_.port)}, {"password", !address_.password.empty()}});
   connect();
 }
 
@@ -163,9 +172,22 @@ void RedisRelay::connect() {
     if (!events_.subscribe({kEvents, kNotices}, [this](const redisReply* r) { on_subscription(r); }))
       lost("cannot subscribe");
   };
+  // A broker with a password hears it first on each connection.
+  const auto authenticated = [this, up](RedisConnection& connection) {
+    return [this, up, &connection] {
+      if (address_.password.empty()) return up();
+      std::vector<std::string_view> auth{"AUTH"};
+      if (!address_.user.empty()) auth.push_back(address_.user);
+      auth.push_back(address_.password);
+      connection.command(auth, [this, up](const redisReply* r) {
+        if (is_error(r)) return lost("the broker refused the password: " + reason_of(r));
+        up();
+      });
+    };
+  };
   const auto down = [this](const std::string& reason) { lost(reason); };
-  commands_.connect(address_.host, address_.port, 2s, up, down);
-  events_.connect(address_.host, address_.port, 2s, up, down);
+  commands_.connect(address_.host, address_.port, 2s, authenticated(commands_), down);
+  events_.connect(address_.host, address_.port, 2s, authenticated(events_), down);
 }
 
 void RedisRelay::lost(const std::string& reason) {
@@ -176,7 +198,7 @@ void RedisRelay::lost(const std::string& reason) {
   commands_.disconnect();
   events_.disconnect();
   for (auto& [name, sync] : syncs_) sync.syncing = false, sync.waiting.clear();
-  log(was_ready ? LogLevel::Warn : LogLevel::Info, was_ready ? "broker-lost" : "broker-unreachable",
+  log(LogLevel::Warn, was_ready ? "broker-lost" : "broker-unreachable",
       {{"reason", reason}, {"retry_ms", backoff_.count()}, {"serving", "own members only"}});
   retry_timer_.expires_after(backoff_);
   backoff_ = std::min<std::chrono::milliseconds>(backoff_ * 2, 5s);

@@ -30,8 +30,9 @@ struct StoredSession;
 struct BrokerAddress {
   std::string host;
   uint16_t port = 6379;
+  std::string user, password;  // AUTH on connecting, when a password is given
 };
-// "redis://HOST:PORT" (port optional). Throws inkwire::Error for anything else, naming what
+// "redis://[[USER]:PASSWORD@]HOST[:PORT]". Throws inkwire::Error for anything else, naming what
 // this build can use.
 BrokerAddress parse_broker(const std::string& url);
 

@@ -116,8 +116,12 @@ HttpServer::HttpServer(asio::io_context& io, Server& server) : io_(io), server_(
 
 void HttpServer::start() {
   log_info("http-listening", {{"host", server_.config().http_host}, {"port", port()}});
-  asio::co_spawn(io_, accept_connections(acceptor_, stopping_, "http-accept-failed", [this](asio::ip::tcp::socket socket) {
-                   asio::co_spawn(io_, serve(std::move(socket)), asio::detached);
+  // The handshake shares the head's time limit: a peer that says nothing is cut off either way.
+  const auto timeout = std::chrono::milliseconds(int64_t(server_.config().http_head_timeout_seconds * 1000));
+  asio::co_spawn(io_, accept_connections(acceptor_, stopping_, "http-accept-failed", [this, timeout](asio::ip::tcp::socket socket) {
+                   secure_then(std::move(socket), server_.tls(), timeout, [this](ByteStream stream) {
+                     asio::co_spawn(io_, serve(std::move(stream)), asio::detached);
+                   });
                  }), asio::detached);
 }
 
@@ -127,20 +131,19 @@ void HttpServer::stop() {
   acceptor_.close(ec);
 }
 
-asio::awaitable<void> HttpServer::serve(asio::ip::tcp::socket accepted) {
-  const std::string peer = peer_of(accepted);
+asio::awaitable<void> HttpServer::serve(ByteStream accepted) {
+  const std::string peer = peer_of(accepted.socket());
   // The whole head within the timeout, or the connection is cut: a slow-loris client holds
   // one socket for a few seconds at most. Shared with the watchdog, which may run after this
   // coroutine has ended.
-  auto socket_ptr = std::make_shared<asio::ip::tcp::socket>(std::move(accepted));
+  auto socket_ptr = std::make_shared<ByteStream>(std::move(accepted));
   auto head_done = std::make_shared<bool>(false);
   auto& socket = *socket_ptr;
   auto watchdog = std::make_shared<asio::steady_timer>(io_, std::chrono::milliseconds(int64_t(server_.config().http_head_timeout_seconds * 1000)));
   watchdog->async_wait([socket_ptr, head_done, peer](std::error_code ec) {
     if (ec || *head_done) return;
     log_warn("http-too-slow", {{"peer", peer}});
-    std::error_code ignored;
-    socket_ptr->close(ignored);
+    socket_ptr->close();
   });
   std::string buffer;
   auto [ec, n] = co_await asio::async_read_until(socket, asio::dynamic_buffer(buffer, kMaxHead), "\r\n\r\n", no_throw);
@@ -148,7 +151,7 @@ asio::awaitable<void> HttpServer::serve(asio::ip::tcp::socket accepted) {
   watchdog->cancel();
   auto reply = [&](const std::string& text) -> asio::awaitable<void> {
     co_await asio::async_write(socket, asio::buffer(text), no_throw);
-    close_socket(socket);
+    socket.close();
   };
   if (ec) {
     if (ec == asio::error::not_found) co_await reply(response(431, "Request Header Fields Too Large", "text/plain", "request head over 8 KiB\n"));

@@ -10,6 +10,8 @@
 
 #include <asio.hpp>
 
+#include "common/byte_stream.hpp"
+
 namespace inkwire::server {
 
 class Server;
@@ -23,7 +25,7 @@ class HttpServer {
   void stop();
 
  private:
-  asio::awaitable<void> serve(asio::ip::tcp::socket socket);
+  asio::awaitable<void> serve(ByteStream stream);
 
   asio::io_context& io_;
   Server& server_;

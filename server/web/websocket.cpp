@@ -43,10 +43,10 @@ size_t websocket_frame_header(uint8_t opcode, uint64_t size, std::array<uint8_t,
   return 10;
 }
 
-WebSocketTransport::WebSocketTransport(asio::ip::tcp::socket socket, std::string already_read)
-    : socket_(std::move(socket)), pending_(std::move(already_read)), peer_(peer_of(socket_)) {
+WebSocketTransport::WebSocketTransport(ByteStream stream, std::string already_read)
+    : stream_(std::move(stream)), pending_(std::move(already_read)), peer_(peer_of(stream_.socket())) {
   std::error_code ec;
-  socket_.set_option(asio::ip::tcp::no_delay(true), ec);
+  stream_.socket().set_option(asio::ip::tcp::no_delay(true), ec);
 }
 
 asio::awaitable<std::error_code> WebSocketTransport::read_exactly(uint8_t* out, size_t size) {
@@ -54,7 +54,7 @@ asio::awaitable<std::error_code> WebSocketTransport::read_exactly(uint8_t* out, 
   std::memcpy(out, pending_.data(), from_pending);
   pending_.erase(0, from_pending);
   if (from_pending == size) co_return std::error_code();
-  auto [ec, n] = co_await asio::async_read(socket_, asio::buffer(out + from_pending, size - from_pending), no_throw);
+  auto [ec, n] = co_await asio::async_read(stream_, asio::buffer(out + from_pending, size - from_pending), no_throw);
   co_return ec;
 }
 
@@ -115,10 +115,9 @@ asio::awaitable<std::error_code> WebSocketTransport::write_frames(const std::deq
     buffers_.push_back(asio::buffer(headers_[i].data(), n));
     buffers_.push_back(asio::buffer(*frames[i].frame));
   }
-  auto [ec, n] = co_await asio::async_write(socket_, buffers_, no_throw);
+  auto [ec, n] = co_await asio::async_write(stream_, buffers_, no_throw);
   co_return ec;
 }
 
-void WebSocketTransport::close() { close_socket(socket_); }
 
 }  // namespace inkwire::server

@@ -16,19 +16,19 @@ namespace inkwire::server {
 class WebSocketTransport final : public Transport {
  public:
   // `already_read`: bytes that came after the upgrade request, the start of the first frames.
-  WebSocketTransport(asio::ip::tcp::socket socket, std::string already_read);
+  WebSocketTransport(ByteStream stream, std::string already_read);
   asio::awaitable<std::error_code> read_frame(protocol::Bytes& frame) override;
   asio::awaitable<std::error_code> write_frames(const std::deque<Outgoing>& frames) override;
-  void close() override;
+  void close() override { stream_.close(); }
   std::string peer() const override { return peer_; }
-  std::string name() const override { return "websocket"; }
-  asio::any_io_executor executor() override { return socket_.get_executor(); }
+  std::string name() const override { return stream_.tls() ? "websocket-tls" : "websocket"; }
+  asio::any_io_executor executor() override { return stream_.get_executor(); }
 
  private:
   // Fills `out` with exactly out.size() bytes, the leftover of the upgrade first.
   asio::awaitable<std::error_code> read_exactly(uint8_t* out, size_t size);
 
-  asio::ip::tcp::socket socket_;
+  ByteStream stream_;
   std::string pending_;  // read with the upgrade request, not yet consumed
   std::string peer_;
   std::vector<std::array<uint8_t, 10>> headers_;

@@ -40,22 +40,25 @@ bool accepts(int port) {
 // case for the instances: they must put everything back).
 class BrokerUnderTest {
  public:
-  explicit BrokerUnderTest(const fs::path& dir) : dir_(dir), port_(free_port()) { start(); }
+  explicit BrokerUnderTest(const fs::path& dir, std::string password = "") : dir_(dir), port_(free_port()), password_(std::move(password)) { start(); }
   void start() {
-    process_ = std::make_unique<Process>(kRedis.string(), std::vector<std::string>{"--port", std::to_string(port_), "--bind", "127.0.0.1", "--save", "",
-                                                                                   "--appendonly", "no", "--dir", dir_.string()},
-                                         dir_ / ("redis-" + std::to_string(starts_++) + ".log"));
+    std::vector<std::string> args{"--port", std::to_string(port_), "--bind", "127.0.0.1", "--save", "", "--appendonly", "no", "--dir", dir_.string()};
+    if (!password_.empty()) args.insert(args.end(), {"--requirepass", password_});
+    process_ = std::make_unique<Process>(kRedis.string(), args, dir_ / ("redis-" + std::to_string(starts_++) + ".log"));
     ASSERT_TRUE(eventually([&] { return accepts(port_); })) << process_->output();
   }
   void kill() {
     process_->kill(SIGKILL);
     process_->wait();
   }
-  std::string url() const { return "redis://127.0.0.1:" + std::to_string(port_); }
+  std::string url(const std::string& password = "") const {
+    return "redis://" + (password.empty() ? "" : ":" + password + "@") + "127.0.0.1:" + std::to_string(port_);
+  }
 
  private:
   fs::path dir_;
   int port_;
+  std::string password_;
   int starts_ = 0;
   std::unique_ptr<Process> process_;
 };
@@ -182,4 +185,23 @@ TEST_F(BrokerE2ETest, ABrokerKilledAndRestartedLosesNothingAndChangesFlowAgain) 
     EXPECT_EQ(joined.camera.sequence, 2u);
     EXPECT_EQ(joined.revision, a.state().revision) << "a late joiner on " << address;
   }
+}
+
+TEST_F(BrokerE2ETest, ABrokerWithAPasswordServesInstancesThatKnowItAndRefusesOthersWithTheReason) {
+  const fs::path dir = output_dir("broker-password");
+  fs::create_directories(dir / "one");
+  fs::create_directories(dir / "two");
+  BrokerUnderTest broker(dir, "hunter2");
+  nlohmann::json right = instance_config("one", broker, cows()), wrong = instance_config("two", broker, nlohmann::json::array());
+  right["broker"] = broker.url("hunter2");
+  wrong["broker"] = broker.url("guess");
+  ServerUnderTest one(dir / "one", right);
+  ServerUnderTest two(dir / "two", wrong);
+  EXPECT_TRUE(eventually([&] { return count_events(one, "broker-connected") == 1; })) << one.process().output();
+  EXPECT_TRUE(eventually([&] { return two.process().output().find("the broker refused the password") != std::string::npos; })) << two.process().output();
+  EXPECT_EQ(count_events(two, "session-added"), 0u) << "an instance without the password got the sessions";
+  // It still serves what it has (nothing here) and keeps trying; the other is unaffected.
+  EXPECT_TRUE(two.process().running());
+  SessionClient a(one.address(), "a");
+  EXPECT_NO_THROW(a.join("cows", ""));
 }

@@ -76,12 +76,18 @@ TEST(ServerConfigTest, BrokerAddressesAreReadOrRefusedWithTheReason) {
   EXPECT_EQ(a.host, "127.0.0.1");
   EXPECT_EQ(a.port, 6390);
   EXPECT_EQ(parse_broker("redis://cache.internal").port, 6379) << "Redis' own port when none is given";
+  const BrokerAddress secret = parse_broker("redis://:pa:ss@word@10.0.0.5:6380");
+  EXPECT_EQ(secret.password, "pa:ss@word");
+  EXPECT_EQ(secret.user, "");
+  EXPECT_EQ(secret.host, "10.0.0.5");
+  EXPECT_EQ(parse_broker("redis://inkwire:pw@h").user, "inkwire");
   const auto refused = [](const std::string& url) { return test::error_of([&] { parse_broker(url); }); };
   EXPECT_NE(refused("nats://127.0.0.1:4222").find("this build relays through Redis"), std::string::npos);
   EXPECT_NE(refused("http://127.0.0.1:6379").find("is not redis://"), std::string::npos);
   EXPECT_NE(refused("redis://127.0.0.1:99999").find("port"), std::string::npos);
   EXPECT_NE(refused("redis://127.0.0.1:").find("port"), std::string::npos);
   EXPECT_NE(refused("redis://:6379").find("no host"), std::string::npos);
+  EXPECT_NE(refused("redis://secret@h:6379").find("credentials"), std::string::npos);
 }
 
 TEST(SessionTokenTest, TokensAreKeptAsDigestsAndCompared) {

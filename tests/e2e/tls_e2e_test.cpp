@@ -1,0 +1,114 @@
+// TLS on the server's listeners (SPEC D3), end to end on 127.0.0.1 with a throw-away
+// certificate: a client that trusts it joins and follows a change; a plain-TCP client on the
+// TLS port is refused cleanly while the server carries on; a client that does not trust the
+// certificate, or reaches the server under a name the certificate lacks, fails saying why;
+// plain listeners off this machine are refused at start. Skipped with a message without the
+// openssl program (Debian package openssl).
+#include <asio.hpp>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "client/net/session_client.hpp"
+#include "common/byte_stream.hpp"
+#include "e2e_support.hpp"
+
+using namespace inkwire;
+using namespace inkwire::e2e;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kOpenssl = "/usr/bin/openssl";
+
+// A self-signed certificate for `name` (an IP address) and its key, as an operator would make
+// one for a test (docs/deploy.md).
+void make_certificate(const fs::path& dir, const std::string& stem, const std::string& name) {
+  Process openssl(kOpenssl.string(), {"req", "-x509", "-newkey", "ec", "-pkeyopt", "ec_paramgen_curve:prime256v1", "-nodes", "-days", "1",
+                                      "-subj", "/CN=" + name, "-addext", "subjectAltName=IP:" + name,
+                                      "-keyout", (dir / (stem + ".key")).string(), "-out", (dir / (stem + ".pem")).string()},
+                  dir / (stem + "-openssl.log"));
+  ASSERT_EQ(openssl.wait(), 0) << openssl.output();
+}
+
+nlohmann::json tls_config(const fs::path& dir) {
+  return {{"http", "127.0.0.1:0"}, {"tls", {{"certificate", (dir / "server.pem").string()}, {"key", (dir / "server.key").string()}}},
+          {"sessions", {{{"name", "room"}, {"kind", "scene"}, {"assets", nlohmann::json::array()}}}}};
+}
+
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+class TlsE2ETest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!fs::exists(kOpenssl)) GTEST_SKIP() << kOpenssl << " is missing (Debian package openssl)";
+  }
+};
+
+TEST_F(TlsE2ETest, AClientTrustingTheCertificateJoinsAndPlainTcpIsRefusedCleanly) {
+  const fs::path dir = output_dir("tls");
+  make_certificate(dir, "server", "127.0.0.1");
+  ServerUnderTest server(dir, tls_config(dir));
+
+  SessionClient a(server.address(), "a", client_tls_context((dir / "server.pem").string()));
+  SessionClient b(server.address(), "b", client_tls_context((dir / "server.pem").string()));
+  a.join("room", "");
+  b.join("room", "");
+  a.send(protocol::StyleChange{.renderer = "comic", .settings = {}});
+  EXPECT_TRUE(eventually([&] { return b.state().style.renderer == "comic"; })) << "a change did not cross over TLS";
+
+  // Plain TCP on the TLS port: no hang, no crash, a reason on both sides.
+  const std::string plain = error_of([&] { SessionClient p(server.address(), "plain"); });
+  EXPECT_FALSE(plain.empty()) << "a plain-TCP client was served on the TLS port";
+  EXPECT_TRUE(eventually([&] { return !log_events(server.process().output(), "tls-handshake-failed").empty(); })) << server.process().output();
+
+  // A client that trusts other certificates refuses this server.
+  make_certificate(dir, "other", "127.0.0.1");
+  const std::string untrusted = error_of([&] { SessionClient u(server.address(), "untrusted", client_tls_context((dir / "other.pem").string())); });
+  EXPECT_NE(untrusted.find("TLS"), std::string::npos) << untrusted;
+  std::printf("  refused: plain TCP: %s\n  untrusted: %s\n", plain.c_str(), untrusted.c_str());
+  // ... and so does one that reached it under a name the certificate does not carry.
+  const std::string wrong_name = error_of([&] {
+    SessionClient w("localhost:" + server.address().substr(server.address().rfind(':') + 1), "wrong-name", client_tls_context((dir / "server.pem").string()));
+  });
+  EXPECT_NE(wrong_name.find("TLS"), std::string::npos) << wrong_name;
+  std::printf("  wrong name: %s\n", wrong_name.c_str());
+
+  // The HTTP listener speaks TLS too (https://, wss://), and a plain request there gets nothing.
+  {
+    asio::io_context io;
+    auto trust = client_tls_context((dir / "server.pem").string());
+    ByteStream stream(asio::ip::tcp::socket(io), *trust);
+    stream.socket().connect({asio::ip::make_address("127.0.0.1"), uint16_t(http_port(server))});
+    stream.tls_stream()->set_verify_callback(asio::ssl::host_name_verification("127.0.0.1"));
+    stream.tls_stream()->handshake(asio::ssl::stream_base::client);
+    asio::write(*stream.tls_stream(), asio::buffer(std::string("GET /healthz HTTP/1.1\r\nHost: x\r\n\r\n")));
+    std::string answer;
+    std::error_code ec;
+    asio::read(*stream.tls_stream(), asio::dynamic_buffer(answer), ec);
+    EXPECT_NE(answer.find("200 OK"), std::string::npos) << answer;
+    EXPECT_EQ(http_get(http_port(server), "GET /healthz HTTP/1.1\r\nHost: x\r\n\r\n").find("200 OK"), std::string::npos);
+  }
+
+  // Everyone else carries on.
+  b.send(protocol::StyleChange{.renderer = "hatching", .settings = {}});
+  EXPECT_TRUE(eventually([&] { return a.state().style.renderer == "hatching"; }));
+  EXPECT_TRUE(server.process().running());
+}
+
+TEST_F(TlsE2ETest, PlainListenersOffThisMachineAreRefusedAtStartWithTheReason) {
+  const fs::path dir = output_dir("tls-required");
+  std::ofstream(dir / "server.json") << nlohmann::json{{"sessions", nlohmann::json::array()}}.dump();
+  Process server("inkwire-server", {"--listen", "0.0.0.0:0", "--data", (dir / "data").string(), "--config", (dir / "server.json").string()}, dir / "server.log");
+  EXPECT_EQ(server.wait(), 1);
+  EXPECT_NE(server.output().find("reachable from other machines"), std::string::npos) << server.output();
+  EXPECT_FALSE(fs::exists(dir / "data")) << "the refused server created its data folder";
+}
