@@ -99,9 +99,14 @@ ServerConfig ServerConfig::embedded_default() {
 ServerConfig ServerConfig::load(const fs::path& file) {
   std::ifstream in(file);
   if (!in) throw Error("cannot read config '" + file.string() + "'");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return parse(text, file.string());
+}
+
+ServerConfig ServerConfig::parse(const std::string& text, const std::string& origin) {
   ServerConfig c = embedded_default();
   try {
-    const nlohmann::json j = nlohmann::json::parse(in);
+    const nlohmann::json j = nlohmann::json::parse(text);
     if (j.contains("listen")) parse_listen(j.at("listen").get<std::string>(), c);
     if (j.contains("data")) c.data_dir = j.at("data").get<std::string>();
     if (j.contains("name")) c.name = j.at("name").get<std::string>();
@@ -135,7 +140,7 @@ ServerConfig ServerConfig::load(const fs::path& file) {
       }
     }
   } catch (const nlohmann::json::exception& e) {
-    throw Error("config '" + file.string() + "': " + e.what());
+    throw Error("config '" + origin + "': " + e.what());
   }
   if (!(c.http_head_timeout_seconds > 0.05 && c.http_head_timeout_seconds <= 300)) throw Error("config: http_head_timeout_seconds must be 0.05..300");
   if (c.max_connections < 1 || c.max_connections_per_address < 1) throw Error("config: max_connections and max_connections_per_address must be at least 1");

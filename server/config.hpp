@@ -76,6 +76,8 @@ struct ServerConfig {
   static ServerConfig embedded_default();
   // Reads a JSON config over the embedded default. Throws inkwire::Error with the reason.
   static ServerConfig load(const std::filesystem::path& file);
+  // The same from the file's text; `origin` names it in refusals.
+  static ServerConfig parse(const std::string& text, const std::string& origin);
 };
 
 // Parses "HOST:PORT" into the TCP listener or the HTTP one; throws inkwire::Error.

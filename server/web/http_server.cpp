@@ -12,6 +12,7 @@
 #include "common/log.hpp"
 #include "server/relay/relay.hpp"
 #include "server/server.hpp"
+#include "server/web/http_request.hpp"
 #include "server/web/metrics.hpp"
 #include "server/web/websocket.hpp"
 
@@ -25,45 +26,6 @@ namespace {
 
 constexpr auto no_throw = asio::experimental::as_tuple(asio::use_awaitable);
 constexpr size_t kMaxHead = 8192;
-
-struct Request {
-  std::string method, path;
-  std::map<std::string, std::string> headers;  // names in lower case
-  std::string header(const std::string& name) const {
-    const auto it = headers.find(name);
-    return it == headers.end() ? "" : it->second;
-  }
-};
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return s;
-}
-
-std::string trim(const std::string& s) {
-  const size_t a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
-  return a == std::string::npos ? "" : s.substr(a, b - a + 1);
-}
-
-// Throws inkwire::Error for a head that is not HTTP/1.x.
-Request parse_head(const std::string& head) {
-  std::istringstream lines(head);
-  std::string line;
-  std::getline(lines, line);
-  if (!line.empty() && line.back() == '\r') line.pop_back();
-  Request r;
-  std::istringstream first(line);
-  std::string version;
-  if (!(first >> r.method >> r.path >> version) || version.rfind("HTTP/1.", 0) != 0) throw Error("not an HTTP/1 request");
-  while (std::getline(lines, line)) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty()) break;
-    const size_t colon = line.find(':');
-    if (colon == std::string::npos || colon == 0) throw Error("malformed header line");
-    r.headers[lower(line.substr(0, colon))] = trim(line.substr(colon + 1));
-  }
-  return r;
-}
 
 std::string response(int status, const char* reason, const std::string& type, const std::string& body) {
   return "HTTP/1.1 " + std::to_string(status) + " " + reason + "\r\nContent-Type: " + type + "\r\nContent-Length: " +
@@ -83,8 +45,10 @@ std::string content_type(const std::string& path) {
 }
 
 // A session's page: `element` full-size, and the snippet to paste into one's own page.
-std::string element_page(const std::string& element, const std::string& session, const std::string& host, const std::string& invitation) {
-  const std::string snippet = "<script type=\"module\" src=\"http://" + host + "/inkwire.js\"></script>\n<" + element + " server=\"ws://" +
+// Over TLS the snippet names https:// and wss:// (a shop's https page may load nothing else).
+std::string element_page(const std::string& element, const std::string& session, const std::string& host, const std::string& invitation, bool tls) {
+  const std::string http = tls ? "https://" : "http://", ws = tls ? "wss://" : "ws://";
+  const std::string snippet = "<script type=\"module\" src=\"" + http + host + "/inkwire.js\"></script>\n<" + element + " server=\"" + ws +
                               host + "/ws\" session=\"" + session + "\" style=\"width: 480px; height: 480px\"></" + element + ">";
   return "<!doctype html><html lang=en><meta charset=utf-8><meta name=viewport content=\"width=device-width, initial-scale=1\">"
          "<title>" + html_escape(session) + "</title><style>html, body { margin: 0; height: 100%; font: 14px system-ui, sans-serif; }"
@@ -216,7 +180,7 @@ asio::awaitable<void> HttpServer::serve(ByteStream accepted) {
       co_return;
     }
     co_await reply(response(200, "OK", "text/html; charset=utf-8",
-                            element_page("inkwire-turntable", session->name(), request.header("host"), "Put this product on your page")));
+                            element_page("inkwire-turntable", session->name(), request.header("host"), "Put this product on your page", server_.tls() != nullptr)));
     co_return;
   }
   if (path.rfind("/conference/", 0) == 0) {
@@ -226,7 +190,7 @@ asio::awaitable<void> HttpServer::serve(ByteStream accepted) {
       co_return;
     }
     co_await reply(response(200, "OK", "text/html; charset=utf-8",
-                            element_page("inkwire-conference", session->name(), request.header("host"), "Put this conference on your page")));
+                            element_page("inkwire-conference", session->name(), request.header("host"), "Put this conference on your page", server_.tls() != nullptr)));
     co_return;
   }
   if (path == "/face/expression_templates.json") {
