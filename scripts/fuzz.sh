@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (clang, AddressSanitizer + UndefinedBehaviorSanitizer) and runs
+# each for SECONDS (default 600), two at a time, then prints a table of executions, coverage and
+# crashes (the one in docs/fuzzing.md came from this script).
+#   scripts/fuzz.sh [SECONDS] [TARGET ...]     corpora in fuzz-corpus/, crashes in fuzz-out/
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+cd "$here"
+seconds=${1:-600}
+shift || true
+targets=("$@")
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_frames fuzz_message fuzz_tween fuzz_landmarks fuzz_http fuzz_websocket fuzz_config)
+
+for p in clang libclang-rt-14-dev; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+if [ -n "${missing[*]:-}" ]; then
+  sudo=""; [ "$(id -u)" = 0 ] || sudo="sudo"
+  $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DINKWIRE_BUILD_FUZZ=ON \
+  -DINKWIRE_BUILD_TESTS=OFF -DINKWIRE_BUILD_BENCH=OFF > /dev/null
+cmake --build build-fuzz -j "$(nproc)" --target "${targets[@]}" > /dev/null
+
+# Seeds: a few well-formed inputs each fuzzer would take long to invent.
+mkdir -p fuzz-out
+for t in "${targets[@]}"; do mkdir -p "fuzz-corpus/$t"; done
+[ -d fuzz-corpus/fuzz_http ] && printf 'GET /ws HTTP/1.1\r\nHost: 127.0.0.1:8080\r\nUpgrade: websocket\r\nConnection: Upgrade\r\nSec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\nSec-WebSocket-Version: 13\r\n\r\n' > fuzz-corpus/fuzz_http/upgrade
+# A masked binary message holding a ping frame (6-byte header, 8-byte nonce), then a close.
+[ -d fuzz-corpus/fuzz_websocket ] && printf '\x82\x8e\x00\x00\x00\x00\x08\x00\x00\x00\x04\x00\x01\x02\x03\x04\x05\x06\x07\x08\x88\x80\x00\x00\x00\x00' > fuzz-corpus/fuzz_websocket/ping
+if [ -d fuzz-corpus/fuzz_config ]; then
+  cp deploy/example/instance-a.json deploy/example/instance-b.json fuzz-corpus/fuzz_config/
+  printf '{"tls": {"certificate": "c.pem", "key": "k.pem"}, "max_connections": 10, "sessions": [{"name": "t", "kind": "turntable", "product": {"photos": "p", "step": 15}}, {"name": "c", "kind": "conference", "face": {"source": "camera:0"}}]}' > fuzz-corpus/fuzz_config/keys.json
+fi
+
+run() {
+  local t=$1
+  # -rss_limit_mb: a target that grows without bound is a finding too.
+  build-fuzz/bin/"$t" -max_total_time="$seconds" -print_final_stats=1 -rss_limit_mb=2048 -artifact_prefix="fuzz-out/$t-" \
+    "fuzz-corpus/$t" > "fuzz-out/$t.log" 2>&1 || true
+}
+running=0
+for t in "${targets[@]}"; do
+  run "$t" &
+  running=$((running + 1))
+  if [ $running -ge 2 ]; then wait -n; running=$((running - 1)); fi
+done
+wait
+
+echo "| target | seconds | executions | executions/s | coverage (edges) | features | corpus | crashes |"
+echo "|---|---|---|---|---|---|---|---|"
+for t in "${targets[@]}"; do
+  log="fuzz-out/$t.log"
+  runs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | awk '{print $2}' | tail -1)
+  done_line=$(grep -E '^#[0-9]+ +DONE' "$log" | tail -1)
+  cov=$(sed -n 's/.*cov: \([0-9]*\).*/\1/p' <<< "$done_line")
+  ft=$(sed -n 's/.* ft: \([0-9]*\).*/\1/p' <<< "$done_line")
+  corp=$(sed -n 's/.* corp: \([0-9]*\)\/.*/\1/p' <<< "$done_line")
+  crashes=$(ls fuzz-out/"$t"-crash-* fuzz-out/"$t"-leak-* fuzz-out/"$t"-oom-* fuzz-out/"$t"-timeout-* 2>/dev/null | wc -l)
+  echo "| $t | $seconds | ${runs:-?} | $(( ${runs:-0} / seconds )) | ${cov:-?} | ${ft:-?} | ${corp:-?} | $crashes |"
+done
