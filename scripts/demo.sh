@@ -204,4 +204,40 @@ fi
 kill -TERM $server_pid && wait $server_pid || true
 trap - EXIT
 
-echo "demo: wrote $out/contact-sheet.png, $out/shade-maps.png, $out/paintings.png, $out/styles/, $out/turntable-*.mp4, $out/painted-video.mp4, $out/tween-methods.png, $out/tween/, $out/conference/ (input | reconstruction | painted, with bytes sent in the .json) and $out/network/ (viewer.mp4: a shared session followed over the network; turntable.mp4 and duck-product.mp4: products turned by a customer, every in-between view synthesised; $out/web/: the product and the conference in a browser; conference.mp4 and conference-painted.mp4: a speaker's face rebuilt from expression codes)"
+# Two server instances sharing their sessions through Redis (deploy/README.md): instance a
+# defines the session, instance b takes it (mesh included) from the broker; a viewer on b records
+# while a director on a changes the style.
+inst="$out/network/instances"
+mkdir -p "$inst" && rm -rf "${inst:?}/"*
+broker_port=$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+redis-server --port "$broker_port" --bind 127.0.0.1 --save "" --appendonly no > "$inst/redis.log" 2>&1 &
+broker_pid=$!
+a_pid="" b_pid=""
+trap 'kill $broker_pid $a_pid $b_pid 2>/dev/null || true' EXIT
+printf '{ "name": "a", "broker": "redis://127.0.0.1:%s", "sessions": [\n  { "name": "shared", "kind": "scene", "style": "comic", "assets": [ { "path": "%s" } ] } ] }\n' \
+  "$broker_port" "$here/build/packaged-data/data/meshes/cow.off" > "$inst/a.json"
+printf '{ "name": "b", "broker": "redis://127.0.0.1:%s", "sessions": [] }\n' "$broker_port" > "$inst/b.json"
+for name in a b; do
+  "$bin/inkwire-server" --listen 127.0.0.1:0 --data "$inst/data-$name" --config "$inst/$name.json" 2> "$inst/$name.log" &
+  declare "${name}_pid=$!"
+  for _ in $(seq 100); do  # serving, and holding the shared session (b: taken from the broker)
+    grep -q '"event":"broker-connected"' "$inst/$name.log" && grep -q '"session":"shared"' "$inst/$name.log" && break
+    sleep 0.1
+  done
+  declare "${name}_port=$(sed -n 's/.*"event":"listening".*"port":\([0-9]*\).*/\1/p' "$inst/$name.log")"
+done
+[ -n "$a_port" ] && [ -n "$b_port" ] || { echo "demo: the two instances did not start" >&2; cat "$inst/"*.log >&2; exit 1; }
+"$bin/inkwire-client" --connect "127.0.0.1:$b_port" --headless --cache "$inst/cache-b" --session shared --name viewer-on-b \
+  --frames 66 --fps 12 --size 480x360 --out "$inst/viewer-on-b.mp4" 2> "$inst/viewer.log" &
+viewer_pid=$!
+for style in sketch-pencil painterly comic-extended; do
+  sleep 1
+  "$bin/inkwire-client" --connect "127.0.0.1:$a_port" --headless --cache "$inst/cache-a" --session shared --name director-on-a \
+    --style "$style" --frames 1 --size 320x240 --out "$inst/director-$style.png" 2>> "$inst/director.log"
+done
+wait $viewer_pid
+kill -TERM "$a_pid" "$b_pid" && wait "$a_pid" "$b_pid" || true
+kill "$broker_pid" && wait "$broker_pid" || true
+trap - EXIT
+
+echo "demo: wrote $out/contact-sheet.png, $out/shade-maps.png, $out/paintings.png, $out/styles/, $out/turntable-*.mp4, $out/painted-video.mp4, $out/tween-methods.png, $out/tween/, $out/conference/ (input | reconstruction | painted, with bytes sent in the .json) and $out/network/ (viewer.mp4: a shared session followed over the network; turntable.mp4 and duck-product.mp4: products turned by a customer, every in-between view synthesised; $out/web/: the product and the conference in a browser; conference.mp4 and conference-painted.mp4: a speaker's face rebuilt from expression codes; instances/viewer-on-b.mp4: a session shared by two server instances through Redis)"
