@@ -36,6 +36,7 @@ Bytes pose_frame(uint32_t sequence) {
 
 // Receivers of a peer row: thread-safe (NATS calls back on its own threads).
 struct Deliveries {
+  explicit Deliveries(int receivers) : last(size_t(receivers)) {}
   std::mutex mutex;
   std::vector<double> latencies_ms;
   std::vector<Clock::time_point> last;  // per receiver
@@ -103,9 +104,8 @@ Result peer_result(const LoadShape& shape, const std::string& peer, Deliveries& 
 Result redis_peer(const LoadShape& shape) {
   BrokerProcess broker(BrokerProcess::Kind::Redis);
   Load load(shape, 1);
-  Deliveries deliveries;
   const int receivers = shape.clients - shape.sessions;
-  deliveries.last.resize(size_t(receivers));
+  Deliveries deliveries(receivers);
   asio::io_context io(1);
   std::vector<std::unique_ptr<server::RedisConnection>> publishers, subscribers;
   int subscribed = 0, failed = 0;
@@ -162,9 +162,8 @@ Result redis_peer(const LoadShape& shape) {
 Result nats_peer(const LoadShape& shape) {
   BrokerProcess broker(BrokerProcess::Kind::Nats);
   Load load(shape, 1);
-  Deliveries deliveries;
   const int receivers = shape.clients - shape.sessions;
-  deliveries.last.resize(size_t(receivers));
+  Deliveries deliveries(receivers);
   const std::string url = "nats://127.0.0.1:" + std::to_string(broker.port());
   natsOptions* options = nullptr;
   natsOptions_Create(&options);

@@ -75,6 +75,25 @@ nlohmann::json cows() { return {{{"name", "cows"}, {"kind", "scene"}, {"style", 
 
 size_t count_events(ServerUnderTest& server, const std::string& event) { return log_events(server.process().output(), event).size(); }
 
+fs::path with_instance_folders(const fs::path& dir) {
+  fs::create_directories(dir / "one");
+  fs::create_directories(dir / "two");
+  return dir;
+}
+
+// A broker and two instances on it: "one" defines the session "cows", "two" none of its own (it
+// adopts "cows" from the broker, mesh included).
+struct TwoInstances {
+  explicit TwoInstances(const fs::path& dir)
+      : broker(with_instance_folders(dir)),
+        one(dir / "one", instance_config("one", broker, cows())),
+        two(dir / "two", instance_config("two", broker, nlohmann::json::array())) {
+    EXPECT_TRUE(eventually([&] { return count_events(two, "session-added") == 1; })) << two.process().output();
+  }
+  BrokerUnderTest broker;
+  ServerUnderTest one, two;
+};
+
 }  // namespace
 
 class BrokerE2ETest : public ::testing::Test {
@@ -87,13 +106,8 @@ class BrokerE2ETest : public ::testing::Test {
 
 TEST_F(BrokerE2ETest, AChangeOnOneInstanceReachesTheOtherWithinTwoFramesAndALateJoinerThereGetsIt) {
   const fs::path dir = output_dir("broker-two-instances");
-  fs::create_directories(dir / "one");
-  fs::create_directories(dir / "two");
-  BrokerUnderTest broker(dir);
-  ServerUnderTest one(dir / "one", instance_config("one", broker, cows()));
-  ServerUnderTest two(dir / "two", instance_config("two", broker, nlohmann::json::array()));
-  // Two has no session of its own: it adopts "cows" from the broker, mesh included.
-  ASSERT_TRUE(eventually([&] { return count_events(two, "session-added") == 1; })) << two.process().output();
+  TwoInstances instances(dir);
+  ServerUnderTest &one = instances.one, &two = instances.two;
 
   // A member on instance two downloads the mesh that was added on instance one.
   {
@@ -133,13 +147,9 @@ TEST_F(BrokerE2ETest, AChangeOnOneInstanceReachesTheOtherWithinTwoFramesAndALate
 }
 
 TEST_F(BrokerE2ETest, ABrokerKilledAndRestartedLosesNothingAndChangesFlowAgain) {
-  const fs::path dir = output_dir("broker-restart");
-  fs::create_directories(dir / "one");
-  fs::create_directories(dir / "two");
-  BrokerUnderTest broker(dir);
-  ServerUnderTest one(dir / "one", instance_config("one", broker, cows()));
-  ServerUnderTest two(dir / "two", instance_config("two", broker, nlohmann::json::array()));
-  ASSERT_TRUE(eventually([&] { return count_events(two, "session-added") == 1; })) << two.process().output();
+  TwoInstances instances(output_dir("broker-restart"));
+  BrokerUnderTest& broker = instances.broker;
+  ServerUnderTest &one = instances.one, &two = instances.two;
 
   SessionClient a(one.address(), "a"), b(two.address(), "b");
   a.join("cows", "");
@@ -188,9 +198,7 @@ TEST_F(BrokerE2ETest, ABrokerKilledAndRestartedLosesNothingAndChangesFlowAgain) 
 }
 
 TEST_F(BrokerE2ETest, ABrokerWithAPasswordServesInstancesThatKnowItAndRefusesOthersWithTheReason) {
-  const fs::path dir = output_dir("broker-password");
-  fs::create_directories(dir / "one");
-  fs::create_directories(dir / "two");
+  const fs::path dir = with_instance_folders(output_dir("broker-password"));
   BrokerUnderTest broker(dir, "hunter2");
   nlohmann::json right = instance_config("one", broker, cows()), wrong = instance_config("two", broker, nlohmann::json::array());
   right["broker"] = broker.url("hunter2");
