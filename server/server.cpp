@@ -219,7 +219,7 @@ std::shared_ptr<Session> Server::find_session(const std::string& name) const {
 
 void Server::forget(const Connection* connection) {
   const std::string address = connection->address();  // erasing may end the connection
-  if (connections_.erase(connection) && --connections_per_address_[address] == 0) connections_per_address_.erase(address);
+  if (connections_.erase(connection)) give_place(address);
 }
 
 void Server::adopt(std::unique_ptr<Transport> transport) {
@@ -228,19 +228,28 @@ void Server::adopt(std::unique_ptr<Transport> transport) {
     return;
   }
   auto connection = std::make_shared<Connection>(std::move(transport), *this, next_id_++);
-  size_t& from_address = connections_per_address_[connection->address()];
+  const std::string refusal = take_place(connection->address());
   connections_[connection.get()] = connection;
-  ++from_address;
   connection->start();
   // Past a cap the newcomer is told why and let go; everyone already connected carries on.
-  const bool full = connections_.size() > config_.max_connections;
-  const bool crowded = limited(connection->address()) && from_address > config_.max_connections_per_address;
-  if (full || crowded) ++counters_.connections_refused;
-  if (full)
-    connection->close_with(protocol::ErrorCode::Refused, "the server is full (" + std::to_string(config_.max_connections) + " connections)");
-  else if (crowded)
-    connection->close_with(protocol::ErrorCode::Refused, "too many connections from " + connection->address() + " (" +
-                                                              std::to_string(config_.max_connections_per_address) + ")");
+  if (!refusal.empty()) connection->close_with(protocol::ErrorCode::Refused, refusal);
+}
+
+std::string Server::take_place(const std::string& address) {
+  ++places_;
+  const size_t from_address = ++places_per_address_[address];
+  std::string refusal;
+  if (places_ > config_.max_connections)
+    refusal = "the server is full (" + std::to_string(config_.max_connections) + " connections)";
+  else if (limited(address) && from_address > config_.max_connections_per_address)
+    refusal = "too many connections from " + address + " (" + std::to_string(config_.max_connections_per_address) + ")";
+  if (!refusal.empty()) ++counters_.connections_refused;
+  return refusal;
+}
+
+void Server::give_place(const std::string& address) {
+  --places_;
+  if (--places_per_address_[address] == 0) places_per_address_.erase(address);
 }
 
 bool Server::limited(const std::string& address) const {

@@ -54,6 +54,12 @@ class Server {
   // A client arrived over another transport (a WebSocket upgraded on the HTTP listener).
   // Refused, with the reason, past the connection caps (overall and per address).
   void adopt(std::unique_ptr<Transport> transport);
+  // Every client holds a place while it is served: a connection, or an HTTP request being
+  // read. Past a cap (max_connections, or max_connections_per_address) the place is still taken,
+  // and the reason to refuse the newcomer returned; empty when it may be served. Each place
+  // taken is given back once.
+  std::string take_place(const std::string& address);
+  void give_place(const std::string& address);
 
   // Wrong tokens from one address slow that address's joins down (SPEC D3): none for the first
   // few, then doubling up to a cap; a right token clears the count.
@@ -93,7 +99,8 @@ class Server {
   asio::steady_timer persist_timer_;
   std::map<std::string, std::shared_ptr<Session>> sessions_;
   std::map<const Connection*, std::shared_ptr<Connection>> connections_;
-  std::map<std::string, size_t> connections_per_address_;
+  size_t places_ = 0;
+  std::map<std::string, size_t> places_per_address_;
   struct JoinFailures {
     int count = 0;
     std::chrono::steady_clock::time_point last;

@@ -95,14 +95,47 @@ void HttpServer::stop() {
   acceptor_.close(ec);
 }
 
+namespace {
+
+// An HTTP request's place among the server's clients (Server::take_place) while it is read and
+// answered; a WebSocket gives it up to become a connection, which takes its own.
+class Place {
+ public:
+  Place(Server& server, std::string address) : server_(server), address_(std::move(address)), refusal_(server.take_place(address_)) {}
+  ~Place() { release(); }
+  Place(const Place&) = delete;
+  Place& operator=(const Place&) = delete;
+  const std::string& refusal() const { return refusal_; }
+  void release() {
+    if (std::exchange(held_, false)) server_.give_place(address_);
+  }
+
+ private:
+  Server& server_;
+  std::string address_, refusal_;
+  bool held_ = true;
+};
+
+}  // namespace
+
 asio::awaitable<void> HttpServer::serve(ByteStream accepted) {
   const std::string peer = peer_of(accepted.socket());
+  std::error_code address_error;
+  Place place(server_, accepted.socket().remote_endpoint(address_error).address().to_string());
+  auto socket_ptr = std::make_shared<ByteStream>(std::move(accepted));
+  auto& socket = *socket_ptr;
+  auto reply = [&](const std::string& text) -> asio::awaitable<void> {
+    co_await asio::async_write(socket, asio::buffer(text), no_throw);
+    socket.close();
+  };
+  if (!place.refusal().empty()) {
+    co_await reply(response(503, "Service Unavailable", "text/plain", place.refusal() + "\n"));
+    co_return;
+  }
   // The whole head within the timeout, or the connection is cut: a slow-loris client holds
   // one socket for a few seconds at most. Shared with the watchdog, which may run after this
   // coroutine has ended.
-  auto socket_ptr = std::make_shared<ByteStream>(std::move(accepted));
   auto head_done = std::make_shared<bool>(false);
-  auto& socket = *socket_ptr;
   auto watchdog = std::make_shared<asio::steady_timer>(io_, std::chrono::milliseconds(int64_t(server_.config().http_head_timeout_seconds * 1000)));
   watchdog->async_wait([socket_ptr, head_done, peer](std::error_code ec) {
     if (ec || *head_done) return;
@@ -113,10 +146,6 @@ asio::awaitable<void> HttpServer::serve(ByteStream accepted) {
   auto [ec, n] = co_await asio::async_read_until(socket, asio::dynamic_buffer(buffer, kMaxHead), "\r\n\r\n", no_throw);
   *head_done = true;
   watchdog->cancel();
-  auto reply = [&](const std::string& text) -> asio::awaitable<void> {
-    co_await asio::async_write(socket, asio::buffer(text), no_throw);
-    socket.close();
-  };
   if (ec) {
     if (ec == asio::error::not_found) co_await reply(response(431, "Request Header Fields Too Large", "text/plain", "request head over 8 KiB\n"));
     co_return;
@@ -155,6 +184,7 @@ asio::awaitable<void> HttpServer::serve(ByteStream accepted) {
                                 websocket_accept(key) + "\r\n\r\n";
     auto [wec, wn] = co_await asio::async_write(socket, asio::buffer(upgrade), no_throw);
     if (wec) co_return;
+    place.release();
     server_.adopt(std::make_unique<WebSocketTransport>(std::move(socket), buffer.substr(n)));
     co_return;
   }

@@ -121,6 +121,28 @@ TEST_F(HardeningE2ETest, ConnectionsPastTheCapPerAddressAreRefusedWithTheReason)
   }));
 }
 
+TEST_F(HardeningE2ETest, HttpRequestsCountAgainstTheCapSoHeldHeadsCannotExhaustTheServer) {
+  const fs::path dir = output_dir("http-cap");
+  ServerUnderTest server(dir, config({{"max_connections_per_address", 3}, {"http", "127.0.0.1:0"}, {"http_head_timeout_seconds", 1.0}}));
+  const int port = http_port(server);
+  // Three connections that never finish their request head hold the address's places...
+  asio::io_context io;
+  std::vector<asio::ip::tcp::socket> held;
+  for (int i = 0; i < 3; ++i) {
+    held.emplace_back(io);
+    held.back().connect({asio::ip::make_address("127.0.0.1"), uint16_t(port)});
+    asio::write(held.back(), asio::buffer(std::string("GET / HTTP/1.1\r\n")));
+  }
+  // (wait until the server has accepted all three)
+  ASSERT_TRUE(eventually([&] { return http_get(port, "GET /healthz HTTP/1.1\r\nHost: x\r\n\r\n").find("503") != std::string::npos; }));
+  // ... so a fourth request from it is refused at once, saying why,
+  const std::string refused = http_get(port, "GET /healthz HTTP/1.1\r\nHost: x\r\n\r\n");
+  EXPECT_NE(refused.find("503"), std::string::npos) << refused;
+  EXPECT_NE(refused.find("too many connections"), std::string::npos) << refused;
+  // ... until the head timeout cuts the three off and gives their places back.
+  EXPECT_TRUE(eventually([&] { return http_get(port, "GET /healthz HTTP/1.1\r\nHost: x\r\n\r\n").find("200 OK") != std::string::npos; }, std::chrono::seconds(5)));
+}
+
 TEST_F(HardeningE2ETest, AnAssetCorruptedOnDiskIsRefusedNotServed) {
   const fs::path dir = output_dir("corrupted-asset");
   ServerUnderTest server(dir, config());
