@@ -3,6 +3,7 @@
 # each for SECONDS (default 600), two at a time, then prints a table of executions, coverage and
 # crashes (the one in docs/fuzzing.md came from this script).
 #   scripts/fuzz.sh [SECONDS] [TARGET ...]     corpora in fuzz-corpus/, crashes in fuzz-out/
+#   FUZZ_TABLE_ONLY=1 scripts/fuzz.sh ...       the table of the last run's logs again
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 cd "$here"
@@ -11,6 +12,7 @@ shift || true
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(fuzz_frames fuzz_message fuzz_tween fuzz_landmarks fuzz_http fuzz_websocket fuzz_config)
 
+if [ "${FUZZ_TABLE_ONLY:-0}" != 1 ]; then
 for p in clang libclang-rt-14-dev; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
 done
@@ -47,16 +49,17 @@ for t in "${targets[@]}"; do
   if [ $running -ge 2 ]; then wait -n; running=$((running - 1)); fi
 done
 wait
+fi
 
 echo "| target | seconds | executions | executions/s | coverage (edges) | features | corpus | crashes |"
 echo "|---|---|---|---|---|---|---|---|"
 for t in "${targets[@]}"; do
   log="fuzz-out/$t.log"
-  runs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | awk '{print $2}' | tail -1)
-  done_line=$(grep -E '^#[0-9]+ +DONE' "$log" | tail -1)
+  runs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | awk '{print $2}' | tail -1 || true)
+  done_line=$(grep -E '^#[0-9]+[[:space:]]+DONE' "$log" | tail -1)
   cov=$(sed -n 's/.*cov: \([0-9]*\).*/\1/p' <<< "$done_line")
   ft=$(sed -n 's/.* ft: \([0-9]*\).*/\1/p' <<< "$done_line")
   corp=$(sed -n 's/.* corp: \([0-9]*\)\/.*/\1/p' <<< "$done_line")
-  crashes=$(ls fuzz-out/"$t"-crash-* fuzz-out/"$t"-leak-* fuzz-out/"$t"-oom-* fuzz-out/"$t"-timeout-* 2>/dev/null | wc -l)
+  crashes=$(find fuzz-out -name "$t-crash-*" -o -name "$t-leak-*" -o -name "$t-oom-*" -o -name "$t-timeout-*" | wc -l)
   echo "| $t | $seconds | ${runs:-?} | $(( ${runs:-0} / seconds )) | ${cov:-?} | ${ft:-?} | ${corp:-?} | $crashes |"
 done
