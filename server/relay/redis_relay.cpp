@@ -1,6 +1,7 @@
 #include "server/relay/redis_relay.hpp"
 
 #include <hiredis/hiredis.h>
+#include <openssl/sha.h>
 
 #include <algorithm>
 #include <charconv>
@@ -39,6 +40,16 @@ return revision)lua";
 constexpr std::string_view kSeedAndRead = R"lua(
 if redis.call('EXISTS', KEYS[1]) == 0 then redis.call('HSET', KEYS[1], unpack(ARGV)) end
 return redis.call('HGETALL', KEYS[1]))lua";
+
+// What EVALSHA names a script by: the SHA-1 of its text, in hex.
+std::string script_digest(std::string_view script) {
+  unsigned char digest[SHA_DIGEST_LENGTH];
+  SHA1(reinterpret_cast<const unsigned char*>(script.data()), script.size(), digest);
+  static const char* hex = "0123456789abcdef";
+  std::string out;
+  for (const unsigned char b : digest) out += hex[b >> 4], out += hex[b & 15];
+  return out;
+}
 
 std::string field_of(const Message& change) {
   switch (type_of(change)) {
@@ -137,7 +148,8 @@ BrokerAddress parse_broker(const std::string& url) {
 }
 
 RedisRelay::RedisRelay(Server& server, BrokerAddress address)
-    : server_(server), address_(std::move(address)), io_(server.io()), commands_(io_), events_(io_), retry_timer_(io_) {
+    : server_(server), address_(std::move(address)), io_(server.io()), commands_(io_), events_(io_), retry_timer_(io_),
+      publish_digest_(script_digest(kPublish)) {
   status_.broker = true;
   status_.connected = false;
 }
@@ -222,6 +234,7 @@ void RedisRelay::on_subscription(const redisReply* r) {
 
 void RedisRelay::ready() {
   ready_ = true;
+  commands_.command({"SCRIPT", "LOAD", kPublish}, [](const redisReply*) {});  // before any EVALSHA: one connection keeps order
   backoff_ = 100ms;
   if (std::exchange(ever_ready_, true)) ++status_.reconnects;
   log_info("broker-connected", {{"instance", server_.config().name}, {"unsent", unsent_.size()}});
@@ -248,12 +261,17 @@ void RedisRelay::keep_unsent(const std::string& session, const std::string& fiel
   unsent_[{session, field}] = {frame, sender};
 }
 
-void RedisRelay::send_change(const std::string& session, const std::string& field, const Bytes& frame, uint64_t sender) {
+void RedisRelay::send_change(const std::string& session, const std::string& field, const Bytes& frame, uint64_t sender, bool by_digest) {
   const std::string key = state_key(session);
   const std::string header = std::to_string(now_us()) + " " + std::to_string(sender) + " " + counted(server_.config().name) + counted(session);
   const std::string_view bytes(reinterpret_cast<const char*>(frame.data()), frame.size());
-  const bool sent = commands_.command({"EVAL", kPublish, "1", key, field, bytes, kEvents, header}, [this, session, field, frame, sender](const redisReply* r) {
+  // By the script's digest (loaded on connecting): Redis then neither receives nor hashes the
+  // script's text for every change.
+  const std::vector<std::string_view> call{by_digest ? "EVALSHA" : "EVAL", by_digest ? std::string_view(publish_digest_) : kPublish, "1", key, field,
+                                           bytes, kEvents, header};
+  const bool sent = commands_.command(call, [this, session, field, frame, sender](const redisReply* r) {
     if (!is_error(r)) return;
+    if (r && text_of(r).starts_with("NOSCRIPT")) return send_change(session, field, frame, sender, false);  // its script cache was flushed
     // Not known to be published: applied here at once, and sent again once the broker is back.
     log_warn("broker-publish-failed", {{"session", session}, {"field", field}, {"reason", reason_of(r)}});
     if (const auto s = server_.find_session(session)) {

@@ -67,7 +67,7 @@ class RedisRelay final : public Relay {
   void lost(const std::string& reason);
   void on_subscription(const redisReply* reply);
   void ready();
-  void send_change(const std::string& session, const std::string& field, const protocol::Bytes& frame, uint64_t sender);
+  void send_change(const std::string& session, const std::string& field, const protocol::Bytes& frame, uint64_t sender, bool by_digest = true);
   void keep_unsent(const std::string& session, const std::string& field, const protocol::Bytes& frame, uint64_t sender);
   void on_event(std::string_view payload);
   void apply_in_order(Session& session, SessionSync& sync, Event event);
@@ -89,6 +89,7 @@ class RedisRelay final : public Relay {
   std::map<std::pair<std::string, std::string>, Unsent> unsent_;  // (session, field): latest wins
   std::set<std::string> adopting_;                                 // remote sessions whose assets are on their way
   RelayStatus status_;
+  std::string publish_digest_;  // SHA-1 of the publish script, for EVALSHA
 };
 
 }  // namespace inkwire::server

@@ -51,6 +51,13 @@ class BrokerUnderTest {
     process_->kill(SIGKILL);
     process_->wait();
   }
+  // A command of redis-cli's on this broker (e.g. SCRIPT FLUSH); its exit code.
+  int cli(const std::vector<std::string>& command) const {
+    std::vector<std::string> args{"-p", std::to_string(port_)};
+    args.insert(args.end(), command.begin(), command.end());
+    Process p("/usr/bin/redis-cli", args, dir_ / "redis-cli.log");
+    return p.wait();
+  }
   std::string url(const std::string& password = "") const {
     return "redis://" + (password.empty() ? "" : ":" + password + "@") + "127.0.0.1:" + std::to_string(port_);
   }
@@ -156,6 +163,10 @@ TEST_F(BrokerE2ETest, ABrokerKilledAndRestartedLosesNothingAndChangesFlowAgain) 
   b.join("cows", "");
   a.send(orbit_pose(40, 10, 1.4f, 1));
   ASSERT_TRUE(eventually([&] { return b.state().camera.sequence == 1; })) << "no change crossed before the broker went away";
+  // Changes are published by the script's digest; a broker that forgot its scripts is given the text.
+  ASSERT_EQ(broker.cli({"SCRIPT", "FLUSH"}), 0);
+  a.send(orbit_pose(40, 10, 1.4f, 2));
+  ASSERT_TRUE(eventually([&] { return b.state().camera.sequence == 2; })) << "a change was lost when the broker forgot its scripts";
 
   EXPECT_NE(metrics_of(one).find("inkwire_broker_up 1"), std::string::npos) << metrics_of(one);
   broker.kill();
@@ -173,7 +184,7 @@ TEST_F(BrokerE2ETest, ABrokerKilledAndRestartedLosesNothingAndChangesFlowAgain) 
   EXPECT_TRUE(eventually([&] { return a2.state().style.renderer == "hatching"; })) << "instance one stopped serving its own members";
   // ... and so are newcomers on instance two, from what two has.
   SessionClient b2(two.address(), "b2");
-  EXPECT_EQ(b2.join("cows", "").camera.sequence, 1u);
+  EXPECT_EQ(b2.join("cows", "").camera.sequence, 2u);
 
   broker.start();  // empty: the instances must put sessions, assets and state back
   ASSERT_TRUE(eventually([&] { return count_events(one, "broker-connected") >= 2 && count_events(two, "broker-connected") >= 2; }, std::chrono::seconds(30)))
@@ -183,8 +194,8 @@ TEST_F(BrokerE2ETest, ABrokerKilledAndRestartedLosesNothingAndChangesFlowAgain) 
   EXPECT_NE(metrics.find("inkwire_broker_up 1"), std::string::npos) << metrics;
   EXPECT_NE(metrics.find("inkwire_broker_reconnects_total 1"), std::string::npos) << metrics;
   EXPECT_NE(metrics.find("inkwire_broker_unsent 0"), std::string::npos) << metrics;
-  a.send(orbit_pose(200, 25, 1.2f, 2));
-  EXPECT_TRUE(eventually([&] { return b.state().camera.sequence == 2 && b2.state().camera.sequence == 2; })) << "changes do not flow after the broker came back";
+  a.send(orbit_pose(200, 25, 1.2f, 3));
+  EXPECT_TRUE(eventually([&] { return b.state().camera.sequence == 3 && b2.state().camera.sequence == 3; })) << "changes do not flow after the broker came back";
   // Every member agrees on the whole state, and the count of changes: none was lost or counted twice.
   EXPECT_EQ(b.state().style, a.state().style);
   EXPECT_EQ(b.state().camera, a.state().camera);
@@ -192,7 +203,7 @@ TEST_F(BrokerE2ETest, ABrokerKilledAndRestartedLosesNothingAndChangesFlowAgain) 
     SessionClient late(address, "late");
     const protocol::Snapshot joined = late.join("cows", "");
     EXPECT_EQ(joined.style.renderer, "hatching");
-    EXPECT_EQ(joined.camera.sequence, 2u);
+    EXPECT_EQ(joined.camera.sequence, 3u);
     EXPECT_EQ(joined.revision, a.state().revision) << "a late joiner on " << address;
   }
 }
