@@ -10,7 +10,7 @@ cd "$here"
 seconds=${1:-600}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_frames fuzz_message fuzz_tween fuzz_landmarks fuzz_http fuzz_websocket fuzz_config)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_frames fuzz_message fuzz_tween fuzz_landmarks fuzz_http fuzz_websocket fuzz_config fuzz_broker)
 
 if [ "${FUZZ_TABLE_ONLY:-0}" != 1 ]; then
 for p in clang libclang-rt-14-dev; do
@@ -34,6 +34,17 @@ for t in "${targets[@]}"; do mkdir -p "fuzz-corpus/$t"; done
 if [ -d fuzz-corpus/fuzz_config ]; then
   cp deploy/example/instance-a.json deploy/example/instance-b.json fuzz-corpus/fuzz_config/
   printf '{"tls": {"certificate": "c.pem", "key": "k.pem"}, "max_connections": 10, "sessions": [{"name": "t", "kind": "turntable", "product": {"photos": "p", "step": 15}}, {"name": "c", "kind": "conference", "face": {"source": "camera:0"}}]}' > fuzz-corpus/fuzz_config/keys.json
+fi
+
+# Changes and a session definition as the broker holds them, around the golden protocol frames.
+if [ -d fuzz-corpus/fuzz_broker ]; then
+  /usr/bin/python3 - <<'PY'
+import json
+frames = {f["type"]: bytes.fromhex(f["hex"]) for f in json.load(open("tests/golden/protocol-frames.json"))["frames"]}
+for t in ("style-change", "camera-pose", "object-pose", "expression-code"):
+    open(f"fuzz-corpus/fuzz_broker/event-{t}", "wb").write(b"\x01" + b"17 1764000000000000 3 1:a4:cows" + frames[t])
+open("fuzz-corpus/fuzz_broker/definition", "wb").write(b"\x00" + b"71:sha256:" + b"0" * 64 + frames["snapshot"])
+PY
 fi
 
 run() {

@@ -10,6 +10,7 @@
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "protocol/framing.hpp"
+#include "server/relay/broker_formats.hpp"
 #include "server/server.hpp"
 
 namespace inkwire::server {
@@ -51,16 +52,6 @@ std::string script_digest(std::string_view script) {
   return out;
 }
 
-std::string field_of(const Message& change) {
-  switch (type_of(change)) {
-    case MessageType::StyleChange: return "style";
-    case MessageType::CameraPose: return "camera";
-    case MessageType::ObjectPose: return "object";
-    case MessageType::ExpressionCode: return "expression";
-    default: throw Error(std::string("a ") + name_of(type_of(change)) + " is not session state");
-  }
-}
-
 // Whether applying `change` would change the snapshot's state.
 bool differs(const Snapshot& s, const Message& change) {
   if (const auto* m = std::get_if<StyleChange>(&change)) return !(*m == s.style);
@@ -76,44 +67,6 @@ std::string reason_of(const redisReply* r) { return r ? std::string(text_of(r)) 
 
 int64_t now_us() {
   return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
-}
-
-// "<length>:<bytes>", so names may hold any character.
-std::string counted(const std::string& s) { return std::to_string(s.size()) + ":" + s; }
-
-// Reads what counted() and the publish script wrote; false if the text is not of that form.
-struct Reader {
-  std::string_view rest;
-  bool number(uint64_t& out, char end) {
-    const auto [p, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), out);
-    if (ec != std::errc() || p == rest.data() + rest.size() || *p != end) return false;
-    rest.remove_prefix(size_t(p - rest.data()) + 1);
-    return true;
-  }
-  bool counted(std::string& out) {
-    uint64_t n = 0;
-    if (!number(n, ':') || n > rest.size() || n > 4096) return false;
-    out = std::string(rest.substr(0, n));
-    rest.remove_prefix(n);
-    return true;
-  }
-};
-
-// A session's definition as instances share it: its token and its state as a snapshot frame.
-std::string definition_of(const StoredSession& stored) {
-  const Bytes frame = encode(stored.state);
-  return counted(stored.token) + std::string(frame.begin(), frame.end());
-}
-
-std::optional<StoredSession> session_from_definition(std::string_view text) {
-  Reader r{text};
-  StoredSession stored;
-  if (!r.counted(stored.token)) return std::nullopt;
-  Message message = decode_frame(reinterpret_cast<const uint8_t*>(r.rest.data()), r.rest.size());
-  auto* snapshot = std::get_if<Snapshot>(&message);
-  if (!snapshot) return std::nullopt;
-  stored.state = std::move(*snapshot);
-  return stored;
 }
 
 }  // namespace
@@ -247,7 +200,7 @@ void RedisRelay::ready() {
 }
 
 void RedisRelay::publish(Session& session, const Message& change, uint64_t sender) {
-  const std::string field = field_of(change);
+  const std::string field = state_field(change);
   const Bytes frame = encode(change);
   if (!ready_) {
     server_.deliver(session, change, sender);
@@ -263,7 +216,7 @@ void RedisRelay::keep_unsent(const std::string& session, const std::string& fiel
 
 void RedisRelay::send_change(const std::string& session, const std::string& field, const Bytes& frame, uint64_t sender, bool by_digest) {
   const std::string key = state_key(session);
-  const std::string header = std::to_string(now_us()) + " " + std::to_string(sender) + " " + counted(server_.config().name) + counted(session);
+  const std::string header = event_header(now_us(), sender, server_.config().name, session);
   const std::string_view bytes(reinterpret_cast<const char*>(frame.data()), frame.size());
   // By the script's digest (loaded on connecting): Redis then neither receives nor hashes the
   // script's text for every change.
@@ -285,21 +238,12 @@ void RedisRelay::send_change(const std::string& session, const std::string& fiel
 
 void RedisRelay::on_event(std::string_view payload) {
   Event e;
-  Reader r{payload};
-  uint64_t revision = 0, published = 0;
-  if (!r.number(revision, ' ') || !r.number(published, ' ') || !r.number(e.sender, ' ') || !r.counted(e.origin) || !r.counted(e.session)) {
-    log_warn("broker-event-malformed", {{"bytes", payload.size()}});
-    return;
-  }
   try {
-    e.change = decode_frame(reinterpret_cast<const uint8_t*>(r.rest.data()), r.rest.size());
-    field_of(e.change);  // only state changes travel here
+    e = parse_event(payload);
   } catch (const std::exception& ex) {
-    log_warn("broker-event-malformed", {{"session", e.session}, {"reason", ex.what()}});
+    log_warn("broker-event-malformed", {{"bytes", payload.size()}, {"reason", ex.what()}});
     return;
   }
-  e.revision = uint32_t(revision);
-  e.published_us = int64_t(published);
   ++status_.received;
   if (e.origin == server_.config().name) status_.lag_seconds = double(now_us() - e.published_us) / 1e6;
   const auto session = server_.find_session(e.session);
@@ -329,7 +273,7 @@ void RedisRelay::resync(const std::string& name) {
   std::vector<std::string> own{"revision", std::to_string(s.revision)};
   for (const Message& m : {Message(s.style), Message(s.camera), Message(s.object), Message(s.expression)}) {
     const Bytes frame = encode(m);
-    own.push_back(field_of(m));
+    own.push_back(state_field(m));
     own.emplace_back(frame.begin(), frame.end());
   }
   std::vector<std::string_view> args{"EVAL", kSeedAndRead, "1"};
@@ -348,7 +292,7 @@ void RedisRelay::resync(const std::string& name) {
     for (size_t i = 0; i + 1 < r->elements; i += 2) {
       const std::string_view field = text_of(r->element[i]), value = text_of(r->element[i + 1]);
       if (field == "revision") {
-        Reader{std::string(value) + " "}.number(revision, ' ');
+        std::from_chars(value.data(), value.data() + value.size(), revision);
         continue;
       }
       // A change made here while away: already applied here, and sent below unless the broker has it.
@@ -358,7 +302,7 @@ void RedisRelay::resync(const std::string& name) {
       }
       try {
         const Message change = decode_frame(reinterpret_cast<const uint8_t*>(value.data()), value.size());
-        if (field_of(change) != field) continue;
+        if (state_field(change) != field) continue;
         if (differs(session->state(), change)) server_.deliver(*session, change, 0);  // members hear only what changed
       } catch (const std::exception& e) {
         log_warn("broker-state-malformed", {{"session", name}, {"field", field}, {"reason", e.what()}});
@@ -378,7 +322,7 @@ void RedisRelay::resync(const std::string& name) {
 
 void RedisRelay::share(const Session& session) {
   const std::string name = session.name();
-  commands_.command({"HSETNX", kSessions, name, definition_of(session.stored())}, [this, name](const redisReply* r) {
+  commands_.command({"HSETNX", kSessions, name, session_definition(session.stored())}, [this, name](const redisReply* r) {
     if (is_error(r)) return;
     if (r->type == REDIS_REPLY_INTEGER && r->integer == 1) {
       log_info("broker-session-shared", {{"session", name}});
@@ -420,13 +364,13 @@ void RedisRelay::discover() {
 void RedisRelay::adopt_remote(const std::string& name, std::string_view definition) {
   std::optional<StoredSession> stored;
   try {
-    stored = session_from_definition(definition);
+    stored = parse_session_definition(definition);
   } catch (const std::exception& e) {
     log_warn("broker-session-malformed", {{"session", name}, {"reason", e.what()}});
     return;
   }
-  if (!stored || stored->state.session != name) {
-    log_warn("broker-session-malformed", {{"session", name}});
+  if (stored->state.session != name) {
+    log_warn("broker-session-malformed", {{"session", name}, {"reason", "it defines '" + stored->state.session + "'"}});
     return;
   }
   adopting_.insert(name);

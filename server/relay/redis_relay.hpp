@@ -20,6 +20,7 @@
 
 #include <asio.hpp>
 
+#include "server/relay/broker_formats.hpp"
 #include "server/relay/redis_connection.hpp"
 #include "server/relay/relay.hpp"
 
@@ -46,13 +47,7 @@ class RedisRelay final : public Relay {
   RelayStatus status() const override;
 
  private:
-  struct Event {
-    uint32_t revision = 0;
-    int64_t published_us = 0;
-    uint64_t sender = 0;
-    std::string origin, session;
-    protocol::Message change;
-  };
+  using Event = BrokerEvent;
   struct SessionSync {
     uint32_t revision = 0;  // the broker's revision applied here
     bool syncing = false;   // a resync is under way: events wait for it

@@ -1,0 +1,81 @@
+#include "server/relay/broker_formats.hpp"
+
+#include <charconv>
+
+#include "protocol/framing.hpp"
+
+namespace inkwire::server {
+namespace {
+
+using protocol::ProtocolError;
+
+std::string counted(const std::string& s) { return std::to_string(s.size()) + ":" + s; }
+
+// Reads numbers and counted names off the front of a text.
+struct Reader {
+  std::string_view rest;
+  uint64_t number(char end, const char* what) {
+    uint64_t out = 0;
+    const auto [p, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), out);
+    if (ec != std::errc() || p == rest.data() + rest.size() || *p != end) throw ProtocolError(std::string("broker text: no ") + what);
+    rest.remove_prefix(size_t(p - rest.data()) + 1);
+    return out;
+  }
+  std::string name(const char* what) {
+    const uint64_t n = number(':', what);
+    if (n > rest.size() || n > protocol::kMaxName * 4) throw ProtocolError(std::string("broker text: ") + what + " longer than what is left");
+    std::string out(rest.substr(0, n));
+    rest.remove_prefix(n);
+    return out;
+  }
+  protocol::Message frame() { return protocol::decode_frame(reinterpret_cast<const uint8_t*>(rest.data()), rest.size()); }
+};
+
+}  // namespace
+
+std::string state_field(const protocol::Message& change) {
+  switch (protocol::type_of(change)) {
+    case protocol::MessageType::StyleChange: return "style";
+    case protocol::MessageType::CameraPose: return "camera";
+    case protocol::MessageType::ObjectPose: return "object";
+    case protocol::MessageType::ExpressionCode: return "expression";
+    default: throw ProtocolError(std::string("a ") + protocol::name_of(protocol::type_of(change)) + " is not session state");
+  }
+}
+
+std::string event_header(int64_t published_us, uint64_t sender, const std::string& origin, const std::string& session) {
+  return std::to_string(published_us) + " " + std::to_string(sender) + " " + counted(origin) + counted(session);
+}
+
+BrokerEvent parse_event(std::string_view payload) {
+  Reader r{payload};
+  BrokerEvent e;
+  const uint64_t revision = r.number(' ', "revision");
+  if (revision > UINT32_MAX) throw ProtocolError("broker text: revision out of range");
+  e.revision = uint32_t(revision);
+  e.published_us = int64_t(r.number(' ', "time") & INT64_MAX);
+  e.sender = r.number(' ', "sender");
+  e.origin = r.name("origin");
+  e.session = r.name("session");
+  e.change = r.frame();
+  state_field(e.change);  // only state changes travel this way
+  return e;
+}
+
+std::string session_definition(const StoredSession& stored) {
+  const protocol::Bytes frame = protocol::encode(stored.state);
+  return counted(stored.token) + std::string(frame.begin(), frame.end());
+}
+
+StoredSession parse_session_definition(std::string_view text) {
+  Reader r{text};
+  StoredSession stored;
+  stored.token = r.name("token");
+  protocol::Message message = r.frame();
+  auto* snapshot = std::get_if<protocol::Snapshot>(&message);
+  if (!snapshot) throw ProtocolError("broker text: a session's definition holds no snapshot");
+  stored.state = std::move(*snapshot);
+  return stored;
+}
+
+}  // namespace inkwire::server
