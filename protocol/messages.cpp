@@ -182,7 +182,8 @@ void serialise(Stream& s, Product& m) {
       for (int k = 0; k < 3; ++k) q[size_t(k)] = uint16_t(int16_t(std::lround(std::clamp(d[k], -1.0f, 1.0f) * 32767.0f)));
     for (uint16_t& v : q) s.u16(v);
     if constexpr (Stream::reading) {
-      for (int k = 0; k < 3; ++k) d[k] = float(int16_t(q[size_t(k)])) / 32767.0f;
+      // Clamped as the tween data's directions are: -32768 reads as -1, so what was read writes back the same.
+      for (int k = 0; k < 3; ++k) d[k] = std::max(-1.0f, float(int16_t(q[size_t(k)])) / 32767.0f);
       check(std::abs(glm::length(d) - 1.0f) < 0.01f, "product sample direction is not a unit vector");
     }
   }

@@ -243,3 +243,23 @@ TEST(ProtocolTest, GoldenFramesForTheWebClientAreTheseBytes) {
   ASSERT_TRUE(in) << file << " is missing: approve it with INKWIRE_APPROVE_GOLDEN=1";
   EXPECT_EQ(nlohmann::json::parse(in), golden) << "the wire bytes changed: check client/web/protocol/ and approve " << file;
 }
+
+// Found by fuzz_broker (2026-11-25): a product direction component of -32768 was read as
+// -1.00003, which the writer (clamping to -1) cannot write back, so a snapshot read from the
+// wire re-encoded to a different one. It now reads as -1, as the tween data's directions do.
+TEST(ProtocolTest, AProductDirectionComponentOfMinus32768ReadsAsMinusOneAndWritesBackTheSame) {
+  Snapshot s;
+  s.session = "p";
+  s.kind = SessionKind::Turntable;
+  s.product = {.width = 8, .height = 8, .directions = {glm::vec3(0, 0, -1), glm::vec3(0, 1, 0)}, .cells = 1};
+  Bytes frame = encode(s);
+  // The first direction is stored as 0, 0, -32767 (0x8001, little-endian): make its z 0x8000.
+  const Bytes stored = {0, 0, 0, 0, 0x01, 0x80};
+  auto at = std::search(frame.begin(), frame.end(), stored.begin(), stored.end());
+  ASSERT_NE(at, frame.end());
+  at[4] = 0x00;
+  const auto read = std::get<Snapshot>(decode_frame(frame.data(), frame.size()));
+  EXPECT_EQ(read.product.directions[0].z, -1.0f);
+  const Bytes again = encode(read);
+  EXPECT_EQ(std::get<Snapshot>(decode_frame(again.data(), again.size())), read);
+}

@@ -170,7 +170,7 @@ function serialiseProduct(s, m) {
     // Unit vectors as 3 x i16 (component x 32767), as in the tween data's header.
     const d = (directions[i] ?? [0, 0, 0]).map((c) => {
       const q = s.u16((Math.round(Math.min(1, Math.max(-1, c)) * 32767) + 65536) % 65536);
-      return (q > 32767 ? q - 65536 : q) / 32767;
+      return Math.max(-1, (q > 32767 ? q - 65536 : q) / 32767);  // -32768 reads as -1, as in the C++ codec
     });
     if (s.constructor.reading) check(Math.abs(length(d) - 1) < 0.01, 'product sample direction is not a unit vector');
     m.directions.push(d);
