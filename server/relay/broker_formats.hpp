@@ -5,7 +5,6 @@
 // What comes back is read as untrusted input: every length is checked against what is left
 // (tests/fuzz/fuzz_broker.cpp).
 #include <cstdint>
-#include <optional>
 #include <string>
 #include <string_view>
 

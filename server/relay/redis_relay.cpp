@@ -362,22 +362,22 @@ void RedisRelay::discover() {
 // A session another instance shared: its assets are fetched, checked against their hashes and
 // stored, then the session is served here too.
 void RedisRelay::adopt_remote(const std::string& name, std::string_view definition) {
-  std::optional<StoredSession> stored;
+  StoredSession stored;
   try {
     stored = parse_session_definition(definition);
   } catch (const std::exception& e) {
     log_warn("broker-session-malformed", {{"session", name}, {"reason", e.what()}});
     return;
   }
-  if (stored->state.session != name) {
-    log_warn("broker-session-malformed", {{"session", name}, {"reason", "it defines '" + stored->state.session + "'"}});
+  if (stored.state.session != name) {
+    log_warn("broker-session-malformed", {{"session", name}, {"reason", "it defines '" + stored.state.session + "'"}});
     return;
   }
   adopting_.insert(name);
   auto missing = std::make_shared<std::vector<AssetAnnounce>>();
-  for (const AssetAnnounce& a : stored->state.assets)
+  for (const AssetAnnounce& a : stored.state.assets)
     if (!server_.store().find(a.hash)) missing->push_back(a);
-  auto session = std::make_shared<StoredSession>(std::move(*stored));
+  auto session = std::make_shared<StoredSession>(std::move(stored));
   auto left = std::make_shared<size_t>(missing->size());
   auto failed = std::make_shared<bool>(false);
   const auto finish = [this, name, session, failed] {

@@ -11,6 +11,7 @@
 #include "client/net/session_client.hpp"
 #include "common/byte_stream.hpp"
 #include "e2e_support.hpp"
+#include "../unit/test_data.hpp"
 
 using namespace inkwire;
 using namespace inkwire::e2e;
@@ -35,15 +36,6 @@ nlohmann::json tls_config(const fs::path& dir) {
           {"sessions", {{{"name", "room"}, {"kind", "scene"}, {"assets", nlohmann::json::array()}}}}};
 }
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "";
-}
-
 }  // namespace
 
 class TlsE2ETest : public ::testing::Test {
@@ -66,17 +58,17 @@ TEST_F(TlsE2ETest, AClientTrustingTheCertificateJoinsAndPlainTcpIsRefusedCleanly
   EXPECT_TRUE(eventually([&] { return b.state().style.renderer == "comic"; })) << "a change did not cross over TLS";
 
   // Plain TCP on the TLS port: no hang, no crash, a reason on both sides.
-  const std::string plain = error_of([&] { SessionClient p(server.address(), "plain"); });
+  const std::string plain = test::error_of([&] { SessionClient p(server.address(), "plain"); });
   EXPECT_FALSE(plain.empty()) << "a plain-TCP client was served on the TLS port";
   EXPECT_TRUE(eventually([&] { return !log_events(server.process().output(), "tls-handshake-failed").empty(); })) << server.process().output();
 
   // A client that trusts other certificates refuses this server.
   make_certificate(dir, "other", "127.0.0.1");
-  const std::string untrusted = error_of([&] { SessionClient u(server.address(), "untrusted", client_tls_context((dir / "other.pem").string())); });
+  const std::string untrusted = test::error_of([&] { SessionClient u(server.address(), "untrusted", client_tls_context((dir / "other.pem").string())); });
   EXPECT_NE(untrusted.find("TLS"), std::string::npos) << untrusted;
   std::printf("  refused: plain TCP: %s\n  untrusted: %s\n", plain.c_str(), untrusted.c_str());
   // ... and so does one that reached it under a name the certificate does not carry.
-  const std::string wrong_name = error_of([&] {
+  const std::string wrong_name = test::error_of([&] {
     SessionClient w("localhost:" + server.address().substr(server.address().rfind(':') + 1), "wrong-name", client_tls_context((dir / "server.pem").string()));
   });
   EXPECT_NE(wrong_name.find("TLS"), std::string::npos) << wrong_name;
