@@ -66,7 +66,7 @@ WarpMesh build_warp_mesh(const TweenCell& cell, int width, int height) {
   mesh.points = cell.points;
   for (const glm::vec2& b : border_points(width, height)) mesh.points.push_back({b, b, b});
   std::vector<glm::vec2> layout;
-  for (const ControlPoint& p : mesh.points) layout.push_back(cell.is_pair() ? p[1] : (p[0] + p[1] + p[2]) / 3.0f);
+  for (const ControlPoint& p : mesh.points) layout.push_back(cell.is_pair() ? (p[0] + p[2]) * 0.5f : (p[0] + p[1] + p[2]) / 3.0f);
   mesh.triangles = delaunay_triangles(layout);
   return mesh;
 }

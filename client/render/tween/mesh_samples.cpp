@@ -19,6 +19,7 @@ namespace {
 // A vertex counts as visible when it is no deeper than the nearest surface around its pixel
 // plus this fraction of the bounding-box diagonal (vertices on the silhouette see background).
 constexpr float kVisibilitySlack = 0.01f;
+constexpr int kOutlineReach = 24;  // pixels searched for the outline a vanished surface went through
 
 float eye_depth(const Camera& c, float window_depth) {
   const float z = 2.0f * window_depth - 1.0f;
@@ -86,6 +87,21 @@ std::optional<glm::vec2> MeshSamples::seen_position(int index, const glm::vec3& 
   return position_in_front(index, point, 0);
 }
 
+std::optional<glm::vec2> MeshSamples::nearest_outline(int index, const glm::vec2& pixel, int reach) const {
+  const std::vector<float>& depth = depths[size_t(index)];
+  auto object_at = [&](int x, int y) { return x >= 0 && y >= 0 && x < size && y < size && depth[size_t(y) * size + x] < 1.0f; };
+  std::optional<glm::vec2> best;
+  float best_distance = std::numeric_limits<float>::max();
+  const int px = int(pixel.x), py = int(pixel.y);
+  for (int y = py - reach; y <= py + reach; ++y)
+    for (int x = px - reach; x <= px + reach; ++x) {
+      if (!object_at(x, y) || (object_at(x - 1, y) && object_at(x + 1, y) && object_at(x, y - 1) && object_at(x, y + 1))) continue;
+      const glm::vec2 centre(float(x) + 0.5f, float(y) + 0.5f);
+      if (const float d = glm::length(centre - pixel); d < best_distance) best_distance = d, best = centre;
+    }
+  return best;
+}
+
 bool MeshSamples::near_background(int index, const glm::vec2& pixel) const {
   const std::vector<float>& depth = depths[size_t(index)];
   const int px = int(pixel.x), py = int(pixel.y);
@@ -143,10 +159,21 @@ TweenCell exact_cell(const MeshSamples& samples, const SceneObject& object, cons
     halfway = sample_camera(samples.bounds, halfway_direction(samples.directions[cell[0]], samples.directions[cell[1]]),
                             samples.distance_diagonals);
   const glm::mat4 halfway_vp = view_projection(halfway);
+  // Which vertices lie on a face turned toward each sample's camera: a hidden vertex on none has
+  // turned out of sight (the far flank past its edge-on view) rather than gone behind another part.
+  std::vector<std::vector<bool>> faces_camera(cell.size(), std::vector<bool>(object.mesh.positions.size(), false));
+  for (size_t k = 0; k < cell.size(); ++k)
+    for (size_t f = 0; f < object.mesh.triangles.size(); ++f) {
+      const auto& t = object.mesh.triangles[f];
+      const glm::vec3 centroid = (object.mesh.positions[t[0]] + object.mesh.positions[t[1]] + object.mesh.positions[t[2]]) / 3.0f;
+      if (glm::dot(object.topology.face_normals[f], samples.cameras[cell[k]].position - centroid) > 0.0f)
+        for (uint32_t i : t) faces_camera[k][i] = true;
+    }
   std::vector<ControlPoint> candidates;
   std::vector<glm::vec2> layout;  // where each candidate sits in the warp's triangulation
   std::vector<bool> on_outline;
-  for (const glm::vec3& v : object.mesh.positions) {
+  for (size_t vi = 0; vi < object.mesh.positions.size(); ++vi) {
+    const glm::vec3& v = object.mesh.positions[vi];
     ControlPoint p;
     // Visible in every sample of the cell; or on the outline of one sample and hidden in the
     // others, where it goes to its projection behind what hides it: that moves the outline of
@@ -154,12 +181,20 @@ TweenCell exact_cell(const MeshSamples& samples, const SceneObject& object, cons
     // and the other samples' mattes are "inside" there too, so the outlines still agree.
     int seen = 0;
     bool seen_on_outline = false, inside_image = true;
+    std::vector<bool> seen_in(cell.size(), false);
     for (size_t k = 0; k < cell.size(); ++k) {
       const glm::vec3 projected = samples.project(cell[k], v);
       inside_image = inside_image && projected.x >= 0.0f && projected.y >= 0.0f && projected.x < float(samples.size) &&
                      projected.y < float(samples.size);
-      const auto at = samples.visible_position(cell[k], v);
+      auto at = samples.visible_position(cell[k], v);
+      // On the outline a grazing surface's depth changes by more than the slack from one pixel
+      // to the next, so the cautious test misses the far edge of a flank about to turn out of
+      // sight: there the exact test decides.
+      if (!at)
+        if (const auto seen_exactly = samples.seen_position(cell[k], v); seen_exactly && samples.near_background(cell[k], *seen_exactly))
+          at = seen_exactly;
       p[pair ? 2 * k : k] = at ? *at : glm::vec2(projected);
+      seen_in[k] = at.has_value();
       if (at) {
         ++seen;
         seen_on_outline = seen_on_outline || samples.near_background(cell[k], *at);
@@ -170,6 +205,14 @@ TweenCell exact_cell(const MeshSamples& samples, const SceneObject& object, cons
       const glm::vec4 clip = halfway_vp * glm::vec4(v, 1.0f);
       p[1] = {(clip.x / clip.w * 0.5f + 0.5f) * float(samples.size), (0.5f - clip.y / clip.w * 0.5f) * float(samples.size)};
     }
+    // A point of a surface that has turned out of sight in sample k went there through k's
+    // outline, so it lies on that outline in k: its projection behind the front would stretch
+    // k's inside out over the background where the other sample still sees the flank.
+    for (size_t k = 0; k < cell.size(); ++k) {
+      glm::vec2& at = p[pair ? 2 * k : k];
+      if (faces_camera[k][vi] || seen_in[k]) continue;
+      if (const auto edge = samples.nearest_outline(cell[k], pair ? p[1] : at, kOutlineReach)) at = *edge;
+    }
     bool outline = false;
     for (size_t k = 0; k < cell.size() && !outline; ++k) outline = samples.near_background(cell[k], p[pair ? 2 * k : k]);
     candidates.push_back(p);
@@ -178,7 +221,7 @@ TweenCell exact_cell(const MeshSamples& samples, const SceneObject& object, cons
     glm::vec2 at = pair ? p[1] : (p[0] + p[1] + p[2]) / 3.0f;
     if (seen < int(cell.size()))
       for (size_t k = 0; k < cell.size(); ++k)
-        if (samples.visible_position(cell[k], v)) at = p[pair ? 2 * k : k];
+        if (seen_in[k]) at = p[pair ? 2 * k : k];
     layout.push_back(at);
     on_outline.push_back(outline);
   }

@@ -35,6 +35,8 @@ struct MeshSamples {
   std::optional<glm::vec2> seen_position(int index, const glm::vec3& point) const;
   // True when background (nothing drawn) lies within 2 pixels of `pixel`: an outline point.
   bool near_background(int index, const glm::vec2& pixel) const;
+  // The object pixel next to background nearest to `pixel`, within `reach` pixels.
+  std::optional<glm::vec2> nearest_outline(int index, const glm::vec2& pixel, int reach) const;
   // The surface point seen at `pixel` of sample `from`, when there is one.
   std::optional<glm::vec3> surface_point(int from, const glm::vec2& pixel) const;
 

@@ -59,6 +59,7 @@ export function buildWarpMesh(cell, width, height) {
   const points = cell.points.map((p) => p.map((v) => [v[0], v[1]]));
   for (const b of borderPoints(width, height)) points.push([b, b, b]);
   const pair = cell.samples.length === 2;
-  const layout = points.map((p) => (pair ? p[1] : [(p[0][0] + p[1][0] + p[2][0]) / 3, (p[0][1] + p[1][1] + p[2][1]) / 3]));
+  const layout = points.map((p) =>
+    pair ? [(p[0][0] + p[2][0]) / 2, (p[0][1] + p[2][1]) / 2] : [(p[0][0] + p[1][0] + p[2][0]) / 3, (p[0][1] + p[1][1] + p[2][1]) / 3]);
   return { points, triangles: delaunayTriangles(layout) };
 }
