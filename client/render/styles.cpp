@@ -42,7 +42,7 @@ const std::vector<StyleInfo>& styles() {
        .params = [] { return TexturedSketcher::params(Medium::Charcoal); }, .create = [] { return std::make_unique<TexturedSketcher>(Medium::Charcoal); }},
       {.name = "sketch-chalk", .summary = "dry white chalk strokes on a dark board", .default_backdrop = "#2e3b35",
        .params = [] { return TexturedSketcher::params(Medium::Chalk); }, .create = [] { return std::make_unique<TexturedSketcher>(Medium::Chalk); }},
-      {.name = "hatching", .summary = "screen-space pencil hatching whose density follows the light; combine with an outline: hatching+sketch-pencil", .default_backdrop = "paper",
+      {.name = "hatching", .summary = "screen-space pencil hatching whose density follows the light, crossing in the shadows, with a pencil outline (outline=...; or join one: hatching+sketch-charcoal)", .default_backdrop = "paper",
        .params = &HatchingRenderer::params, .create = [] { return std::make_unique<HatchingRenderer>(); }},
       {.name = "painterly", .summary = "textured brushes that drift over the object, seek it and take their paint from a reference rendering; style files", .default_backdrop = "canvas",
        .params = &PainterlyRenderer::params, .create = [] { return std::make_unique<PainterlyRenderer>(); },
@@ -112,6 +112,13 @@ std::vector<StyleParams> style_params(const std::string& name, const std::vector
   const std::vector<std::string> names = split_parts(name);
   std::vector<StyleParams> params;
   for (const std::string& part : names) params.emplace_back(find_style(part).params());
+  // Hatching joined with lines of its own choosing ("hatching+sketch-charcoal") takes those as
+  // its outline instead of drawing a second one; an explicit outline=... still wins.
+  const auto outlines = HatchingRenderer::outline_styles();
+  for (size_t i = 0; i < names.size(); ++i)
+    if (names[i] == "hatching" &&
+        std::any_of(names.begin(), names.end(), [&](const std::string& n) { return std::find(outlines.begin(), outlines.end(), n) != outlines.end(); }))
+      params[i].set("outline", "none");
   for (const std::string& a : assignments) {
     const auto [key, value] = split_assignment(a);
     bool used = false;

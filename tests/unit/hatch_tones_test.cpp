@@ -66,3 +66,20 @@ TEST(HatchTonesTest, AnySizeDrawsTheSameTile) {
     EXPECT_NEAR(ink_coverage(small.layers[k]), ink_coverage(large.layers[k]), 0.03) << "layer " << k;
   }
 }
+
+TEST(HatchTonesTest, StrokesCrossOnlyInTonesDarkerThanTheCrossHatchingTone) {
+  for (const float cross_tone : {0.3f, 0.5f, 0.8f}) {
+    const HatchTones tones = make_hatch_tones(16, 64, 3, cross_tone);
+    for (size_t k = 0; k < tones.layers.size(); ++k) {
+      const float tone = float(k) / float(tones.layers.size() - 1);
+      if (tone <= cross_tone)
+        EXPECT_EQ(tones.crossing_in_layer[k], 0) << "tone " << tone << " is lighter than " << cross_tone;
+      else if (tone > cross_tone + 0.1f)
+        EXPECT_GT(tones.crossing_in_layer[k], 0) << "tone " << tone << " is darker than " << cross_tone;
+    }
+    EXPECT_GT(ink_coverage(tones.layers.back()), 0.4) << "the darkest tone is mostly ink";
+  }
+  const HatchTones one_way = make_hatch_tones(16, 64, 3, 1.0f);
+  for (int n : one_way.crossing_in_layer) EXPECT_EQ(n, 0) << "a cross-hatching tone of 1 never crosses";
+  EXPECT_THROW(make_hatch_tones(8, 64, 3, 1.5f), Error);
+}

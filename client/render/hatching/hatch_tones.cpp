@@ -40,32 +40,44 @@ void draw_stroke(Image& img, const HatchStroke& s, float pen) {
 
 }  // namespace
 
-HatchTones make_hatch_tones(int layers, int size, uint32_t seed) {
+HatchTones make_hatch_tones(int layers, int size, uint32_t seed, float cross_tone) {
   if (layers < 2 || layers > 64 || size < 16 || size > 1024) throw Error("hatch tones: 2..64 layers of a size 16..1024");
-  // One ordered list of strokes; layer k holds its first n_k. Early strokes run one way,
-  // later ones cross them, as an artist darkens a tone. The strokes are laid out in the tile,
-  // not in texels: any size draws the same tile, sharper or coarser.
+  if (!(cross_tone >= 0.0f && cross_tone <= 1.0f)) throw Error("hatch tones: the cross-hatching tone must be within 0..1");
+  // Two ordered lists of strokes, one per direction; layer k holds the first few of each. The
+  // strokes are laid out in the tile, not in texels: any size draws the same tile, sharper or
+  // coarser.
   StrokeRandom random(stroke_seed(seed, 5));
-  std::vector<HatchStroke> strokes;
   constexpr int kDesignSize = 128;  // the size the stroke count and pen were chosen at
-  const int total = kDesignSize * kDesignSize / 20;
+  const int per_direction = kDesignSize * kDesignSize / 40;
   const float pen = 1.1f * float(size) / float(kDesignSize);
-  for (int i = 0; i < total; ++i) {
-    const bool cross = i >= total / 2;
-    const float angle = (cross ? -0.6f : 0.75f) + random.uniform(-0.08f, 0.08f);
-    strokes.push_back({random.uniform(0.0f, float(size)), random.uniform(0.0f, float(size)),
-                       random.uniform(0.3f, 0.6f) * float(size), angle, random.uniform(0.65f, 1.0f)});
+  std::vector<HatchStroke> along, across;
+  for (int i = 0; i < 2 * per_direction; ++i) {
+    const bool cross = i % 2 == 1;
+    const float angle = (cross ? kCrossStrokeAngle : kHatchStrokeAngle) + random.uniform(-0.08f, 0.08f);
+    (cross ? across : along)
+        .push_back({random.uniform(0.0f, float(size)), random.uniform(0.0f, float(size)), random.uniform(0.3f, 0.6f) * float(size),
+                    angle, random.uniform(0.65f, 1.0f)});
   }
+  // The first direction fills up to the cross-hatching tone, its strokes growing with the square
+  // of the tone so light tones look evenly spaced; the second crosses it from there to the
+  // darkest, growing linearly, so a crossing shows as soon as the tone passes the threshold.
+  // (No cross-hatching: one direction over the whole range.)
+  const bool crosses = cross_tone < 1.0f;
+  auto share = [](float tone, float from, float to) { return std::clamp((tone - from) / std::max(to - from, 1e-6f), 0.0f, 1.0f); };
   HatchTones tones;
+  int drawn_along = 0, drawn_across = 0;
   for (int k = 0; k < layers; ++k) {
-    // Strokes grow roughly with the square of the tone, so tones look evenly spaced.
     const float tone = float(k) / float(layers - 1);
-    const int n = int(std::round(float(total) * tone * tone));
+    const float first = share(tone, 0.0f, crosses ? cross_tone : 1.0f);
+    const int n_along = int(std::round(float(per_direction) * first * first));
+    const int n_across = crosses && tone > cross_tone ? int(std::round(float(per_direction) * share(tone, cross_tone, 1.0f))) : 0;
     // Each layer is the one before plus its new strokes (ink combines by max: order is free).
     Image img = k == 0 ? Image(size, size, {40, 40, 46, 0}) : tones.layers.back();  // graphite, no ink yet
-    for (int i = k == 0 ? 0 : tones.strokes_in_layer.back(); i < n; ++i) draw_stroke(img, strokes[size_t(i)], pen);
+    for (; drawn_along < n_along; ++drawn_along) draw_stroke(img, along[size_t(drawn_along)], pen);
+    for (; drawn_across < n_across; ++drawn_across) draw_stroke(img, across[size_t(drawn_across)], pen);
     tones.layers.push_back(std::move(img));
-    tones.strokes_in_layer.push_back(n);
+    tones.strokes_in_layer.push_back(n_along + n_across);
+    tones.crossing_in_layer.push_back(n_across);
   }
   return tones;
 }

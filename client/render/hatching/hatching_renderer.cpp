@@ -9,6 +9,7 @@
 
 #include "client/render/backdrop.hpp"
 #include "client/render/hatching/hatch_tones.hpp"
+#include "client/render/styles.hpp"
 #include "common/error.hpp"
 
 namespace inkwire {
@@ -22,21 +23,28 @@ constexpr int kThresholdLayers = 64;     // layers folded into the threshold ima
 constexpr int kMaxThresholdSize = 256;  // larger tiles magnify it (64 layers of it are drawn to fold)
 constexpr float kToneGamma = 0.8f;      // tones darken a little faster than N.L falls
 
-// The shade lookup (S7): paper above N.L = `lightness`, darkening to full tone facing away from
-// the light...
-float tone_at(float n_dot_l, float lightness) {
-  return std::pow(std::clamp((lightness - n_dot_l) / (lightness + 1.0f), 0.0f, 1.0f), kToneGamma);
+}  // namespace
+
+// The shade lookup (S7): the light tone above N.L = `lightness` (a few strokes, so the lit
+// surface keeps its extent on the paper), darkening to full tone facing away from the light...
+float ShadeLookup::tone_at(float n_dot_l) const {
+  return light_tone + (1.0f - light_tone) * std::pow(std::clamp((lightness - n_dot_l) / (lightness + 1.0f), 0.0f, 1.0f), kToneGamma);
 }
 
-// ...and back: the N.L below which the surface reaches `tone`.
-float n_dot_l_at(float tone, float lightness) { return lightness - (lightness + 1.0f) * std::pow(tone, 1.0f / kToneGamma); }
+// ...and back: the N.L below which the surface reaches `tone` (every N.L for the light tone).
+float ShadeLookup::n_dot_l_at(float tone) const {
+  if (tone <= light_tone) return 1.0f;
+  return lightness - (lightness + 1.0f) * std::pow((tone - light_tone) / (1.0f - light_tone), 1.0f / kToneGamma);
+}
+
+namespace {
 
 // The threshold image with its tones turned into N.L through the lookup's inverse, so the
 // shader compares N.L directly and reads no lookup: the same function, folded in once.
-Image in_n_dot_l(Image thresholds, float lightness) {
+Image in_n_dot_l(Image thresholds, const ShadeLookup& shade) {
   for (size_t i = 0; i < thresholds.pixels.size(); i += 4)
     for (size_t c : {size_t(0), size_t(2)}) {
-      const float n_dot_l = n_dot_l_at(float(thresholds.pixels[i + c]) / 255.0f, lightness);
+      const float n_dot_l = shade.n_dot_l_at(float(thresholds.pixels[i + c]) / 255.0f);
       thresholds.pixels[i + c] = uint8_t(std::clamp((n_dot_l + 1.0f) / 2.0f, 0.0f, 1.0f) * 255.0f + 0.5f);
     }
   return thresholds;
@@ -52,21 +60,35 @@ std::vector<ParamSpec> HatchingRenderer::params() {
       int_param("passes", "4", 1, 32, "multipass: densities, one pass each"),
       float_param("angle", "0", -180, 180, "rotation of the hatching, degrees"),
       float_param("scale", "96", 8, 1024, "size of one hatch tile on screen, pixels"),
-      float_param("lightness", "0.85", -1, 1, "N.L above which the surface stays paper-white"),
+      float_param("lightness", "0.85", -1, 1, "N.L above which the surface has only the light tone"),
+      float_param("light_tone", "0.15", 0, 0.5, "the tone of the lit surface: a few strokes that keep its extent (0: bare paper)"),
+      float_param("cross_below", "0.3", -1, 1, "N.L below which a second stroke direction crosses the first"),
+      choice_param("outline", "sketch-pencil", outline_styles(), "the lines around the hatching: a sketcher's strokes, exact lines, or none"),
       float_param("strength", "0.9", 0, 1, "ink opacity"),
   };
 }
 
+std::vector<std::string> HatchingRenderer::outline_styles() { return {"sketch-pencil", "sketch-charcoal", "hidden-line", "none"}; }
+
 void HatchingRenderer::configure(const StyleParams& p) {
   const std::string variant = p.get_text("variant");
   const int tones = p.get_int("tones"), passes = p.get_int("passes");
-  const float lightness = p.get_float("lightness");
-  if (variant != variant_ || tones != tone_layers_ || passes != passes_wanted_ || lightness != lightness_)
+  const ShadeLookup shade{p.get_float("lightness"), p.get_float("light_tone")};
+  const float cross_below = p.get_float("cross_below");
+  if (variant != variant_ || tones != tone_layers_ || passes != passes_wanted_ || shade.lightness != shade_.lightness ||
+      shade.light_tone != shade_.light_tone || cross_below != cross_below_)
     tones_.reset();  // rebuilt on the next draw
   variant_ = variant;
   tone_layers_ = tones;
   passes_wanted_ = passes;
-  lightness_ = lightness;
+  shade_ = shade;
+  cross_below_ = cross_below;
+  const std::string outline = p.get_text("outline");
+  if (outline != outline_name_) {
+    outline_ = outline == "none" ? nullptr : make_renderer(outline);
+    outline_name_ = outline;
+    if (outline_ && object_) outline_->prepare(*object_);
+  }
   angle_ = glm::radians(p.get_float("angle"));
   const int size = threshold_size();
   scale_px_ = p.get_float("scale");
@@ -76,7 +98,11 @@ void HatchingRenderer::configure(const StyleParams& p) {
   strength_ = p.get_float("strength");
 }
 
-void HatchingRenderer::prepare(const SceneObject& object) { mesh_ = std::make_unique<GpuMesh>(object); }
+void HatchingRenderer::prepare(const SceneObject& object) {
+  object_ = &object;
+  mesh_ = std::make_unique<GpuMesh>(object);
+  if (outline_) outline_->prepare(object);
+}
 
 int HatchingRenderer::threshold_size() const { return std::clamp(int(std::lround(scale_px_)), 16, kMaxThresholdSize); }
 
@@ -89,23 +115,25 @@ void HatchingRenderer::build_textures() {
   // No mipmaps for the 3D texture and the thresholds: they would average tones. The multipass
   // layers are a separate, coarser set (bare paper plus one layer per pass), made from the same
   // stroke list, so they nest the same way.
+  // Strokes cross where the surface is darker than the tone at N.L = cross_below.
+  const float cross_tone = shade_.tone_at(cross_below_);
   if (variant_ == "threshold") {
     // Drawn at the tile's size on screen. Unturned (or turned by quarter turns) at that size, a
     // texel is a pixel: the nearest texel is what filtering would give, for a quarter of the reads.
     tones_ = std::make_unique<Texture>(
-        Texture::from_image(in_n_dot_l(tone_thresholds(make_hatch_tones(kThresholdLayers, threshold_size())), lightness_),
+        Texture::from_image(in_n_dot_l(tone_thresholds(make_hatch_tones(kThresholdLayers, threshold_size(), 3, cross_tone)), shade_),
                             {.repeat = true, .mipmaps = false, .linear = !pixel_exact()}));
   } else if (variant_ == "3d-texture") {
     tones_ = std::make_unique<Texture>(
-        Texture::stack_from_images(make_hatch_tones(tone_layers_).layers, GL_TEXTURE_3D, {.repeat = true, .mipmaps = false, .linear = true}));
+        Texture::stack_from_images(make_hatch_tones(tone_layers_, 128, 3, cross_tone).layers, GL_TEXTURE_3D, {.repeat = true, .mipmaps = false, .linear = true}));
   } else {
-    tones_ = std::make_unique<Texture>(Texture::stack_from_images(make_hatch_tones(passes_wanted_ + 1).layers, GL_TEXTURE_2D_ARRAY,
+    tones_ = std::make_unique<Texture>(Texture::stack_from_images(make_hatch_tones(passes_wanted_ + 1, 128, 3, cross_tone).layers, GL_TEXTURE_2D_ARRAY,
                                                                   {.repeat = true, .mipmaps = true, .linear = true}));
   }
   if (variant_ == "threshold") return;  // the lookup is folded into the thresholds
   std::vector<glm::u8vec4> lookup(256);
   for (size_t i = 0; i < lookup.size(); ++i) {
-    const uint8_t v = uint8_t(tone_at(-1.0f + 2.0f * float(i) / float(lookup.size() - 1), lightness_) * 255.0f + 0.5f);
+    const uint8_t v = uint8_t(shade_.tone_at(-1.0f + 2.0f * float(i) / float(lookup.size() - 1)) * 255.0f + 0.5f);
     lookup[i] = {v, v, v, 255};
   }
   tone_lookup_ = std::make_unique<Texture>(Texture::lookup_1d(lookup, true));
@@ -168,7 +196,7 @@ void HatchingRenderer::draw(const FrameState& frame) {
   } else {
     if (variant_ == "threshold") {
       // A stroke fades in over 1/tones of the tone range: about that share of N.L's range.
-      const float softness = (lightness_ + 1.0f) / float(tone_layers_);
+      const float softness = (shade_.lightness + 1.0f) / float(tone_layers_);
       p.set("threshold_scale", 2.0f / softness);
       p.set("ink_colour", kGraphite);
     }
@@ -180,11 +208,14 @@ void HatchingRenderer::draw(const FrameState& frame) {
   } else {
     HiddenLineRemoval::end_lines();
   }
+  if (outline_) outline_->draw(frame);
 }
 
 std::map<std::string, double> HatchingRenderer::counters() const {
   // Geometry passes: the depth pass counts when the ink is blended.
-  return {{"passes", double(passes_)}, {"geometry_passes", double(passes_ + (opaque_ ? 0 : 1))}};
+  std::map<std::string, double> figures = {{"passes", double(passes_)}, {"geometry_passes", double(passes_ + (opaque_ ? 0 : 1))}};
+  if (outline_) figures.merge(outline_->counters());  // the outline's own (edges drawn), hatching's kept
+  return figures;
 }
 
 }  // namespace inkwire

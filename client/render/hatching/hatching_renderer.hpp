@@ -8,6 +8,8 @@
 //               the shade lookup folded into its thresholds)
 //   3d-texture  one pass sampling a 3D texture whose depth axis is tone
 //   multipass   one pass per tone layer, each fading in as the tone passes it
+// Every variant draws a light tone over the lit surface, crosses its strokes below a chosen N.L
+// and draws an outline (a pencil sketcher's by default) over the hatching.
 // When the frame says what its backdrop is, the one-pass variants draw the surface opaque with
 // the backdrop under the ink, depth-tested like any surface; otherwise (and for multipass) the
 // object's depth is laid first (G7) and the ink blended over the framebuffer, so only the
@@ -23,9 +25,19 @@
 
 namespace inkwire {
 
+// The shade lookup: the tone (0 paper .. 1 darkest) of a surface at a given N.L.
+struct ShadeLookup {
+  float lightness = 0.85f;   // N.L above which the surface has only the light tone
+  float light_tone = 0.15f;  // the least tone anywhere on the surface
+  float tone_at(float n_dot_l) const;     // never lighter as N.L falls
+  float n_dot_l_at(float tone) const;     // the N.L below which the surface reaches `tone`
+};
+
 class HatchingRenderer final : public Renderer {
  public:
   static std::vector<ParamSpec> params();
+  // The styles `outline` may name: lines that, like hatching, keep still on a still object.
+  static std::vector<std::string> outline_styles();
   void configure(const StyleParams& params) override;
   void prepare(const SceneObject& object) override;
   void draw(const FrameState& frame) override;
@@ -42,9 +54,15 @@ class HatchingRenderer final : public Renderer {
   std::unique_ptr<GpuMesh> mesh_;
   std::unique_ptr<gl::Texture> tones_, tone_lookup_;
 
+  const SceneObject* object_ = nullptr;
+  std::unique_ptr<Renderer> outline_;  // drawn over the hatching; none when "none"
+  std::string outline_name_ = "none";
+
   std::string variant_ = "threshold";
   int tone_layers_ = 16, passes_wanted_ = 4;
-  float angle_ = 0.0f, scale_px_ = 96.0f, lightness_ = 0.85f, strength_ = 0.9f;
+  ShadeLookup shade_;
+  float cross_below_ = 0.3f;
+  float angle_ = 0.0f, scale_px_ = 96.0f, strength_ = 0.9f;
   size_t passes_ = 0;
   bool opaque_ = false;
 };
