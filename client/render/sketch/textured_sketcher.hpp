@@ -5,7 +5,9 @@
 // once per edge and kept for life; texture coordinates repeat by a measure of the object's size
 // precomputed per edge, so marks keep their scale on any mesh. Depth test on, depth writes
 // off, so strokes meeting at a vertex overlap as a hand's would. Edges fade in and out near the
-// silhouette (S6), on by default.
+// silhouette (S6), on by default. Charcoal also presses unevenly (width and darkness change
+// smoothly along the outline), catches the paper's tooth and leaves a rubbed tone along the
+// outline on the shadow side; any medium can be asked for these (pressure, grain, smudge).
 #include <memory>
 #include <vector>
 
@@ -28,7 +30,9 @@ class TexturedSketcher final : public Renderer {
 
  private:
   Medium medium_;
-  gl::Program program_;
+  gl::Program program_, smudge_program_;
+  std::unique_ptr<gl::Texture> tooth_;  // the paper's grain, for dry media and the smudge
+  std::vector<float> pressures_;        // per mesh vertex, 0..1
   HiddenLineRemoval hlr_;
   SketchEdgeSource edges_;
   const SceneObject* object_ = nullptr;
@@ -49,6 +53,7 @@ class TexturedSketcher final : public Renderer {
     glm::vec3 coord;  // u, v, variant
     float opacity;
     glm::vec2 run;    // distance from the quad's start and its whole length, in half-widths
+    float pressure;
   };
   std::vector<Vertex> quads_;
 
@@ -56,6 +61,7 @@ class TexturedSketcher final : public Renderer {
   int variants_ = 4;
   float width_ratio_ = 0.15f, min_width_ratio_ = 0.004f, max_width_ratio_ = 0.012f, texture_length_ratio_ = 0.08f;
   float strength_ = 1.0f, depth_bias_ = 0.002f;
+  float pressure_ = 0.0f, grain_ = 0.0f, smudge_ = 0.0f;
   float min_width_ = 0.0f, max_width_ = 0.0f;
 };
 
