@@ -89,7 +89,7 @@ int run(const Options& o) {
   const int frames = o.frames > 0 ? o.frames : 1, fps = o.fps > 0 ? o.fps : 24;
   if (frames > 100000) throw Error("--frames must be 1..100000");
   const glm::ivec2 size = parse_size(o.size);
-  const BackdropSpec backdrop_spec = BackdropSpec::parse(o.backdrop.empty() ? default_backdrop(o.style) : o.backdrop);
+  const BackdropSpec backdrop_spec = BackdropSpec::parse(o.backdrop.empty() ? default_backdrop(o.style, o.set) : o.backdrop);
 
   SceneObject object = load_scene_object(o.mesh, o.lod, 10.0f, parse_up_axis(o.up));
   for (const std::string& w : object.warnings) std::cerr << "inkwire-render: warning: " << w << "\n";

@@ -140,4 +140,23 @@ void Backdrop::set_under(const gl::Program& program, GLuint unit) const {
   program.set("paper_size", paper_size_);
 }
 
+Image paper_tooth(int size) {
+  const Image paper = generate_paper(size);
+  std::vector<float> lum;
+  double sum = 0.0, squares = 0.0;
+  for (size_t i = 0; i < paper.pixels.size(); i += 4) {
+    lum.push_back(0.299f * paper.pixels[i] + 0.587f * paper.pixels[i + 1] + 0.114f * paper.pixels[i + 2]);
+    sum += lum.back();
+    squares += double(lum.back()) * lum.back();
+  }
+  const double mean = sum / double(lum.size()), spread = std::sqrt(std::max(squares / double(lum.size()) - mean * mean, 1e-6));
+  Image tooth(paper.width, paper.height);
+  for (size_t i = 0; i < lum.size(); ++i) {
+    const uint8_t t = uint8_t(std::clamp(0.5 + 0.22 * (lum[i] - mean) / spread, 0.0, 1.0) * 255.0 + 0.5);
+    tooth.pixels[4 * i] = tooth.pixels[4 * i + 1] = tooth.pixels[4 * i + 2] = t;
+    tooth.pixels[4 * i + 3] = 255;
+  }
+  return tooth;
+}
+
 }  // namespace inkwire

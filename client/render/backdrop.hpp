@@ -29,6 +29,10 @@ struct BackdropSpec {
 // A tileable paper texture: warm off-white with fibres and grain at several scales, wrapping
 // seamlessly at its edges. Deterministic for a given seed.
 Image generate_paper(int size, uint32_t seed = 1);
+// The generated paper's grain as a tooth map (grey, tileable): its luminance centred on its mean
+// and scaled by its spread, so raised fibres (lighter) lie near 1 and valleys near 0. Dry media
+// catch the raised fibres; wet pigment settles in the valleys.
+Image paper_tooth(int size);
 // A primed linen canvas: over-and-under threads with slubs, tileable like the paper.
 Image generate_canvas(int size, uint32_t seed = 1);
 

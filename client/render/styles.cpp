@@ -46,7 +46,7 @@ const std::vector<StyleInfo>& styles() {
        .params = &HatchingRenderer::params, .create = [] { return std::make_unique<HatchingRenderer>(); }},
       {.name = "painterly", .summary = "textured brushes that drift over the object, seek it and take their paint from a reference rendering; style files", .default_backdrop = "canvas",
        .params = &PainterlyRenderer::params, .create = [] { return std::make_unique<PainterlyRenderer>(); },
-       .redraw_hz = kBrushMotionHz, .in_effect = &painterly_settings_in_effect},
+       .redraw_hz = kBrushMotionHz, .in_effect = &painterly_settings_in_effect, .ground = &painterly_ground},
       {.name = "oil-filter", .summary = "the classic oil-paint image filter over a reference rendering: the baseline brushes must beat", .default_backdrop = "canvas",
        .params = &OilFilterRenderer::params, .create = [] { return std::make_unique<OilFilterRenderer>(); }},
       {.name = "tween", .summary = "super-realistic: views synthesised by warping sample images (rendered from the mesh, or photos) along control points", .default_backdrop = "#d9dde3",
@@ -173,6 +173,11 @@ std::vector<std::string> style_names() {
   return names;
 }
 
-std::string default_backdrop(const std::string& name) { return find_style(split_parts(name).front()).default_backdrop; }
+std::string default_backdrop(const std::string& name, const std::vector<std::string>& assignments) {
+  const StyleInfo& first = find_style(split_parts(name).front());
+  if (first.ground)
+    if (std::string ground = first.ground(style_params(name, assignments).front()); !ground.empty()) return ground;
+  return first.default_backdrop;
+}
 
 }  // namespace inkwire

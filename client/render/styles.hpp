@@ -23,6 +23,8 @@ struct StyleInfo {
   // The values a configuration really uses where a parameter says "0 takes the style file's"
   // (painterly): null when every value is used as given.
   std::function<std::map<std::string, std::string>(const StyleParams&)> in_effect = nullptr;
+  // The backdrop a configuration asks for (a painting style file's ground), or "": the default.
+  std::function<std::string(const StyleParams&)> ground = nullptr;
 };
 
 const std::vector<StyleInfo>& styles();
@@ -54,7 +56,8 @@ double style_redraw_hz(const std::string& name);
 // The registered style names, for parameters that name another style (a painting's reference).
 std::vector<std::string> style_names();
 
-// The backdrop a style (or the first style of a combination) is drawn over by default.
-std::string default_backdrop(const std::string& name);
+// The backdrop a style (or the first style of a combination) is drawn over by default, as
+// configured by `assignments` (a painting style file may name its own ground).
+std::string default_backdrop(const std::string& name, const std::vector<std::string>& assignments = {});
 
 }  // namespace inkwire

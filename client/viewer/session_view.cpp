@@ -127,7 +127,7 @@ void SessionView::update_style(const protocol::Snapshot& state, bool new_content
       renderer_ = std::move(renderer);
     }
     // A product shows on white, as a shop's photos do.
-    backdrop_.emplace(BackdropSpec::parse(turntable_ ? "#ffffff" : default_backdrop(state.style.renderer)));
+    backdrop_.emplace(BackdropSpec::parse(turntable_ ? "#ffffff" : default_backdrop(state.style.renderer, state.style.settings)));
     style_key_ = key;
     style_error_.clear();
   } catch (const Error& e) {

@@ -7,7 +7,10 @@
 #include <glm/common.hpp>
 
 #include "client/gl/gl.hpp"
+#include "client/render/backdrop.hpp"
 #include "client/render/painterly/brush_shapes.hpp"
+#include "client/render/painterly/glow.hpp"
+#include "client/render/painterly/wash_map.hpp"
 #include "common/error.hpp"
 #include "common/noise.hpp"
 
@@ -18,6 +21,7 @@ using namespace gl;
 namespace {
 
 constexpr float kPi = std::numbers::pi_v<float>;
+constexpr int kToothSize = 512;  // the paper's grain at one texel per pixel, as the paper backdrop lies
 
 // The difference between two stroke angles, folded into (-pi/2, pi/2]: a stroke turned half a
 // circle is the same stroke, so a brush never spins round to reach its new direction.
@@ -64,10 +68,11 @@ Image coarse_base_coat(const Image& reference, int cell, const Palette& palette)
 }  // namespace
 
 BrushPainter::BrushPainter()
-    : brush_program_(Program::from_files({"painterly/brush.vert", "painterly/brush.frag"})),
-      shapes_(Texture::stack_from_images(make_brush_textures(), GL_TEXTURE_2D_ARRAY, {.repeat = false, .mipmaps = true, .linear = true})),
+    : shapes_(Texture::stack_from_images(make_brush_textures(), GL_TEXTURE_2D_ARRAY, {.repeat = false, .mipmaps = true, .linear = true})),
       matte_(Texture::from_image(Image(1, 1, {0, 0, 0, 255}), {.repeat = false, .mipmaps = false, .linear = true})),
       coarse_(Texture::from_image(Image(1, 1), {.repeat = false, .mipmaps = false, .linear = true})),
+      medium_(Texture::from_image(Image(1, 1), {.repeat = false, .mipmaps = false, .linear = true})),
+      glow_(Texture::from_image(Image(1, 1), {.repeat = false, .mipmaps = false, .linear = true})),
       instance_buffer_(Buffer::create(sizeof(Instance), nullptr, GL_STREAM_DRAW)),
       brush_vao_(VertexArray::create()) {
   constexpr GLsizei stride = sizeof(Instance);
@@ -127,10 +132,37 @@ float BrushPainter::target_angle(size_t index, const Brush& brush, const Image& 
   return offset;
 }
 
+const Program& BrushPainter::brush_program(bool soft, bool glaze) {
+  const int key = int(soft) | int(glaze) << 1;
+  auto it = brush_programs_.find(key);
+  if (it != brush_programs_.end()) return it->second;
+  std::vector<std::string> defines;
+  if (soft) defines.push_back("SOFT_EDGES 1");
+  if (glaze) defines.push_back("GLAZE 1");
+  return brush_programs_.emplace(key, Program::from_files({"painterly/brush.vert", "painterly/brush.frag"}, defines)).first->second;
+}
+
 void BrushPainter::draw_underpaint(const Image& reference, PixelRect rect) {
   const int cell = std::max(4, std::min(rect.width, rect.height) / 24);
   coarse_.update(coarse_base_coat(reference, cell, style_.palette));
-  rect_image_.draw(coarse_, matte_, rect, /*premultiplied=*/true, style_.underpaint);
+  const bool soft = style_.edge_softness > 0.0f;
+  rect_image_.draw(coarse_, soft ? medium_ : matte_, rect, /*premultiplied=*/true, style_.underpaint,
+                   soft ? RectImage::Clip::Soft : RectImage::Clip::Hard);
+}
+
+void BrushPainter::draw_glow(const Image& reference, PixelRect rect) {
+  // At a quarter of the resolution, grown by the glow's reach so the light is not cut off at
+  // the capture's edges.
+  constexpr int kScale = 4;
+  const int radius = std::max(kScale, int(std::lround(style_.glow_radius * float(std::max(rect.width, rect.height)))));
+  const int margin = 2 * radius;
+  const Image glow = glow_image(reference, style_.palette, radius, margin, kScale);
+  glow_.update(glow);
+  const PixelRect grown{rect.x - margin, rect.y - margin, glow.width * kScale, glow.height * kScale};
+  // Light adds to what is there (the backdrop and the paint); alpha too, so a transparent
+  // ground keeps the glow.
+  glBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+  rect_image_.draw(glow_, glow_, grown, /*premultiplied=*/false, style_.glow, RectImage::Clip::None);
 }
 
 void BrushPainter::lay_matte(const Image& reference, PixelRect rect, bool underpaint) {
@@ -145,7 +177,7 @@ void BrushPainter::lay_matte(const Image& reference, PixelRect rect, bool underp
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   if (underpaint && style_.underpaint > 0.0f) {
     draw_underpaint(reference, rect);
-  } else {
+  } else if (style_.edge_softness <= 0.0f) {
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     rect_image_.draw(matte_, matte_, rect, /*premultiplied=*/false, 1.0f);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -154,7 +186,7 @@ void BrushPainter::lay_matte(const Image& reference, PixelRect rect, bool underp
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
 }
 
-void BrushPainter::paint(const Image& reference, PixelRect rect, bool underpaint, int settle) {
+void BrushPainter::paint(const Image& reference, PixelRect rect, bool underpaint, int settle, bool opaque_ground) {
   if (!field_) throw Error("BrushPainter::paint(): no style set");
   if (reference.empty() || rect.empty()) return;
   const Matte matte = Matte::from_alpha(reference);
@@ -162,17 +194,28 @@ void BrushPainter::paint(const Image& reference, PixelRect rect, bool underpaint
   field_->step(matte);
   field_->sample_colours(reference);
   matte_.update(reference);
+  side_ = automatic_brush_side(matte, field_->last_step().visible, style_.coverage);
+  const bool soft = style_.edge_softness > 0.0f, glaze = style_.glaze && opaque_ground;
+  // The medium is needed for soft edges and for wet edges; its soft matte reaches as far as a
+  // share of a brush beyond the outline.
+  if (soft || style_.wet_edges > 0.0f) medium_.update(wash_map(reference, std::max(1.0f, style_.edge_softness * side_)));
+  if (style_.granulation > 0.0f && !tooth_)
+    tooth_.emplace(Texture::from_image(paper_tooth(kToothSize), {.repeat = true, .mipmaps = false, .linear = false}));
 
   GLint viewport[4];
   glGetIntegerv(GL_VIEWPORT, viewport);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
   glEnable(GL_BLEND);
+  // The glow lights the ground around the object first; the paint then covers it where it lies,
+  // so the strokes keep their own colours and the light spills out from behind them.
+  if (style_.glow > 0.0f) draw_glow(reference, rect);
   // Alpha accumulates as "covered" so a transparent backdrop ends up opaque under paint.
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   lay_matte(reference, rect, underpaint);
+  // Soft edges fade by the medium instead of cutting by the stencil.
+  if (soft) glDisable(GL_STENCIL_TEST);
 
-  side_ = automatic_brush_side(matte, field_->last_step().visible, style_.coverage);
   const glm::vec2 origin(rect.x, rect.y), size(rect.width, rect.height);
   std::vector<Brush>& brushes = field_->brushes();
   instances_.clear();
@@ -202,10 +245,21 @@ void BrushPainter::paint(const Image& reference, PixelRect rect, bool underpaint
   }
   if (!instances_.empty()) {
     instance_buffer_.upload(instances_.size() * sizeof(Instance), instances_.data());
-    brush_program_.use();
-    brush_program_.set("viewport", glm::vec4(viewport[0], viewport[1], viewport[2], viewport[3]));
-    brush_program_.set("shapes", 0);
+    const Program& program = brush_program(soft, glaze);
+    program.use();
+    program.set("viewport", glm::vec4(viewport[0], viewport[1], viewport[2], viewport[3]));
+    program.set("shapes", 0);
+    program.set("medium", 1);
+    program.set("tooth", 2);
+    program.set("rect", glm::vec4(rect.x, rect.y, rect.width, rect.height));
+    program.set("wet_edges", style_.wet_edges);
+    program.set("granulation", tooth_ ? style_.granulation : 0.0f);
+    program.set("tooth_size", glm::vec2(float(kToothSize), float(kToothSize)));
     shapes_.bind(0);
+    medium_.bind(1);
+    if (tooth_) tooth_->bind(2);
+    // Glazing multiplies what is there by the pigment's transmittance; coverage still adds up.
+    if (glaze) glBlendFuncSeparate(GL_ZERO, GL_SRC_COLOR, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     // The mipmap level trilinear filtering would pick (where the stroke's narrow side squeezes
     // the texture most), once for all brushes: a trilinear read per fragment cost about a fifth
     // of the brush pass under llvmpipe, for a picture that differs only in its finest streaks.
@@ -217,6 +271,7 @@ void BrushPainter::paint(const Image& reference, PixelRect rect, bool underpaint
   glBindVertexArray(0);
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ZERO);
 }
 
 }  // namespace inkwire

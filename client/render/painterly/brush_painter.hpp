@@ -3,7 +3,10 @@
 // the reference image, each brush given a look (shape, size, paint, angle) by the style and its
 // region rules, then drawn as instanced, textured quads clipped to the object's matte. An
 // optional underpainting (a blurred base coat in the palette's colours) goes down first so no
-// canvas shows through the object between strokes.
+// canvas shows through the object between strokes. The style's medium decides how paint meets
+// the outline (a soft fade across it, or the stencil's cut-out), whether it glazes (transparent
+// washes) with wet edges and granulation, and whether it glows.
+#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -27,7 +30,9 @@ class BrushPainter {
   // One frame: steps the brushes against `reference` (top row first; alpha is the matte),
   // which sits at `rect` in the bound framebuffer, and paints them there. `settle` extra
   // steps first let a fresh field find the object before anything is drawn (still images).
-  void paint(const Image& reference, PixelRect rect, bool underpaint, int settle = 0);
+  // A glazing style glazes only over an `opaque_ground` (there is nothing to darken over a
+  // transparent one); otherwise its paint is laid over as other paint is.
+  void paint(const Image& reference, PixelRect rect, bool underpaint, int settle = 0, bool opaque_ground = false);
 
   const BrushField* field() const { return field_.get(); }
   float brush_side() const { return side_; }
@@ -49,6 +54,8 @@ class BrushPainter {
   void choose_look(size_t index, const Brush& brush);
   float target_angle(size_t index, const Brush& brush, const Image& reference, const StrokeOrientation& orientation) const;
   void draw_underpaint(const Image& reference, PixelRect rect);
+  void draw_glow(const Image& reference, PixelRect rect);
+  const gl::Program& brush_program(bool soft, bool glaze);
   // Writes the matte into the stencil (1 on the object) as the base coat is laid, or alone
   // without one, and leaves the stencil test passing only there: brushes then stay on the
   // object without each fragment reading the matte.
@@ -61,8 +68,9 @@ class BrushPainter {
   std::vector<Instance> instances_;
   float side_ = 1.0f;
 
-  gl::Program brush_program_;
-  gl::Texture shapes_, matte_, coarse_;
+  std::map<int, gl::Program> brush_programs_;  // by soft edges and glaze
+  gl::Texture shapes_, matte_, coarse_, medium_, glow_;
+  std::optional<gl::Texture> tooth_;  // the paper's grain, made when a style granulates
   gl::Buffer instance_buffer_;
   gl::VertexArray brush_vao_;
   RectImage rect_image_;

@@ -11,7 +11,7 @@ namespace inkwire {
 
 namespace {
 
-const std::vector<std::string> kNames = {"dot", "stroke", "blotch", "spatter"};
+const std::vector<std::string> kNames = {"dot", "stroke", "blotch", "spatter", "wash"};
 
 float smoothstep(float e0, float e1, float x) {
   const float t = std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f);
@@ -119,6 +119,25 @@ Image spatter(uint32_t seed) {
   return image;
 }
 
+// A wet wash: a broad, soft-edged pool with an irregular edge and no rim of its own (the rim a
+// wash leaves is where it ends as a whole, which the painter adds: wet edges), its pigment a
+// little uneven where the water carried it.
+Image wash(uint32_t seed) {
+  const int n = kBrushTextureSize;
+  Image image(n, n);
+  const TileableNoise shape(6, seed * 29 + 3), flow(8, seed * 31 + 5);
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const float dx = (float(x) + 0.5f) / float(n) - 0.5f, dy = (float(y) + 0.5f) / float(n) - 0.5f;
+      const float r = std::sqrt(dx * dx + dy * dy);
+      const float angle = std::atan2(dy, dx) / 6.28318f + 0.5f;
+      const float edge = 0.36f + 0.1f * (shape.at(angle * 6, 1.5f) - 0.5f);
+      const float alpha = (1.0f - smoothstep(edge - 0.2f, edge, r)) * (0.8f + 0.2f * flow.at(float(x) / 8, float(y) / 8));
+      put(image, x, y, 1.0f, alpha);
+    }
+  return image;
+}
+
 }  // namespace
 
 const std::vector<std::string>& brush_shape_names() { return kNames; }
@@ -126,7 +145,7 @@ const std::vector<std::string>& brush_shape_names() { return kNames; }
 BrushShape brush_shape(const std::string& name) {
   for (size_t i = 0; i < kNames.size(); ++i)
     if (kNames[i] == name) return BrushShape(i);
-  throw Error("unknown brush shape '" + name + "' (known: dot, stroke, blotch, spatter)");
+  throw Error("unknown brush shape '" + name + "' (known: dot, stroke, blotch, spatter, wash)");
 }
 
 Image make_brush_texture(BrushShape shape, uint32_t seed) {
@@ -135,6 +154,7 @@ Image make_brush_texture(BrushShape shape, uint32_t seed) {
     case BrushShape::Stroke: return stroke(seed);
     case BrushShape::Blotch: return blotch(seed);
     case BrushShape::Spatter: return spatter(seed);
+    case BrushShape::Wash: return wash(seed);
   }
   throw Error("make_brush_texture(): bad shape");
 }

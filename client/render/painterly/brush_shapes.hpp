@@ -9,11 +9,11 @@
 
 namespace inkwire {
 
-enum class BrushShape { Dot, Stroke, Blotch, Spatter };
+enum class BrushShape { Dot, Stroke, Blotch, Spatter, Wash };
 
 inline constexpr int kBrushTextureSize = 64;
 
-// "dot", "stroke", "blotch", "spatter". Throws inkwire::Error naming the known shapes.
+// "dot", "stroke", "blotch", "spatter", "wash". Throws inkwire::Error naming the known shapes.
 BrushShape brush_shape(const std::string& name);
 const std::vector<std::string>& brush_shape_names();
 

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "client/render/backdrop.hpp"
 #include "common/error.hpp"
 #include "common/style_params.hpp"
 
@@ -130,7 +131,8 @@ class StyleReader {
   }
 
   PaintStyle style(const json& root) const {
-    only_keys(root, "", {"name", "description", "brushes", "shapes", "aspect", "coverage", "opacity", "colour_frames", "underpaint", "colour_jitter", "palette", "orientation", "motion", "regions"});
+    only_keys(root, "", {"name", "description", "brushes", "shapes", "aspect", "coverage", "opacity", "colour_frames", "underpaint", "colour_jitter",
+                         "edge_softness", "blend", "wet_edges", "granulation", "glow", "ground", "palette", "orientation", "motion", "regions"});
     PaintStyle s;
     s.name = text(root, "name", source_);
     s.brushes = integer(root, "brushes", s.brushes, 1, 100000);
@@ -141,6 +143,21 @@ class StyleReader {
     s.colour_frames = integer(root, "colour_frames", s.colour_frames, 1, 255);
     s.underpaint = number(root, "underpaint", s.underpaint, 0.0f, 1.0f);
     s.colour_jitter = number(root, "colour_jitter", s.colour_jitter, 0.0f, 0.5f);
+    s.edge_softness = number(root, "edge_softness", s.edge_softness, 0.0f, 2.0f);
+    if (const std::string blend = text(root, "blend", "over"); blend == "glaze")
+      s.glaze = true;
+    else if (blend != "over")
+      fail("blend", "must be over or glaze, not '" + blend + "'");
+    s.wet_edges = number(root, "wet_edges", s.wet_edges, 0.0f, 1.0f);
+    s.granulation = number(root, "granulation", s.granulation, 0.0f, 1.0f);
+    if (root.contains("glow")) {
+      const json& g = root["glow"];
+      only_keys(g, "glow", {"strength", "radius"});
+      s.glow = number(g, "strength", 1.0f, 0.0f, 4.0f);
+      s.glow_radius = number(g, "radius", s.glow_radius, 0.005f, 0.25f);
+    }
+    s.ground = text(root, "ground", "");
+    if (!s.ground.empty()) guarded("ground", [&] { return BackdropSpec::parse(s.ground); });
     if (root.contains("palette")) s.palette = palette(root["palette"]);
     if (root.contains("orientation")) s.orientation = orientation(root["orientation"]);
     if (root.contains("motion")) {

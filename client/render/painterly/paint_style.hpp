@@ -49,6 +49,14 @@ struct PaintStyle {
   int colour_frames = 4;     // frames each brush averages its colour over
   float underpaint = 0.8f;   // opacity of a blurred base coat inside the matte (0: none)
   float colour_jitter = 0.0f;  // per-brush random shift of the sampled colour: broken colour
+  // The medium (SPEC P3, P7): how paint meets the paper and the outline.
+  float edge_softness = 0.35f;  // share of a brush's side over which paint fades across the outline (0: a hard cut-out)
+  bool glaze = false;           // transparent paint that darkens what is under it (watercolour) instead of covering it
+  float wet_edges = 0.0f;       // pigment gathered where a wash ends: the outline and colour boundaries (0..1)
+  float granulation = 0.0f;     // pigment settled in the paper's valleys (0..1)
+  float glow = 0.0f;            // light the paint gives off around itself (neon; 0: none)
+  float glow_radius = 0.05f;    // how far the glow reaches, as a share of the picture's larger side
+  std::string ground;           // the backdrop the style is meant for ("#rrggbb", "paper", ...), when the user names none
   Palette palette;
   StrokeOrientation orientation;
   MotionSettings motion;

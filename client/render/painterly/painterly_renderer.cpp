@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "client/render/backdrop.hpp"
 #include "client/render/styles.hpp"
 
 namespace inkwire {
@@ -52,6 +53,8 @@ std::vector<ParamSpec> PainterlyRenderer::params() {
       int_param("ttl", "0", 0, 1000, "frames a lost brush searches before respawning; 0 takes the style's"),
       bool_param("randomise_ttl", "true", "spread respawns over frames (false: every lost brush gets the same time-to-live)"),
       float_param("underpaint", "-1", -1, 1, "opacity of the blurred base coat; -1 takes the style's"),
+      float_param("edge_softness", "-1", -1, 2, "share of a brush over which paint fades across the outline (0: a hard cut-out); -1 takes the style's"),
+      float_param("glow", "-1", -1, 4, "strength of the light the paint gives off around itself; -1 takes the style's"),
       int_param("settle", "30", 0, 1000, "simulation steps before the first frame, so a still image shows settled brushes"),
       int_param("seed", "1", 0, 1 << 30, "random seed of the brush field"),
   };
@@ -71,8 +74,12 @@ PaintStyle paint_style_from_params(const StyleParams& p) {
   if (const int ttl = p.get_int("ttl"); ttl > 0) style.motion.time_to_live = ttl;
   style.motion.randomise_ttl = p.get_bool("randomise_ttl");
   if (const float u = p.get_float("underpaint"); u >= 0) style.underpaint = u;
+  if (const float e = p.get_float("edge_softness"); e >= 0) style.edge_softness = e;
+  if (const float g = p.get_float("glow"); g >= 0) style.glow = g;
   return style;
 }
+
+std::string painterly_ground(const StyleParams& p) { return paint_style_from_params(p).ground; }
 
 std::map<std::string, std::string> painterly_settings_in_effect(const StyleParams& p) {
   const PaintStyle style = paint_style_from_params(p);
@@ -85,6 +92,8 @@ std::map<std::string, std::string> painterly_settings_in_effect(const StyleParam
   values["angle"] = number(style.orientation.angle_degrees);
   values["ttl"] = std::to_string(style.motion.time_to_live);
   values["underpaint"] = number(style.underpaint);
+  values["edge_softness"] = number(style.edge_softness);
+  values["glow"] = number(style.glow);
   return values;
 }
 
@@ -110,7 +119,8 @@ void PainterlyRenderer::prepare(const SceneObject& object) {
 
 void PainterlyRenderer::draw(const FrameState& frame) {
   const Image& reference = capture_.capture(frame);
-  painter_.paint(reference, capture_.rect(), /*underpaint=*/true, fresh_ ? settle_ : 0);
+  const bool opaque_ground = frame.backdrop && frame.backdrop->spec().kind != BackdropSpec::Kind::None;
+  painter_.paint(reference, capture_.rect(), /*underpaint=*/true, fresh_ ? settle_ : 0, opaque_ground);
   fresh_ = false;
 }
 

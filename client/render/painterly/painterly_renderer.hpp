@@ -35,5 +35,7 @@ class PainterlyRenderer final : public Renderer {
 PaintStyle paint_style_from_params(const StyleParams& params);
 // Every parameter's value as the painting uses it: "0 takes the style's" shows the style's.
 std::map<std::string, std::string> painterly_settings_in_effect(const StyleParams& params);
+// The backdrop the configured style file asks for (its "ground"), or "" for the style's default.
+std::string painterly_ground(const StyleParams& params);
 
 }  // namespace inkwire

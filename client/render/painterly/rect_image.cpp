@@ -8,7 +8,7 @@ using namespace gl;
 
 RectImage::RectImage() : program_(Program::from_files({"painterly/rect.vert", "painterly/rect.frag"})), empty_vao_(VertexArray::create()) {}
 
-void RectImage::draw(const Texture& image, const Texture& matte, PixelRect rect, bool premultiplied, float opacity) const {
+void RectImage::draw(const Texture& image, const Texture& matte, PixelRect rect, bool premultiplied, float opacity, Clip clip) const {
   GLint viewport[4];
   glGetIntegerv(GL_VIEWPORT, viewport);
   program_.use();
@@ -17,6 +17,7 @@ void RectImage::draw(const Texture& image, const Texture& matte, PixelRect rect,
   program_.set("image", 0);
   program_.set("matte", 1);
   program_.set("premultiplied", int(premultiplied));
+  program_.set("clip", int(clip));
   program_.set("opacity", opacity);
   image.bind(0);
   matte.bind(1);

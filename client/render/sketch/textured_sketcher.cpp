@@ -19,27 +19,6 @@ namespace {
 constexpr int kToothSize = 512;          // as the paper backdrop is generated
 constexpr float kPressurePeriod = 0.12f;  // pressure changes over about this share of the diagonal
 
-// The paper backdrop's own grain as a tooth map: luminance, centred on its mean and scaled by
-// its spread, so the raised fibres (lighter) are near 1 and the valleys near 0.
-Image paper_tooth() {
-  const Image paper = generate_paper(kToothSize);
-  std::vector<float> lum;
-  double sum = 0.0, squares = 0.0;
-  for (size_t i = 0; i < paper.pixels.size(); i += 4) {
-    lum.push_back(0.299f * paper.pixels[i] + 0.587f * paper.pixels[i + 1] + 0.114f * paper.pixels[i + 2]);
-    sum += lum.back();
-    squares += double(lum.back()) * lum.back();
-  }
-  const double mean = sum / double(lum.size()), spread = std::sqrt(std::max(squares / double(lum.size()) - mean * mean, 1e-6));
-  Image tooth(paper.width, paper.height);
-  for (size_t i = 0; i < lum.size(); ++i) {
-    const uint8_t t = uint8_t(std::clamp(0.5 + 0.22 * (lum[i] - mean) / spread, 0.0, 1.0) * 255.0 + 0.5);
-    tooth.pixels[4 * i] = tooth.pixels[4 * i + 1] = tooth.pixels[4 * i + 2] = t;
-    tooth.pixels[4 * i + 3] = 255;
-  }
-  return tooth;
-}
-
 glm::vec3 ink_of(Medium medium) {
   switch (medium) {
     case Medium::Charcoal: return {0.07f, 0.06f, 0.06f};
@@ -178,7 +157,7 @@ void TexturedSketcher::draw(const FrameState& frame) {
   HiddenLineRemoval::begin_lines(/*translucent=*/true);  // depth test on, writes off
   const glm::vec2 tooth_size{float(kToothSize), float(kToothSize)};
   const bool dry = grain_ > 0.0f || smudge_ > 0.0f;
-  if (dry && !tooth_) tooth_ = std::make_unique<Texture>(Texture::from_image(paper_tooth(), {.repeat = true, .mipmaps = false, .linear = false}));
+  if (dry && !tooth_) tooth_ = std::make_unique<Texture>(Texture::from_image(paper_tooth(kToothSize), {.repeat = true, .mipmaps = false, .linear = false}));
   if (smudge_ > 0.0f) {
     // Under the strokes: the rubbed tone lies on the surface, the lines over it.
     smudge_program_.use();
