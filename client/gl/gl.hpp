@@ -31,6 +31,7 @@
   X(PFNGLBLENDFUNCPROC, glBlendFunc)                                         \
   X(PFNGLBLENDFUNCSEPARATEPROC, glBlendFuncSeparate)                         \
   X(PFNGLLINEWIDTHPROC, glLineWidth)                                         \
+  X(PFNGLHINTPROC, glHint)                                                   \
   X(PFNGLPOLYGONMODEPROC, glPolygonMode)                                     \
   X(PFNGLPOLYGONOFFSETPROC, glPolygonOffset)                                 \
   X(PFNGLSTENCILFUNCPROC, glStencilFunc)                                     \

@@ -4,6 +4,18 @@ namespace inkwire {
 
 using namespace gl;
 
+void begin_smooth_lines() {
+  glEnable(GL_BLEND);
+  glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  glEnable(GL_LINE_SMOOTH);
+  glHint(GL_LINE_SMOOTH_HINT, GL_NICEST);
+}
+
+void end_smooth_lines() {
+  glDisable(GL_LINE_SMOOTH);
+  glDisable(GL_BLEND);
+}
+
 HiddenLineRemoval::HiddenLineRemoval()
     : depth_only_(Program::from_files({"common/depth_only.vert", "common/depth_only.frag"})) {}
 
@@ -35,20 +47,16 @@ void HiddenLineRemoval::end_surface_depth() {
   glDepthFunc(GL_LESS);
 }
 
-void HiddenLineRemoval::begin_lines(bool translucent) {
+void HiddenLineRemoval::begin_lines() {
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LEQUAL);
   glDepthMask(GL_FALSE);
   glDisable(GL_CULL_FACE);
-  if (translucent) {
-    glEnable(GL_BLEND);
-    // Alpha accumulates too, so strokes over a transparent backdrop stay visible.
-    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  }
+  begin_smooth_lines();
 }
 
 void HiddenLineRemoval::end_lines() {
-  glDisable(GL_BLEND);
+  end_smooth_lines();
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_LESS);
 }

@@ -9,6 +9,12 @@
 
 namespace inkwire {
 
+// Lines drawn between these blend by their pixel coverage (GL_LINE_SMOOTH), so they look smooth
+// without multisampling; alpha accumulates too, so ink over a transparent backdrop stays
+// visible. end_smooth_lines() leaves blending off.
+void begin_smooth_lines();
+void end_smooth_lines();
+
 class HiddenLineRemoval {
  public:
   HiddenLineRemoval();
@@ -19,9 +25,9 @@ class HiddenLineRemoval {
   // hatching): its depth then serves any lines drawn over it exactly as lay_depth()'s would.
   static void begin_surface_depth();
   static void end_surface_depth();
-  // Pass 2 state: colour writes on, depth test less-or-equal, depth writes off; with
-  // `translucent`, ink blends over what is there (strokes with alpha, faded edges, hatching).
-  static void begin_lines(bool translucent = false);
+  // Pass 2 state: colour writes on, depth test less-or-equal, depth writes off, ink blended
+  // over what is there by its alpha and lines by their coverage (begin_smooth_lines).
+  static void begin_lines();
   // Back to the usual state (depth writes on, depth test less, no blending).
   static void end_lines();
 

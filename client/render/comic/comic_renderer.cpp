@@ -6,6 +6,7 @@
 
 #include <glm/trigonometric.hpp>
 
+#include "client/render/hidden_lines.hpp"
 #include "common/error.hpp"
 
 namespace inkwire {
@@ -220,6 +221,7 @@ void ComicRenderer::draw_backface_outline(const FrameState& frame) {
   glDepthFunc(GL_LEQUAL);
   glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
   glLineWidth(outline_width_);
+  begin_smooth_lines();
   backface_outline_.use();
   backface_outline_.set("model_view_projection", frame.model_view_projection());
   backface_outline_.set("coloured", int(coloured_outline_));
@@ -229,6 +231,7 @@ void ComicRenderer::draw_backface_outline(const FrameState& frame) {
   mesh_->draw_all();
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   glLineWidth(1.0f);
+  end_smooth_lines();
   glCullFace(GL_BACK);
   glDepthFunc(GL_LESS);
 }
@@ -297,11 +300,13 @@ void ComicRenderer::draw_edge_outline(const FrameState& frame) {
   edge_outline_.use();
   edge_outline_.set("model_view_projection", frame.model_view_projection());
   edge_vao_.bind();
+  begin_smooth_lines();
   glLineWidth(outline_width_);
   glDrawArrays(GL_LINES, 0, GLsizei(silhouette));
   glLineWidth(std::max(1.0f, 0.5f * outline_width_));
   glDrawArrays(GL_LINES, GLsizei(silhouette), GLsizei(line_vertices_[0].size() - silhouette));
   glLineWidth(1.0f);
+  end_smooth_lines();
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_LESS);
 }

@@ -165,7 +165,7 @@ void HatchingRenderer::draw(const FrameState& frame) {
     glDisable(GL_BLEND);
   } else {
     hlr_.lay_depth(*mesh_, mvp);
-    HiddenLineRemoval::begin_lines(/*translucent=*/true);  // only the visible surface is hatched
+    HiddenLineRemoval::begin_lines();  // only the visible surface is hatched
   }
   glEnable(GL_CULL_FACE);
   glCullFace(GL_BACK);

@@ -154,7 +154,7 @@ void RecursiveSketcher::draw(const FrameState& frame) {
 
   const glm::mat4 mvp = frame.model_view_projection();
   hlr_.lay_depth(*mesh_, mvp);
-  HiddenLineRemoval::begin_lines(/*translucent=*/true);  // depth test on, writes off
+  HiddenLineRemoval::begin_lines();  // depth test on, writes off
   strokes_.use();
   strokes_.set("model_view_projection", mvp);
   strokes_.set("depth_bias", depth_bias_);

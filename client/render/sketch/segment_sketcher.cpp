@@ -118,7 +118,7 @@ void SegmentSketcher::draw(const FrameState& frame) {
 
   const glm::mat4 mvp = frame.model_view_projection();
   hlr_.lay_depth(*mesh_, mvp);
-  HiddenLineRemoval::begin_lines(/*translucent=*/true);  // depth test on, writes off
+  HiddenLineRemoval::begin_lines();  // depth test on, writes off
   program_.use();
   program_.set("model_view_projection", mvp);
   program_.set("depth_bias", depth_bias_);

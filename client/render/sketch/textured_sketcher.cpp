@@ -154,7 +154,7 @@ void TexturedSketcher::draw(const FrameState& frame) {
 
   const glm::mat4 mvp = frame.model_view_projection();
   hlr_.lay_depth(*mesh_, mvp);
-  HiddenLineRemoval::begin_lines(/*translucent=*/true);  // depth test on, writes off
+  HiddenLineRemoval::begin_lines();  // depth test on, writes off
   const glm::vec2 tooth_size{float(kToothSize), float(kToothSize)};
   const bool dry = grain_ > 0.0f || smudge_ > 0.0f;
   if (dry && !tooth_) tooth_ = std::make_unique<Texture>(Texture::from_image(paper_tooth(kToothSize), {.repeat = true, .mipmaps = false, .linear = false}));
