@@ -19,7 +19,14 @@ namespace {
 // A vertex counts as visible when it is no deeper than the nearest surface around its pixel
 // plus this fraction of the bounding-box diagonal (vertices on the silhouette see background).
 constexpr float kVisibilitySlack = 0.01f;
-constexpr int kOutlineReach = 24;  // pixels searched for the outline a vanished surface went through
+// Share of the image side searched for the outline a vanished surface went through (24 pixels
+// at 256: the same reach at every sample size).
+constexpr float kOutlineReach = 0.094f;
+// A hidden surface that faces a sample's camera by less than this many times the sine of the
+// cell's span (the angle between its samples) is taken as turning out of sight, like one that
+// faces away: a flank seen nearly edge-on, hidden behind the front's wider rim, has gone there
+// through the outline, not behind the rim's middle.
+constexpr float kGrazingSpans = 1.5f;
 
 float eye_depth(const Camera& c, float window_depth) {
   const float z = 2.0f * window_depth - 1.0f;
@@ -159,16 +166,25 @@ TweenCell exact_cell(const MeshSamples& samples, const SceneObject& object, cons
     halfway = sample_camera(samples.bounds, halfway_direction(samples.directions[cell[0]], samples.directions[cell[1]]),
                             samples.distance_diagonals);
   const glm::mat4 halfway_vp = view_projection(halfway);
-  // Which vertices lie on a face turned toward each sample's camera: a hidden vertex on none has
-  // turned out of sight (the far flank past its edge-on view) rather than gone behind another part.
-  std::vector<std::vector<bool>> faces_camera(cell.size(), std::vector<bool>(object.mesh.positions.size(), false));
+  // Which vertices lie on a face turned toward each sample's camera by more than a grazing angle:
+  // a hidden vertex on none has turned out of sight (the far flank past its edge-on view) rather
+  // than gone behind another part. `facing`: the cosine of its most squarely facing face.
+  std::vector<std::vector<float>> facing(cell.size(), std::vector<float>(object.mesh.positions.size(), -1.0f));
   for (size_t k = 0; k < cell.size(); ++k)
     for (size_t f = 0; f < object.mesh.triangles.size(); ++f) {
       const auto& t = object.mesh.triangles[f];
       const glm::vec3 centroid = (object.mesh.positions[t[0]] + object.mesh.positions[t[1]] + object.mesh.positions[t[2]]) / 3.0f;
-      if (glm::dot(object.topology.face_normals[f], samples.cameras[cell[k]].position - centroid) > 0.0f)
-        for (uint32_t i : t) faces_camera[k][i] = true;
+      const float c = glm::dot(object.topology.face_normals[f], glm::normalize(samples.cameras[cell[k]].position - centroid));
+      for (uint32_t i : t) facing[k][i] = std::max(facing[k][i], c);
     }
+  float span = 0.0f;
+  for (size_t i = 0; i < cell.size(); ++i)
+    for (size_t j = i + 1; j < cell.size(); ++j)
+      span = std::max(span, std::acos(std::clamp(glm::dot(glm::normalize(samples.directions[cell[i]]), glm::normalize(samples.directions[cell[j]])), -1.0f, 1.0f)));
+  const float grazing = kGrazingSpans * std::sin(span);
+  std::vector<std::vector<bool>> faces_camera(cell.size(), std::vector<bool>(object.mesh.positions.size(), false));
+  for (size_t k = 0; k < cell.size(); ++k)
+    for (size_t i = 0; i < facing[k].size(); ++i) faces_camera[k][i] = facing[k][i] > grazing;
   std::vector<ControlPoint> candidates;
   std::vector<glm::vec2> layout;  // where each candidate sits in the warp's triangulation
   std::vector<bool> on_outline;
@@ -211,7 +227,7 @@ TweenCell exact_cell(const MeshSamples& samples, const SceneObject& object, cons
     for (size_t k = 0; k < cell.size(); ++k) {
       glm::vec2& at = p[pair ? 2 * k : k];
       if (faces_camera[k][vi] || seen_in[k]) continue;
-      if (const auto edge = samples.nearest_outline(cell[k], pair ? p[1] : at, kOutlineReach)) at = *edge;
+      if (const auto edge = samples.nearest_outline(cell[k], pair ? p[1] : at, int(kOutlineReach * float(samples.size)))) at = *edge;
     }
     bool outline = false;
     for (size_t k = 0; k < cell.size() && !outline; ++k) outline = samples.near_background(cell[k], p[pair ? 2 * k : k]);
