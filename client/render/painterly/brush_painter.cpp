@@ -198,7 +198,7 @@ void BrushPainter::paint(const Image& reference, PixelRect rect, bool underpaint
   const bool soft = style_.edge_softness > 0.0f, glaze = style_.glaze && opaque_ground;
   // The medium is needed for soft edges and for wet edges; its soft matte reaches as far as a
   // share of a brush beyond the outline.
-  if (soft || style_.wet_edges > 0.0f) medium_.update(wash_map(reference, std::max(1.0f, style_.edge_softness * side_)));
+  if (soft || style_.wet_edges > 0.0f) medium_.update(wash_mapper_.make(reference, std::max(1.0f, style_.edge_softness * side_), style_.wet_edges > 0.0f));
   if (style_.granulation > 0.0f && !tooth_)
     tooth_.emplace(Texture::from_image(paper_tooth(kToothSize), {.repeat = true, .mipmaps = false, .linear = false}));
 

@@ -16,6 +16,7 @@
 #include "client/render/painterly/paint_style.hpp"
 #include "client/render/painterly/rect_image.hpp"
 #include "client/render/painterly/reference_capture.hpp"
+#include "client/render/painterly/wash_map.hpp"
 
 namespace inkwire {
 
@@ -70,6 +71,7 @@ class BrushPainter {
 
   std::map<int, gl::Program> brush_programs_;  // by soft edges and glaze
   gl::Texture shapes_, matte_, coarse_, medium_, glow_;
+  WashMapper wash_mapper_;
   std::optional<gl::Texture> tooth_;  // the paper's grain, made when a style granulates
   gl::Buffer instance_buffer_;
   gl::VertexArray brush_vao_;

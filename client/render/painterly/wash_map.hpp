@@ -12,11 +12,22 @@
 
 namespace inkwire {
 
-// `reference`'s alpha is the object's matte (>= 128 on the object).
-Image wash_map(const Image& reference, float soft_radius);
+// Made every frame, so its buffers are kept from one picture to the next (a fresh 600 KB buffer
+// costs its page faults each time).
+class WashMapper {
+ public:
+  // `reference`'s alpha is the object's matte (>= 128 on the object). Green is left 0 unless
+  // `wet_edges` asks for it (it is most of the work). The image stays until the next call.
+  const Image& make(const Image& reference, float soft_radius, bool wet_edges);
+
+ private:
+  std::vector<float> matte_, soft_, scratch_;
+  Image out_;
+};
 
 // Box blur of a `width` x `height` plane over (2 `radius` + 1) pixels, twice (a tent: smooth
-// enough for a feather), counting what lies beyond the plane as 0.
+// enough for a feather), counting what lies beyond the plane as 0. `scratch` is resized to fit.
+void blur_plane(std::vector<float>& plane, int width, int height, int radius, std::vector<float>& scratch);
 void blur_plane(std::vector<float>& plane, int width, int height, int radius);
 
 }  // namespace inkwire
