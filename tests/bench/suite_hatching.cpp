@@ -18,11 +18,13 @@ std::vector<Result> run_hatching_suite(Harness& harness) {
     std::vector<uint8_t> front;
     const double front_faces = double(classify_faces(object.object.mesh, object.object.topology, eye, front));
     double default_fps = 0.0;
-    // Rows: the default renderer; each variant; the threshold image turned off the pixel grid,
-    // where it is filtered (unturned, a texel is a pixel and the nearest texel is exact).
+    // Rows: the default renderer; each variant (as a user picks it: with its pencil outline); the
+    // tones alone, without the outline; the threshold image turned off the pixel grid, where it
+    // is filtered (unturned, a texel is a pixel and the nearest texel is exact).
     const std::vector<std::pair<std::string, std::vector<std::string>>> rows = {
         {"", {}},
         {"threshold", {"variant=threshold"}},
+        {"threshold,outline=none", {"variant=threshold", "outline=none"}},
         {"threshold,angle=30", {"variant=threshold", "angle=30"}},
         {"3d-texture", {"variant=3d-texture"}},
         {"multipass", {"variant=multipass"}}};

@@ -144,6 +144,11 @@ std::vector<Result> run_painterly_suite(Harness& harness) {
     results.push_back(timed(harness, *painter, middle, frames, "painterly", "brushes=" + std::to_string(brushes), base.fps_median));
     std::fprintf(stderr, "inkwire-bench: painterly %d brushes done\n", brushes);
   }
+  // Every shipped look at its own brush count: what a medium's glazes, wet edges and glow cost.
+  for (const std::string style : {"impressionist", "pointillist", "watercolour", "neon", "sepia-study"}) {
+    auto painter = make_renderer("painterly", {"style=" + style});
+    results.push_back(timed(harness, *painter, middle, frames, "painterly", "style=" + style, base.fps_median));
+  }
   auto oil = make_renderer("oil-filter");
   results.push_back(timed(harness, *oil, middle, std::min(frames, 50), "oil-filter", "radius=5", base.fps_median));
 
