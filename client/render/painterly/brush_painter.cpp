@@ -133,11 +133,14 @@ float BrushPainter::target_angle(size_t index, const Brush& brush, const Image& 
 }
 
 const Program& BrushPainter::brush_program(bool soft, bool glaze) {
-  const int key = int(soft) | int(glaze) << 1;
+  const bool wet = style_.wet_edges > 0.0f, grain = style_.granulation > 0.0f && tooth_;
+  const int key = int(soft) | int(wet) << 1 | int(grain) << 2 | int(glaze) << 3;
   auto it = brush_programs_.find(key);
   if (it != brush_programs_.end()) return it->second;
   std::vector<std::string> defines;
   if (soft) defines.push_back("SOFT_EDGES 1");
+  if (wet) defines.push_back("WET_EDGES 1");
+  if (grain) defines.push_back("GRANULATION 1");
   if (glaze) defines.push_back("GLAZE 1");
   return brush_programs_.emplace(key, Program::from_files({"painterly/brush.vert", "painterly/brush.frag"}, defines)).first->second;
 }
@@ -177,9 +180,13 @@ void BrushPainter::lay_matte(const Image& reference, PixelRect rect, bool underp
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   if (underpaint && style_.underpaint > 0.0f) {
     draw_underpaint(reference, rect);
-  } else if (style_.edge_softness <= 0.0f) {
+  } else {
+    // The stencil alone: the object, or with soft edges as far as paint fades beyond it (no
+    // brush fragment further out is shaded).
+    const bool soft = style_.edge_softness > 0.0f;
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    rect_image_.draw(matte_, matte_, rect, /*premultiplied=*/false, 1.0f);
+    rect_image_.draw(soft ? medium_ : matte_, soft ? medium_ : matte_, rect, /*premultiplied=*/false, 1.0f,
+                     soft ? RectImage::Clip::Soft : RectImage::Clip::Hard);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   }
   glStencilFunc(GL_EQUAL, 1, 0xff);
@@ -213,8 +220,6 @@ void BrushPainter::paint(const Image& reference, PixelRect rect, bool underpaint
   // Alpha accumulates as "covered" so a transparent backdrop ends up opaque under paint.
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   lay_matte(reference, rect, underpaint);
-  // Soft edges fade by the medium instead of cutting by the stencil.
-  if (soft) glDisable(GL_STENCIL_TEST);
 
   const glm::vec2 origin(rect.x, rect.y), size(rect.width, rect.height);
   std::vector<Brush>& brushes = field_->brushes();

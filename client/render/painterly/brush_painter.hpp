@@ -57,9 +57,10 @@ class BrushPainter {
   void draw_underpaint(const Image& reference, PixelRect rect);
   void draw_glow(const Image& reference, PixelRect rect);
   const gl::Program& brush_program(bool soft, bool glaze);
-  // Writes the matte into the stencil (1 on the object) as the base coat is laid, or alone
-  // without one, and leaves the stencil test passing only there: brushes then stay on the
-  // object without each fragment reading the matte.
+  // Writes the matte into the stencil (1 on the object, or with soft edges as far as paint may
+  // fade beyond it) as the base coat is laid, or alone without one, and leaves the stencil test
+  // passing only there: brushes then stay on the object without each fragment reading the
+  // matte, and fragments beyond a soft edge's reach are never shaded.
   void lay_matte(const Image& reference, PixelRect rect, bool underpaint);
 
   PaintStyle style_;
@@ -69,7 +70,7 @@ class BrushPainter {
   std::vector<Instance> instances_;
   float side_ = 1.0f;
 
-  std::map<int, gl::Program> brush_programs_;  // by soft edges and glaze
+  std::map<int, gl::Program> brush_programs_;  // by the effects compiled in
   gl::Texture shapes_, matte_, coarse_, medium_, glow_;
   WashMapper wash_mapper_;
   std::optional<gl::Texture> tooth_;  // the paper's grain, made when a style granulates
