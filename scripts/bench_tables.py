@@ -3,11 +3,13 @@
 
     scripts/bench_tables.py bench.json [more.json ...]
 
-Rows are renderer/variant, columns the LOD objects; cells are "median fps (rel_default)".
+Rows are renderer/variant, columns the LOD objects; cells are "median fps (rel_default)". A
+cell measured in several files (runs of the same build) shows the median of each over the runs.
 Counters named with --counter (default front_faces) get a table of their own.
 """
 import argparse
 import json
+import statistics
 import sys
 
 
@@ -31,7 +33,12 @@ def main() -> int:
         objects = list(dict.fromkeys(r["object"] for r in rows))
         faces = {r["object"]: r["faces"] for r in rows}
         configs = list(dict.fromkeys((r["renderer"], r["variant"]) for r in rows))
-        cell = {(r["renderer"], r["variant"], r["object"]): r for r in rows}
+        runs = {}
+        for r in rows:
+            runs.setdefault((r["renderer"], r["variant"], r["object"]), []).append(r)
+        cell = {key: dict(rs[-1], fps_median=statistics.median(r["fps_median"] for r in rs),
+                          rel_default=statistics.median(r["rel_default"] for r in rs))
+                for key, rs in runs.items()}
         print(f"### {suite}: median fps (relative to default)\n")
         print("| renderer / variant | " + " | ".join(f"{o} ({faces[o]})" for o in objects) + " |")
         print("|---|" + "---|" * len(objects))
