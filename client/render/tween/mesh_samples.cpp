@@ -64,6 +64,31 @@ Image draw_view(Renderer& renderer, SampleCanvases& canvases, const Camera& came
   return image;
 }
 
+// Per sample of `cell` and per vertex, the cosine of the angle between the sample's camera and
+// the vertex's most squarely facing face (-1 for a vertex on no face).
+std::vector<std::vector<float>> facing_cosines(const MeshSamples& samples, const SceneObject& object, const std::vector<uint16_t>& cell) {
+  std::vector<std::vector<float>> facing(cell.size(), std::vector<float>(object.mesh.positions.size(), -1.0f));
+  for (size_t k = 0; k < cell.size(); ++k)
+    for (size_t f = 0; f < object.mesh.triangles.size(); ++f) {
+      const auto& t = object.mesh.triangles[f];
+      const glm::vec3 centroid = (object.mesh.positions[t[0]] + object.mesh.positions[t[1]] + object.mesh.positions[t[2]]) / 3.0f;
+      const float c = glm::dot(object.topology.face_normals[f], glm::normalize(samples.cameras[cell[k]].position - centroid));
+      for (uint32_t i : t) facing[k][i] = std::max(facing[k][i], c);
+    }
+  return facing;
+}
+
+// The largest angle between two of the cell's sample directions (radians).
+float cell_span(const MeshSamples& samples, const std::vector<uint16_t>& cell) {
+  float span = 0.0f;
+  for (size_t i = 0; i < cell.size(); ++i)
+    for (size_t j = i + 1; j < cell.size(); ++j) {
+      const float c = glm::dot(glm::normalize(samples.directions[cell[i]]), glm::normalize(samples.directions[cell[j]]));
+      span = std::max(span, std::acos(std::clamp(c, -1.0f, 1.0f)));
+    }
+  return span;
+}
+
 }  // namespace
 
 glm::vec3 MeshSamples::project(int index, const glm::vec3& point) const {
@@ -166,25 +191,11 @@ TweenCell exact_cell(const MeshSamples& samples, const SceneObject& object, cons
     halfway = sample_camera(samples.bounds, halfway_direction(samples.directions[cell[0]], samples.directions[cell[1]]),
                             samples.distance_diagonals);
   const glm::mat4 halfway_vp = view_projection(halfway);
-  // Which vertices lie on a face turned toward each sample's camera by more than a grazing angle:
-  // a hidden vertex on none has turned out of sight (the far flank past its edge-on view) rather
-  // than gone behind another part. `facing`: the cosine of its most squarely facing face.
-  std::vector<std::vector<float>> facing(cell.size(), std::vector<float>(object.mesh.positions.size(), -1.0f));
-  for (size_t k = 0; k < cell.size(); ++k)
-    for (size_t f = 0; f < object.mesh.triangles.size(); ++f) {
-      const auto& t = object.mesh.triangles[f];
-      const glm::vec3 centroid = (object.mesh.positions[t[0]] + object.mesh.positions[t[1]] + object.mesh.positions[t[2]]) / 3.0f;
-      const float c = glm::dot(object.topology.face_normals[f], glm::normalize(samples.cameras[cell[k]].position - centroid));
-      for (uint32_t i : t) facing[k][i] = std::max(facing[k][i], c);
-    }
-  float span = 0.0f;
-  for (size_t i = 0; i < cell.size(); ++i)
-    for (size_t j = i + 1; j < cell.size(); ++j)
-      span = std::max(span, std::acos(std::clamp(glm::dot(glm::normalize(samples.directions[cell[i]]), glm::normalize(samples.directions[cell[j]])), -1.0f, 1.0f)));
-  const float grazing = kGrazingSpans * std::sin(span);
-  std::vector<std::vector<bool>> faces_camera(cell.size(), std::vector<bool>(object.mesh.positions.size(), false));
-  for (size_t k = 0; k < cell.size(); ++k)
-    for (size_t i = 0; i < facing[k].size(); ++i) faces_camera[k][i] = facing[k][i] > grazing;
+  // A hidden vertex none of whose faces meets a sample's camera more squarely than a grazing
+  // angle has turned out of sight there (the far flank past its edge-on view) rather than gone
+  // behind another part.
+  const std::vector<std::vector<float>> facing = facing_cosines(samples, object, cell);
+  const float grazing = kGrazingSpans * std::sin(cell_span(samples, cell));
   std::vector<ControlPoint> candidates;
   std::vector<glm::vec2> layout;  // where each candidate sits in the warp's triangulation
   std::vector<bool> on_outline;
@@ -226,7 +237,7 @@ TweenCell exact_cell(const MeshSamples& samples, const SceneObject& object, cons
     // k's inside out over the background where the other sample still sees the flank.
     for (size_t k = 0; k < cell.size(); ++k) {
       glm::vec2& at = p[pair ? 2 * k : k];
-      if (faces_camera[k][vi] || seen_in[k]) continue;
+      if (facing[k][vi] > grazing || seen_in[k]) continue;
       if (const auto edge = samples.nearest_outline(cell[k], pair ? p[1] : at, int(kOutlineReach * float(samples.size)))) at = *edge;
     }
     bool outline = false;
