@@ -48,7 +48,7 @@ void HiddenLineRenderer::draw(const FrameState& frame) {
     }
   }
   const glm::mat4 mvp = frame.model_view_projection();
-  hlr_.lay_depth(*mesh_, mvp);
+  hlr_.lay_depth(*mesh_, frame);
 
   HiddenLineRemoval::begin_lines();
   line_buffer_.upload(line_points_.size() * sizeof(glm::vec3), line_points_.data());

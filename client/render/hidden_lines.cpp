@@ -19,11 +19,12 @@ void end_smooth_lines() {
 HiddenLineRemoval::HiddenLineRemoval()
     : depth_only_(Program::from_files({"common/depth_only.vert", "common/depth_only.frag"})) {}
 
-void HiddenLineRemoval::lay_depth(const GpuMesh& mesh, const glm::mat4& mvp) const {
+void HiddenLineRemoval::lay_depth(const GpuMesh& mesh, const FrameState& frame) const {
+  if (frame.depth_laid) return;
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   begin_surface_depth();
   depth_only_.use();
-  depth_only_.set("model_view_projection", mvp);
+  depth_only_.set("model_view_projection", frame.model_view_projection());
   mesh.bind();
   mesh.draw_all();
   end_surface_depth();

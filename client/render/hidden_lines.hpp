@@ -6,6 +6,7 @@
 
 #include "client/gl/resources.hpp"
 #include "client/render/gpu_mesh.hpp"
+#include "client/render/renderer.hpp"
 
 namespace inkwire {
 
@@ -18,9 +19,10 @@ void end_smooth_lines();
 class HiddenLineRemoval {
  public:
   HiddenLineRemoval();
-  // Pass 1 for one object. The depth is pushed back slightly (polygon offset) so lines lying on
-  // the surface win the less-or-equal test instead of stitching with it.
-  void lay_depth(const GpuMesh& mesh, const glm::mat4& model_view_projection) const;
+  // Pass 1 for one object, unless the frame says its depth is laid already. The depth is pushed
+  // back slightly (polygon offset) so lines lying on the surface win the less-or-equal test
+  // instead of stitching with it.
+  void lay_depth(const GpuMesh& mesh, const FrameState& frame) const;
   // Pass 1's depth state for a surface that is drawn in colour at the same time (opaque
   // hatching): its depth then serves any lines drawn over it exactly as lay_depth()'s would.
   static void begin_surface_depth();

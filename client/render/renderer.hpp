@@ -31,6 +31,10 @@ struct FrameState {
   // renderers with see-through surfaces (hatching) then draw it under their ink in one opaque
   // pass. Null: unknown, so they lay depth first and blend over whatever is there.
   const Backdrop* backdrop = nullptr;
+  // The object's depth is in the depth buffer already, laid as hidden-line removal lays it (a
+  // renderer drawing lines over its own opaque surface says so), so line renderers skip their
+  // depth pass.
+  bool depth_laid = false;
 
   glm::mat4 view() const { return camera.view(); }
   glm::mat4 projection() const { return camera.projection(float(viewport.x) / float(viewport.y)); }

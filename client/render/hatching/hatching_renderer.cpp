@@ -164,7 +164,7 @@ void HatchingRenderer::draw(const FrameState& frame) {
     HiddenLineRemoval::begin_surface_depth();
     glDisable(GL_BLEND);
   } else {
-    hlr_.lay_depth(*mesh_, mvp);
+    hlr_.lay_depth(*mesh_, frame);
     HiddenLineRemoval::begin_lines();  // only the visible surface is hatched
   }
   glEnable(GL_CULL_FACE);
@@ -208,7 +208,11 @@ void HatchingRenderer::draw(const FrameState& frame) {
   } else {
     HiddenLineRemoval::end_lines();
   }
-  if (outline_) outline_->draw(frame);
+  if (!outline_) return;
+  // Over the opaque surface, whose depth was laid as the outline's own pass would lay it.
+  FrameState over = frame;
+  over.depth_laid = opaque_;
+  outline_->draw(over);
 }
 
 std::map<std::string, double> HatchingRenderer::counters() const {

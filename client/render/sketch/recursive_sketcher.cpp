@@ -153,7 +153,7 @@ void RecursiveSketcher::draw(const FrameState& frame) {
   if (sets_[size_t(set)].generation != generation_) build_set(set, frame);
 
   const glm::mat4 mvp = frame.model_view_projection();
-  hlr_.lay_depth(*mesh_, mvp);
+  hlr_.lay_depth(*mesh_, frame);
   HiddenLineRemoval::begin_lines();  // depth test on, writes off
   strokes_.use();
   strokes_.set("model_view_projection", mvp);

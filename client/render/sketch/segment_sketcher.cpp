@@ -117,7 +117,7 @@ void SegmentSketcher::draw(const FrameState& frame) {
   edge_buffer_.upload(packed_.size() * sizeof(EdgeTransform), packed_.data());
 
   const glm::mat4 mvp = frame.model_view_projection();
-  hlr_.lay_depth(*mesh_, mvp);
+  hlr_.lay_depth(*mesh_, frame);
   HiddenLineRemoval::begin_lines();  // depth test on, writes off
   program_.use();
   program_.set("model_view_projection", mvp);

@@ -153,7 +153,7 @@ void TexturedSketcher::draw(const FrameState& frame) {
   vertices_.upload(quads_.size() * sizeof(Vertex), quads_.data());
 
   const glm::mat4 mvp = frame.model_view_projection();
-  hlr_.lay_depth(*mesh_, mvp);
+  hlr_.lay_depth(*mesh_, frame);
   HiddenLineRemoval::begin_lines();  // depth test on, writes off
   const glm::vec2 tooth_size{float(kToothSize), float(kToothSize)};
   const bool dry = grain_ > 0.0f || smudge_ > 0.0f;
