@@ -59,6 +59,9 @@ class Renderer {
   virtual void draw(const FrameState& frame) = 0;
   // Figures about the last frame (e.g. "front_faces", "edges_drawn"), for benchmarks and tests.
   virtual std::map<std::string, double> counters() const { return {}; }
+  // True when the last draw left the object's depth laid as hidden-line removal lays it (an
+  // opaque surface drawn that way), so lines drawn next over it need no depth pass of their own.
+  virtual bool left_line_depth() const { return false; }
 };
 
 }  // namespace inkwire

@@ -93,7 +93,15 @@ class CompositeRenderer final : public Renderer {
     for (auto& p : parts_) p->prepare(object);
   }
   void draw(const FrameState& frame) override {
-    for (auto& p : parts_) p->draw(frame);
+    FrameState part = frame;
+    for (auto& p : parts_) {
+      p->draw(part);
+      // Lines after an opaque surface that laid the depth (hatching, then strokes) skip theirs.
+      part.depth_laid = part.depth_laid || p->left_line_depth();
+    }
+  }
+  bool left_line_depth() const override {
+    return std::any_of(parts_.begin(), parts_.end(), [](const auto& p) { return p->left_line_depth(); });
   }
   std::map<std::string, double> counters() const override {
     std::map<std::string, double> all;

@@ -211,7 +211,7 @@ void HatchingRenderer::draw(const FrameState& frame) {
   if (!outline_) return;
   // Over the opaque surface, whose depth was laid as the outline's own pass would lay it.
   FrameState over = frame;
-  over.depth_laid = opaque_;
+  over.depth_laid = over.depth_laid || left_line_depth();
   outline_->draw(over);
 }
 

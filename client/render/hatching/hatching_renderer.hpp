@@ -41,6 +41,7 @@ class HatchingRenderer final : public Renderer {
   void configure(const StyleParams& params) override;
   void prepare(const SceneObject& object) override;
   void draw(const FrameState& frame) override;
+  bool left_line_depth() const override { return opaque_; }
   std::map<std::string, double> counters() const override;
 
  private:
