@@ -40,7 +40,7 @@ TEST(BackdropGLTest, PaperFileLiesOneTexelPerPixelWhateverItsShape) {
       p[0] = uint8_t(40 * x), p[1] = uint8_t(60 * y), p[2] = 99, p[3] = 255;
       texels.insert(uint32_t(p[0]) << 8 | p[1]);
     }
-  const std::filesystem::path file = std::filesystem::temp_directory_path() / "inkwire-paper-6x4.png";
+  const std::filesystem::path file = test::scratch_dir() / "paper-6x4.png";
   save_image(paper, file);
   Canvas canvas(48, 32);
   canvas.bind();

@@ -119,7 +119,7 @@ std::vector<double> fine_detail(const Image& picture, const Image& mask) {
 
 // The shipped watercolour style with some keys replaced, as a style file of its own.
 std::string watercolour_with(const std::string& replacements) {
-  const std::filesystem::path file = std::filesystem::path(INKWIRE_TEST_OUTPUT_DIR) / ("watercolour-" + std::to_string(std::hash<std::string>{}(replacements)) + ".json");
+  const std::filesystem::path file = test::scratch_dir() / ("watercolour-" + std::to_string(std::hash<std::string>{}(replacements)) + ".json");
   std::ofstream(file) << R"({"name": "watercolour variant", "brushes": 260, "shapes": ["wash"], "coverage": 0.99, "opacity": 0.5,
     "underpaint": 0.3, "blend": "glaze", "edge_softness": 0.45, "palette": {"kind": "natural", "saturation": 0.85},
     "orientation": {"kind": "circular"}, )" << replacements << "}";

@@ -27,8 +27,7 @@ std::string refusal(const std::string& json) {
 }  // namespace
 
 TEST(LandmarksFileTest, RoundTripsThroughAFile) {
-  const fs::path file = fs::path(INKWIRE_TEST_OUTPUT_DIR) / "landmarks-file-test.json";
-  fs::create_directories(file.parent_path());
+  const fs::path file = test::scratch_dir() / "landmarks-file-test.json";
   save_landmarks(file, some_landmarks());
   const FaceLandmarks back = load_landmarks(file);
   for (size_t i = 0; i < back.size(); ++i) {
@@ -55,8 +54,8 @@ TEST(LandmarksFileTest, MalformedFilesAreRefusedWithAReason) {
   huge.replace(huge.find("[[") + 2, 6, "1e30");
   EXPECT_NE(refusal(huge).find("out of range"), std::string::npos) << refusal(huge);
 
-  const fs::path big = fs::path(INKWIRE_TEST_OUTPUT_DIR) / "landmarks-file-too-big.json";
+  const fs::path big = test::scratch_dir() / "landmarks-file-too-big.json";
   std::ofstream(big) << std::string(100000, ' ') << good;
   EXPECT_THROW(load_landmarks(big), Error);
-  EXPECT_THROW(load_landmarks(fs::path(INKWIRE_TEST_OUTPUT_DIR) / "no-such-landmarks.json"), Error);
+  EXPECT_THROW(load_landmarks(test::scratch_dir() / "no-such-landmarks.json"), Error);
 }

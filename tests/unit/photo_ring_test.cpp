@@ -54,7 +54,7 @@ std::string calibration_line(const std::string& name, const RingCamera& c) {
 
 // A ring folder with `lines` as its calibration (after the count) and an image file per name.
 std::filesystem::path ring_folder(const std::string& name, int count, const std::string& lines) {
-  const std::filesystem::path folder = std::filesystem::path(INKWIRE_TEST_OUTPUT_DIR) / "tmp" / name;
+  const std::filesystem::path folder = test::scratch_dir() / name;
   std::filesystem::remove_all(folder);
   std::filesystem::create_directories(folder);
   std::ofstream(folder / "ring_par.txt") << count << '\n' << lines;

@@ -26,7 +26,7 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::path(INKWIRE_TEST_OUTPUT_DIR) / "tmp" / name;
+  const fs::path dir = test::scratch_dir() / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

@@ -1,5 +1,4 @@
 // The server's JSON config: conference sessions' face sources, and refusals with reasons.
-#include <fstream>
 
 #include <gtest/gtest.h>
 
@@ -16,10 +15,7 @@ namespace fs = std::filesystem;
 namespace {
 
 ServerConfig load_text(const std::string& json) {
-  const fs::path file = fs::path(INKWIRE_TEST_OUTPUT_DIR) / "server-config-test.json";
-  fs::create_directories(file.parent_path());
-  std::ofstream(file) << json;
-  return ServerConfig::load(file);
+  return ServerConfig::load(test::write_temp("server-config.json", json));
 }
 
 std::string refusal(const std::string& json) {

@@ -15,10 +15,21 @@ namespace inkwire::test {
 inline std::filesystem::path cgal_mesh(const std::string& name) { return std::filesystem::path(INKWIRE_MESH_DIR) / name; }
 inline const std::filesystem::path kAssimpModels = "/usr/share/assimp/models";
 
-// Writes `text` to a fresh file in the test output folder and returns its path.
-inline std::filesystem::path write_temp(const std::string& name, const std::string& text) {
-  const std::filesystem::path dir = std::filesystem::path(INKWIRE_TEST_OUTPUT_DIR) / "tmp";
+// A folder of the running test's own in the test output folder: ctest runs each test as its
+// own process, several at once, so files two tests name alike must not meet.
+inline std::filesystem::path scratch_dir() {
+  const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::string name = test ? std::string(test->test_suite_name()) + "." + test->name() : "outside-a-test";
+  for (char& c : name)
+    if (c == '/') c = '_';  // parameterised tests are named Prefix/Suite.Test/param
+  const std::filesystem::path dir = std::filesystem::path(INKWIRE_TEST_OUTPUT_DIR) / "tmp" / name;
   std::filesystem::create_directories(dir);
+  return dir;
+}
+
+// Writes `text` to a fresh file in the running test's scratch folder and returns its path.
+inline std::filesystem::path write_temp(const std::string& name, const std::string& text) {
+  const std::filesystem::path dir = scratch_dir();
   std::ofstream(dir / name, std::ios::binary) << text;
   return dir / name;
 }

@@ -12,7 +12,7 @@ using namespace inkwire;
 namespace {
 
 std::filesystem::path write_sequence(const std::string& name, int frames) {
-  const auto dir = std::filesystem::path(INKWIRE_TEST_OUTPUT_DIR) / "tmp" / name;
+  const auto dir = test::scratch_dir() / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   for (int i = 0; i < frames; ++i) {
@@ -55,7 +55,7 @@ TEST(VideoSourceTest, BadSourcesAreRefusedWithAReason) {
   EXPECT_THROW(VideoSource("/no/such/video.mp4"), Error);
   EXPECT_THROW(VideoSource("camera:x"), Error);
   EXPECT_THROW(VideoSource("camera:97"), Error) << "no such device here";
-  const auto empty = std::filesystem::path(INKWIRE_TEST_OUTPUT_DIR) / "tmp" / "empty-folder";
+  const auto empty = test::scratch_dir() / "empty-folder";
   std::filesystem::create_directories(empty);
   EXPECT_THROW(VideoSource(empty.string()), Error);
   const auto junk = test::write_temp("junk.mp4", "this is not a video");
