@@ -30,9 +30,8 @@ Image midway_view(TweenRenderer& tween, const std::string& compose, const FrameS
 
 TEST(TurntableGLTest, MidwayViewsOfAMeshProductShowOneOutline) {
   test::offscreen_context();
-  // The textured duck of assimp-testmodels, a product-like object. (The truck and the cow lose
-  // IoU at their front and back views, where a part turns out from behind another and the warp's
-  // folds do not know which is in front: docs/benchmarks.md, turntable.)
+  // The textured duck of assimp-testmodels, a product-like object. (The truck's hardest views,
+  // near head-on, have a test of their own below.)
   const std::filesystem::path duck_file = "/usr/share/assimp/models/Collada/duck.dae";
   INKWIRE_REQUIRE_FILE(duck_file);
   const SceneObject duck = load_scene_object(duck_file);
@@ -71,6 +70,37 @@ TEST(TurntableGLTest, MidwayViewsOfAMeshProductShowOneOutline) {
   EXPECT_LT(ghost_max[0], ghost_max[1]);
   // One outline costs nothing in fidelity.
   EXPECT_GT(psnr_sum[0], psnr_sum[1] - 0.5 * views);
+}
+
+TEST(TurntableGLTest, TheTrucksMirrorsStandFreeOfTheCabNearHeadOn) {
+  test::offscreen_context();
+  // The hardest views of the benchmark's product (24 samples at 512 px, as a shop would make
+  // it): within 15 degrees of head-on the side mirrors stand free of the cab with background
+  // between, while the neighbouring sample sees the cab's flank right behind each mirror. A warp
+  // maps that gap to flank pixels of that sample; the composed matte must still call it
+  // background where the nearer sample does (it did not: 0.966 at 83 degrees).
+  const std::filesystem::path truck_file = test::kAssimpModels / "glTF/CesiumMilkTruck/CesiumMilkTruck.gltf";
+  INKWIRE_REQUIRE_FILE(truck_file);
+  const SceneObject truck = load_scene_object(truck_file);
+  const int size = 512;
+  Canvas canvas(size, size);
+  TweenRenderer tween;
+  StyleParams params(TweenRenderer::params());
+  params.set("sample_size", std::to_string(size));
+  tween.configure(params);
+  tween.prepare(truck);
+  double iou_min = 1.0;
+  for (float az = 76.0f; az <= 104.0f; az += 2.0f) {
+    if (az == 90.0f) continue;  // a sample's own view
+    const FrameState frame = test::view_of(truck, canvas, az, 0.0f, 1.4f);
+    const Image truth = render_mesh_view(truck, frame.camera.position - truck.topology.bounds.centre(), size, 1.4f);
+    canvas.bind();
+    tween.draw(frame);
+    const double iou = matte_iou(tween.last_view(), truth);
+    std::printf("azimuth %5.1f: IoU %.4f\n", az, iou);
+    iou_min = std::min(iou_min, iou);
+  }
+  EXPECT_GE(iou_min, 0.97);
 }
 
 TEST(TurntableGLTest, AProductArrivingPieceByPieceShowsTheNearestPhotoUntilItsCellIsThere) {

@@ -2,8 +2,10 @@
 // client/shaders/tween/blend.frag for WebGL2. Without MATTE: the weighted sum of the samples'
 // (premultiplied) colours. With MATTE, composing by mattes: the samples are
 // matte textures (matte_sample.js): colour bled past the outline, alpha the signed distance to
-// the sample's outline. The view's outline is where the weighted distances cross zero; the
-// colour comes from the samples that see the object at the pixel. Premultiplied output.
+// the sample's outline. The view's outline is where the weighted distances cross zero, a
+// sample's say that a pixel is object counting at most INSIDE_SAY pixels deep (so the pixel is
+// object where the samples agree it is); the colour comes from the samples that see the object
+// at the pixel. Premultiplied output.
 // Samplers are indexed by constants only (GLSL ES 3.00), so the samples are unrolled.
 precision highp float;
 in vec2 uv0;
@@ -16,12 +18,13 @@ uniform vec3 weights;
 out vec4 colour;
 
 #ifdef MATTE
+const float INSIDE_SAY = 2.0;
 float distance_sum = 0.0, total = 0.0;
 vec3 rgb = vec3(0.0);
 
 void add(vec4 texel, float weight) {
   float d = (texel.a - 0.5) * (2.0 * MATTE_RANGE);
-  distance_sum += weight * d;
+  distance_sum += weight * min(d, INSIDE_SAY);
   float w = weight * (0.01 + clamp(d + 0.5, 0.0, 1.0));
   rgb += w * texel.rgb;
   total += w;
