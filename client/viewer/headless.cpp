@@ -24,13 +24,16 @@ int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& 
   std::ofstream log;
   if (!o.frame_log.empty()) log.open(o.frame_log);
   const auto period = std::chrono::microseconds(1000000 / std::max(o.fps, 1));
-  // A product's photos come one per poll; the tween data with the first of them.
-  while (o.wait_for_product) {
+  // A product's photos come one at a time (the tween data with the first of them): the first
+  // frame waits for the photo nearest its view, or for all of them when asked to.
+  sync.view().orbit().azimuth = o.azimuth;
+  sync.view().orbit().elevation = o.elevation;
+  for (;;) {
     const bool changed = sync.poll();
     const TurntableView* product = sync.view().turntable();
-    if (!product || product->complete()) break;
+    if (!product || product->complete() || (!o.wait_for_product && product->samples_loaded() > 0)) break;
     if (!client.connected()) throw Error("connection closed while the product was arriving");
-    if (!changed) client.wait_for_update(client.updates(), std::chrono::milliseconds(50));
+    if (!changed) client.wait_for_update(client.updates(), std::chrono::milliseconds(sync.fetching() ? 2 : 50));
   }
   auto tick = std::chrono::steady_clock::now();
   for (int i = 0; i < o.frames; ++i) {

@@ -1,5 +1,7 @@
 #include "client/viewer/session_sync.hpp"
 
+#include <optional>
+
 #include "common/error.hpp"
 
 namespace inkwire {
@@ -16,15 +18,20 @@ const protocol::AssetAnnounce* nth_asset(const protocol::Snapshot& state, protoc
 
 }  // namespace
 
+SessionSync::~SessionSync() {
+  if (photo_.valid()) photo_.wait();
+}
+
 bool SessionSync::poll() {
   bool changed = false;
   const uint64_t updates = client_.updates();
   if (updates != seen_) {
     seen_ = updates;
     state_ = client_.state();
-    // A product's photos are fetched one per poll below, nearest the view first, so the first
+    // A product's photos are fetched one at a time below, nearest the view first, so the first
     // view shows after one photo; other sessions' assets all at once.
     if (!has_product(state_) && state_.assets != fetched_) {
+      if (photo_.valid()) photo_.wait();  // one thread writes the cache at a time
       files_ = client_.fetch_assets(state_, cache_);
       fetched_ = state_.assets;
     }
@@ -33,18 +40,34 @@ bool SessionSync::poll() {
     changed = true;
   }
   if (TurntableView* t = view_.turntable()) {
-    const int next = t->next_sample(view_.orbit());
-    if (next >= 0) {
-      const protocol::AssetAnnounce* photo = nth_asset(state_, protocol::AssetKind::Samples, next);
-      const protocol::AssetAnnounce* matte = nth_asset(state_, protocol::AssetKind::Matte, next);
-      if (!photo) throw Error("the product lists no photo for sample " + std::to_string(next));
-      // The small matte first: the server sends the tween data once the first photo is out.
-      const std::filesystem::path matte_file = matte ? client_.fetch_asset(*matte, cache_) : std::filesystem::path();
-      t->add_sample(next, client_.fetch_asset(*photo, cache_), matte_file);
-      changed = true;
+    changed |= take_photo(*t);
+    if (!photo_.valid()) {
+      const int next = t->next_sample(view_.orbit());
+      if (next >= 0) fetch_photo(next);
     }
   }
   return changed;
+}
+
+void SessionSync::fetch_photo(int index) {
+  const protocol::AssetAnnounce* photo = nth_asset(state_, protocol::AssetKind::Samples, index);
+  const protocol::AssetAnnounce* matte = nth_asset(state_, protocol::AssetKind::Matte, index);
+  if (!photo) throw Error("the product lists no photo for sample " + std::to_string(index));
+  photo_ = std::async(std::launch::async, [this, index, photo = *photo, matte = matte ? std::optional(*matte) : std::nullopt] {
+    // The small matte first: the server sends the tween data once the first photo is out.
+    const std::filesystem::path matte_file = matte ? client_.fetch_asset(*matte, cache_) : std::filesystem::path();
+    return FetchedPhoto{index, photo, TurntableView::sample_image(client_.fetch_asset(photo, cache_), matte_file)};
+  });
+}
+
+bool SessionSync::take_photo(TurntableView& product) {
+  if (!photo_.valid() || photo_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return false;
+  const FetchedPhoto fetched = photo_.get();
+  // The session may have moved on to another product while the photo came.
+  const protocol::AssetAnnounce* listed = nth_asset(state_, protocol::AssetKind::Samples, fetched.index);
+  if (!listed || !(*listed == fetched.photo)) return false;
+  product.add_sample(fetched.index, fetched.image);
+  return true;
 }
 
 }  // namespace inkwire

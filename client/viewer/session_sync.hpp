@@ -1,7 +1,10 @@
 #pragma once
 // Keeps a SessionView in step with a SessionClient: takes each newer state, downloads assets it
 // lists that are not cached yet (once; afterwards only control messages flow), and updates the
-// view. Call poll() once per frame on the render thread.
+// view. Call poll() once per frame on the render thread. A product's photos are fetched and
+// decoded on a thread of their own, one at a time, so the view keeps turning while they arrive.
+#include <future>
+
 #include "client/net/asset_cache.hpp"
 #include "client/net/session_client.hpp"
 #include "client/viewer/session_view.hpp"
@@ -12,8 +15,13 @@ class SessionSync {
  public:
   SessionSync(SessionClient& client, AssetCache& cache) : client_(client), cache_(cache) {}
 
+  // Waits for a photo still being fetched (it writes the cache the client shares).
+  ~SessionSync();
+
   // True when the view changed. Throws inkwire::Error if an asset cannot be fetched.
   bool poll();
+  // True while a product's photo is being fetched.
+  bool fetching() const { return photo_.valid(); }
   SessionView& view() { return view_; }
   const protocol::Snapshot& state() const { return state_; }
 
@@ -25,6 +33,17 @@ class SessionSync {
   std::vector<protocol::AssetAnnounce> fetched_;
   std::vector<std::filesystem::path> files_;
   uint64_t seen_ = ~uint64_t(0);
+
+  // A product's photo being fetched: which sample, the asset it was, and the image made of it.
+  struct FetchedPhoto {
+    int index;
+    protocol::AssetAnnounce photo;
+    Image image;
+  };
+  std::future<FetchedPhoto> photo_;
+  void fetch_photo(int index);
+  // Hands a fetched photo to the view; rethrows the error that stopped its fetch.
+  bool take_photo(TurntableView& product);
 };
 
 }  // namespace inkwire

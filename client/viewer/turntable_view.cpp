@@ -73,8 +73,7 @@ glm::vec2 TurntableView::sample_angles(int index) const {
   return {glm::degrees(std::atan2(d.x, d.z)), glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f)))};
 }
 
-void TurntableView::add_sample(int index, const std::filesystem::path& photo, const std::filesystem::path& matte) {
-  if (index < 0 || index >= samples()) throw Error("sample " + std::to_string(index) + " is not in the product");
+Image TurntableView::sample_image(const std::filesystem::path& photo, const std::filesystem::path& matte) {
   Image image = load_image(photo);
   if (!matte.empty()) {
     const Image alpha = load_image(matte);
@@ -90,6 +89,11 @@ void TurntableView::add_sample(int index, const std::filesystem::path& photo, co
           image.pixels[i + size_t(c)] = uint8_t(std::clamp((int(image.pixels[i + size_t(c)]) * 255 - (255 - a) * 255 + a / 2) / a, 0, 255));
     }
   }
+  return image;
+}
+
+void TurntableView::add_sample(int index, const Image& image) {
+  if (index < 0 || index >= samples()) throw Error("sample " + std::to_string(index) + " is not in the product");
   renderer_.set_sample(index, image);
   if (!has_[size_t(index)]) ++loaded_;
   has_[size_t(index)] = true;

@@ -11,6 +11,7 @@
 #include <glm/vec3.hpp>
 
 #include "client/render/tween/tween_renderer.hpp"
+#include "common/image.hpp"
 #include "protocol/messages.hpp"
 
 namespace inkwire {
@@ -29,9 +30,12 @@ class TurntableView {
 
   // The sample to fetch next: the nearest to `orbit`'s view that is not there yet, or -1.
   int next_sample(const TurntableOrbit& orbit) const;
-  // A sample photo (and its matte, when the product has them: empty path if not) is there.
-  // Throws inkwire::Error naming the file if it cannot be used.
-  void add_sample(int index, const std::filesystem::path& photo, const std::filesystem::path& matte);
+  // A sample photo made ready to draw, with its matte when the product has them (empty path if
+  // not). Touches no GL, so it runs where the photo was fetched, off the render thread. Throws
+  // inkwire::Error naming the file if it cannot be used.
+  static Image sample_image(const std::filesystem::path& photo, const std::filesystem::path& matte);
+  // Sample `index` (an image from sample_image()) is there.
+  void add_sample(int index, const Image& image);
   // Cells of tween data not seen before are decoded and added; a malformed one is refused
   // (error() says why) and the views it would serve show the nearest photo.
   void add_cells(const std::map<uint16_t, protocol::Bytes>& cells);
