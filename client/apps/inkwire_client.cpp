@@ -39,6 +39,8 @@ int main(int argc, char** argv) {
                  "after joining, move the session's camera: AZIMUTH,ELEVATION[,DISTANCE in diagonals]; in a turntable session, "
                  "this client's own first view (AZIMUTH[,ELEVATION], nothing sent)");
   app.add_flag("--wait-for-product", o.wait_for_product, "headless, turntable sessions: draw the first frame once every photo is there");
+  app.add_flag("--present", o.present, "turntable sessions: send this client's view to the session for followers (window: P toggles)");
+  app.add_flag("--follow", o.follow, "turntable sessions: show the view a presenter sends (window: F toggles)")->excludes("--present");
   app.add_option("--frame-log", o.frame_log, "write one JSON line per frame drawn (frame, revision, style, time; the window adds its panel's place)");
   app.add_option("--msaa", o.msaa, "samples per pixel for antialiased edges (1 = off)")->check(CLI::Range(1, 16));
   app.add_option("--gl", o.gl, "headless GL backend: osmesa, egl or auto");

@@ -38,9 +38,16 @@ int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& 
   auto tick = std::chrono::steady_clock::now();
   for (int i = 0; i < o.frames; ++i) {
     sync.poll();
-    // A product's view is this visitor's own: a full turn over the frames.
-    sync.view().orbit().azimuth = o.azimuth + 360.0f * float(i) / float(o.frames);
-    sync.view().orbit().elevation = o.elevation;
+    // A product's view is this visitor's own: a full turn over the frames, or, following, the
+    // newest view a presenter sent; presenting, each frame's view goes to the session.
+    TurntableOrbit& view = sync.view().orbit();
+    if (o.follow) {
+      view = TurntableOrbit::from_pose(sync.state().object);
+    } else {
+      view.azimuth = o.azimuth + 360.0f * float(i) / float(o.frames);
+      view.elevation = o.elevation;
+    }
+    if (o.present && sync.view().turntable()) client.send(view.pose(uint32_t(i + 1)));
     canvas.bind();
     sync.view().draw(o.size, double(i) / o.fps, i);
     writer.write(canvas.read());

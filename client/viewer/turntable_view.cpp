@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/gtc/quaternion.hpp>
 #include <glm/trigonometric.hpp>
 
 #include "client/render/styles.hpp"
@@ -14,6 +15,22 @@ namespace inkwire {
 glm::vec3 TurntableOrbit::direction() const {
   const float az = glm::radians(azimuth), el = glm::radians(elevation);
   return {std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)};
+}
+
+protocol::ObjectPose TurntableOrbit::pose(uint32_t sequence) const {
+  // Turning by -azimuth about the vertical, then by elevation about the horizontal, brings this
+  // view's direction to the first sample's (0, 0, 1).
+  const glm::quat turn = glm::angleAxis(glm::radians(elevation), glm::vec3(1, 0, 0)) *
+                         glm::angleAxis(glm::radians(-azimuth), glm::vec3(0, 1, 0));
+  return {.sequence = sequence, .rotation = {turn.x, turn.y, turn.z, turn.w}, .translation = glm::vec3(0.0f), .scale = zoom};
+}
+
+TurntableOrbit TurntableOrbit::from_pose(const protocol::ObjectPose& pose) {
+  // The decoder has checked the rotation is a unit quaternion and the scale positive.
+  const glm::quat turn(pose.rotation.w, pose.rotation.x, pose.rotation.y, pose.rotation.z);
+  const glm::vec3 d = glm::normalize(glm::conjugate(turn) * glm::vec3(0, 0, 1));
+  return {.azimuth = glm::degrees(std::atan2(d.x, d.z)), .elevation = glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f))),
+          .zoom = std::clamp(pose.scale, 0.05f, 4.0f)};
 }
 
 TurntableView::TurntableView(const protocol::Snapshot& state) : product_(state.product) {

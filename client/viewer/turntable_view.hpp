@@ -21,6 +21,13 @@ namespace inkwire {
 struct TurntableOrbit {
   float azimuth = 0.0f, elevation = 0.0f, zoom = 1.0f;
   glm::vec3 direction() const;
+  bool operator==(const TurntableOrbit&) const = default;
+
+  // Presenter mode (SPEC T13): this view shared with the session as the pose that turns the
+  // product (without roll) so that the first sample's direction sees it as this view does, the
+  // zoom as its scale; and a shared pose back as a view.
+  protocol::ObjectPose pose(uint32_t sequence) const;
+  static TurntableOrbit from_pose(const protocol::ObjectPose& pose);
 };
 
 class TurntableView {

@@ -23,6 +23,9 @@ struct ViewerOptions {
   // the view then turns a full circle over the frames. Nothing of it is sent.
   float azimuth = 0.0f, elevation = 0.0f;
   bool wait_for_product = false;  // headless: the first frame waits for every photo and cell
+  // Presenter mode, off by default: this client's view of a product goes to the session as
+  // object poses (present), or this client shows the view a presenter sends (follow).
+  bool present = false, follow = false;
 };
 
 int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& options);

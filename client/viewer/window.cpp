@@ -94,6 +94,11 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
   // inertia, the wheel zooms, the arrow keys step one photo.
   Inertia inertia;
   bool turntable_started = false;
+  // Presenter mode (off unless asked): a presenter's view goes to the session as object poses,
+  // a follower shows the newest of them.
+  bool present = o.present, follow = o.follow;
+  TurntableOrbit presented{.zoom = 0.0f};  // none sent yet
+  protocol::ObjectPose followed{.sequence = ~0u};  // none shown yet
   Orbit& orbit = input.orbit;
   while (!context->should_close() && client.connected()) {
     const double now = glfwGetTime(), dt = std::min(now - last_time, 0.1);
@@ -111,7 +116,21 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
         inertia.stop();
         dirty = true;
       }
+      if (input.toggle_present) present = !present, dirty = true;
+      if (input.toggle_follow) follow = !follow, followed.sequence = ~0u, dirty = true;
+      // The presenter's newest view replaces this one; the visitor may turn it until the next.
+      if (follow && !(sync.state().object == followed)) {
+        followed = sync.state().object;
+        const TurntableOrbit shared = TurntableOrbit::from_pose(followed);
+        orbit.azimuth = shared.azimuth, orbit.elevation = shared.elevation, orbit.distance = 1.0f / shared.zoom;
+        inertia.stop();
+        dirty = true;
+      }
       sync.view().orbit() = {.azimuth = orbit.azimuth, .elevation = orbit.elevation, .zoom = 1.0f / orbit.distance};
+      if (present && !(sync.view().orbit() == presented)) {
+        presented = sync.view().orbit();
+        client.send(presented.pose(sequence++));
+      }
       dirty |= orbit.changed || inertia.moving() || !product->complete();
       orbit.changed = false;
     } else {
@@ -178,6 +197,8 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
         std::snprintf(label, sizeof label, "photos %d / %d", product->samples_loaded(), product->samples());
         if (!product->complete()) ImGui::ProgressBar(float(product->samples_loaded()) / float(std::max(product->samples(), 1)), ImVec2(-1, 0), label);
         else ImGui::TextWrapped("%s. Drag to turn, wheel to zoom, arrows step one photo.", label);
+        ImGui::TextWrapped("P: %s this view to the session. F: %s the presenter's view.", present ? "stop presenting" : "present",
+                           follow ? "stop following" : "follow");
       } else {
         ImGui::TextWrapped("Drag to orbit, wheel to zoom, Tab / Shift-Tab: style, arrows: view.");
         if (auto change = panel.draw(sync.state().style)) client.send(*change);

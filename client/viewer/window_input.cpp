@@ -50,6 +50,8 @@ void on_key(GLFWwindow* w, int key, int, int action, int mods) {
     case GLFW_KEY_LEFT: --in.view_step_x; break;
     case GLFW_KEY_UP: ++in.view_step_y; break;
     case GLFW_KEY_DOWN: --in.view_step_y; break;
+    case GLFW_KEY_P: in.toggle_present = !in.toggle_present; break;
+    case GLFW_KEY_F: in.toggle_follow = !in.toggle_follow; break;
     default: break;
   }
 }

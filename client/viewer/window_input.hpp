@@ -1,8 +1,9 @@
 #pragma once
 // What a person does to the client window, gathered from GLFW's callbacks between frames: the
-// orbit they drag and zoom, the keys they press (Tab / Shift-Tab: style, arrows: view) and
-// whether anything happened at all, so an idle window need not redraw. Input the panel takes
-// (ImGui wants the mouse or keyboard) is left to the panel.
+// orbit they drag and zoom, the keys they press (Tab / Shift-Tab: style, arrows: view; on a
+// product P: present, F: follow the presenter) and whether anything happened at all, so an idle
+// window need not redraw. Input the panel takes (ImGui wants the mouse or keyboard) is left to
+// the panel.
 #include "protocol/messages.hpp"
 
 struct GLFWwindow;
@@ -35,12 +36,17 @@ struct WindowInput {
   int style_step = 0;        // Tab +1, Shift-Tab -1, since the last frame
   int view_step_x = 0;       // Right +1, Left -1
   int view_step_y = 0;       // Up +1, Down -1
+  bool toggle_present = false;  // P
+  bool toggle_follow = false;   // F
   long events = 0;           // every input or window event so far: a change means redraw
 
   // Installs the callbacks; call before ImGui's GLFW backend, which chains to them.
   void attach(GLFWwindow* window);
   // Key presses taken since the last call, then forgotten.
-  void clear_steps() { style_step = view_step_x = view_step_y = 0; }
+  void clear_steps() {
+    style_step = view_step_x = view_step_y = 0;
+    toggle_present = toggle_follow = false;
+  }
 };
 
 }  // namespace inkwire

@@ -46,14 +46,26 @@ std::string content_type(const std::string& path) {
 
 // A session's page: `element` full-size, and the snippet to paste into one's own page.
 // Over TLS the snippet names https:// and wss:// (a shop's https page may load nothing else).
-std::string element_page(const std::string& element, const std::string& session, const std::string& host, const std::string& invitation, bool tls) {
+// Presenter mode from a product page's address (/turntable/NAME?present or ?follow): that
+// attribute on the page's element. Anything else in the query is left out.
+std::string presenter_attribute(const std::string& target) {
+  const size_t query = target.find('?');
+  if (query == std::string::npos) return "";
+  std::istringstream parts(target.substr(query + 1));
+  for (std::string part; std::getline(parts, part, '&');)
+    if (part == "present" || part == "follow") return " " + part;
+  return "";
+}
+
+std::string element_page(const std::string& element, const std::string& session, const std::string& host, const std::string& invitation, bool tls,
+                         const std::string& attributes = "") {
   const std::string http = tls ? "https://" : "http://", ws = tls ? "wss://" : "ws://";
   const std::string snippet = "<script type=\"module\" src=\"" + http + host + "/inkwire.js\"></script>\n<" + element + " server=\"" + ws +
                               host + "/ws\" session=\"" + session + "\" style=\"width: 480px; height: 480px\"></" + element + ">";
   return "<!doctype html><html lang=en><meta charset=utf-8><meta name=viewport content=\"width=device-width, initial-scale=1\">"
          "<title>" + html_escape(session) + "</title><style>html, body { margin: 0; height: 100%; font: 14px system-ui, sans-serif; }"
          " " + element + " { height: calc(100% - 9em); } details { padding: 0.5em 1em; } pre { white-space: pre-wrap; background: #f4f4f4; padding: 0.5em; }"
-         "</style><script type=module src=\"/inkwire.js\"></script><" + element + " session=\"" + html_escape(session) + "\"></" + element +
+         "</style><script type=module src=\"/inkwire.js\"></script><" + element + " session=\"" + html_escape(session) + "\"" + attributes + "></" + element +
          "><details><summary>" + invitation + "</summary><pre>" + html_escape(snippet) + "</pre></details>\n";
 }
 
@@ -210,7 +222,8 @@ asio::awaitable<void> HttpServer::serve(ByteStream accepted) {
       co_return;
     }
     co_await reply(response(200, "OK", "text/html; charset=utf-8",
-                            element_page("inkwire-turntable", session->name(), request.header("host"), "Put this product on your page", server_.tls() != nullptr)));
+                            element_page("inkwire-turntable", session->name(), request.header("host"), "Put this product on your page", server_.tls() != nullptr,
+                                         presenter_attribute(request.path))));
     co_return;
   }
   if (path.rfind("/conference/", 0) == 0) {

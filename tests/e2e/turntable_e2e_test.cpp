@@ -5,11 +5,14 @@
 // cross-fade; once the product is there a full turn costs no bytes; a restarted server makes
 // nothing again; a corrupted stored file is refused, not served; bad folders are refused with
 // the file named.
+#include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "client/net/asset_cache.hpp"
 #include "client/net/session_client.hpp"
+#include "client/viewer/turntable_view.hpp"
+#include "protocol/framing.hpp"
 #include "common/content_hash.hpp"
 #include "common/image_metrics.hpp"
 #include "e2e_support.hpp"
@@ -190,6 +193,86 @@ TEST_F(TurntableE2ETest, ARestartedServerMakesNothingAgainAndACorruptedFileIsRef
   EXPECT_NE(refused->output().find("cannot be shown"), std::string::npos) << refused->output();
   SessionClient other(server.address(), "other");
   EXPECT_NO_THROW(other.join("scene", ""));
+}
+
+TEST(TurntableOrbitTest, AViewSharedAsAPoseComesBackAsTheSameView) {
+  for (const TurntableOrbit view : {TurntableOrbit{}, TurntableOrbit{.azimuth = 30, .elevation = 0, .zoom = 1.5f},
+                                    TurntableOrbit{.azimuth = -170, .elevation = 40, .zoom = 0.5f},
+                                    TurntableOrbit{.azimuth = 95, .elevation = -80, .zoom = 1}}) {
+    const protocol::ObjectPose pose = view.pose(7);
+    EXPECT_NEAR(glm::length(pose.rotation), 1.0f, 1e-6f);
+    // No roll: the product's vertical stays upright on screen (in the camera's y-z plane).
+    const glm::quat turn(pose.rotation.w, pose.rotation.x, pose.rotation.y, pose.rotation.z);
+    EXPECT_NEAR((turn * glm::vec3(0, 1, 0)).x, 0.0f, 1e-6f);
+    const TurntableOrbit back = TurntableOrbit::from_pose(pose);
+    EXPECT_NEAR(back.azimuth, view.azimuth, 1e-3f);
+    EXPECT_NEAR(back.elevation, view.elevation, 1e-3f);
+    EXPECT_FLOAT_EQ(back.zoom, view.zoom);
+    // What survives the wire survives too.
+    const protocol::Bytes frame = protocol::encode(pose);
+    const auto decoded = std::get<protocol::ObjectPose>(protocol::decode_frame(frame.data(), frame.size()));
+    EXPECT_NEAR(TurntableOrbit::from_pose(decoded).azimuth, view.azimuth, 1e-3f);
+  }
+  // The web client's quaternion for the same view (client/web/test/turntable_pose.test.js).
+  const glm::vec4 rotation = TurntableOrbit{.azimuth = 30, .elevation = 20, .zoom = 1.5f}.pose(1).rotation;
+  const glm::vec4 web(0.167731f, -0.254887f, -0.044943f, 0.951251f);
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(rotation[i], web[i], 1e-6f) << i;
+}
+
+TEST_F(TurntableE2ETest, FollowersShowThePresentersViewAndOthersKeepTheirOwn) {
+  const fs::path dir = output_dir("turntable-presenter");
+  Process add("inkwire-server", {"add-product", "duck", "--mesh", kDuck.string(), "--samples", "12", "--size", "128", "--data",
+                                 (dir / "data").string()},
+              dir / "add.log");
+  ASSERT_EQ(add.wait(), 0) << add.output();
+  ServerUnderTest server(dir, {{"sessions", nlohmann::json::array()}});
+  const auto client = [&](const std::string& name, int frames, const std::string& view, const std::string& mode) {
+    std::vector<std::string> args = {"--connect", server.address(), "--session", "duck", "--headless", "--frames", std::to_string(frames),
+                                     "--fps", "20", "--size", "128x128", "--view", view, "--cache", (dir / ("cache-" + name)).string(),
+                                     "--out", (dir / (name + "-%04d.png")).string(), "--frame-log", (dir / (name + ".jsonl")).string(),
+                                     "--name", name, "--wait-for-product"};
+    if (!mode.empty()) args.push_back(mode);
+    return std::make_unique<Process>("inkwire-client", args, dir / (name + ".log"));
+  };
+  // A follower and a visitor of their own are there while the presenter turns the product
+  // from 30 degrees, 9 degrees a frame.
+  auto follower = client("follower", 60, "0", "--follow");
+  auto visitor = client("visitor", 60, "200", "");
+  ASSERT_TRUE(eventually([&] { return !frame_log(dir / "follower.jsonl").empty() && !frame_log(dir / "visitor.jsonl").empty(); }))
+      << follower->output() << visitor->output();
+  auto presenter = client("presenter", 40, "30", "--present");
+  ASSERT_EQ(presenter->wait(), 0) << presenter->output();
+  ASSERT_EQ(follower->wait(), 0) << follower->output();
+  ASSERT_EQ(visitor->wait(), 0) << visitor->output();
+  const auto presented = frame_log(dir / "presenter.jsonl");
+  ASSERT_EQ(presented.size(), 40u);
+  EXPECT_GT(presented.back()["product"]["bytes_sent"].get<uint64_t>(), presented.front()["product"]["bytes_sent"].get<uint64_t>());
+  // The follower shows no view the presenter did not send (the first sample's before any came).
+  const auto on_the_circle = [](double degrees) { return std::remainder(degrees, 360.0); };
+  const auto was_presented = [&](double azimuth) {
+    for (const auto& f : presented)
+      if (std::abs(on_the_circle(f["product"]["azimuth"].get<double>() - azimuth)) < 0.01) return true;
+    return std::abs(on_the_circle(azimuth)) < 0.01;
+  };
+  const auto followed = frame_log(dir / "follower.jsonl");
+  for (const auto& f : followed) EXPECT_TRUE(was_presented(f["product"]["azimuth"].get<double>())) << f.dump();
+  // The visitor's own turn, untouched: 200 degrees and 6 degrees a frame, sending nothing.
+  const auto own = frame_log(dir / "visitor.jsonl");
+  for (size_t i = 0; i < own.size(); ++i) {
+    EXPECT_NEAR(on_the_circle(own[i]["product"]["azimuth"].get<double>() - (200.0 + 6.0 * double(i))), 0.0, 0.01);
+    EXPECT_EQ(own[i]["product"]["bytes_sent"], own[0]["product"]["bytes_sent"]);
+  }
+
+  // One who follows later joins at the presenter's last view (the session keeps it) and shows
+  // what the presenter showed there.
+  auto late = client("late", 2, "0", "--follow");
+  ASSERT_EQ(late->wait(), 0) << late->output();
+  const auto late_log = frame_log(dir / "late.jsonl");
+  ASSERT_EQ(late_log.size(), 2u);
+  EXPECT_NEAR(on_the_circle(late_log[1]["product"]["azimuth"].get<double>() - presented.back()["product"]["azimuth"].get<double>()), 0.0, 0.01);
+  const double db = psnr(load_image(client_frame(dir, "late", 1)), load_image(client_frame(dir, "presenter", 39)));
+  std::printf("a late follower's view against the presenter's last: %.2f dB\n", db);
+  EXPECT_GE(db, 40.0);
 }
 
 TEST_F(TurntableE2ETest, BadPhotoFoldersAreRefusedWithTheFileNamedAndNothingStored) {

@@ -5,15 +5,18 @@ Debian's chromium-driver and python3-selenium, against a real inkwire-server on 
 The element loads a product and draws its first view after one photo; at azimuths 0, 7.5, 37.5
 and 180 degrees its canvas matches the C++ headless client's frame of the same view (PSNR >= 35
 dB: the browser's software GL and llvmpipe differ in rounding, the browser's JPEG decoder in the
-last bit); a drag turns the view and sends nothing. Run by ctest with the build's bin folder:
+last bit); a drag turns the view and sends nothing; in presenter mode a following element and a
+following C++ client show the presenting element's view. Run by ctest with the build's bin folder:
   turntable_browser_test.py BIN_DIR OUT_DIR
 Skips (exit 0 with a message) when chromium, chromedriver or selenium is missing."""
 import base64
+import json
 import os
 import shutil
 import subprocess
 import sys
 import time
+import urllib.request
 
 sys.path.insert(0, os.path.dirname(__file__))
 from browser_support import Checks, Server, chromium, psnr, read_image, skip  # skips without the browser
@@ -73,6 +76,45 @@ try:
     check(abs(after - before) >= 30, f"a drag of 100 pixels turns the view ({before:.1f} -> {after:.1f} degrees, with inertia)")
     check(driver.execute_script(f"const s = {element}.session; return [s.bytesSent, s.bytesReceived];") == [sent, received],
           "the drag sent and received nothing")
+
+    # Presenter mode: a second element that follows shows this one's view once it presents, a
+    # drag included; a C++ client that follows later joins at the presented view.
+    follower = "document.querySelectorAll('inkwire-turntable')[1]"
+    driver.execute_script(f"""
+      const follower = document.createElement('inkwire-turntable');
+      follower.setAttribute('session', 'duck');
+      follower.setAttribute('follow', '');
+      follower.style.cssText = 'width:{SIZE}px;height:{SIZE}px';
+      document.body.appendChild(follower);""")
+    def wait_for(script, seconds=20):
+        start = time.time()
+        while time.time() - start < seconds and not driver.execute_script(script):
+            time.sleep(0.1)
+        return driver.execute_script(script)
+    check(wait_for(f"return {follower}.hasAttribute('loaded')"), "a following element loads the product")
+    driver.execute_script(f"{element}.setAttribute('present', ''); {element}.azimuth = 123.5;")
+    check(wait_for(f"return Math.abs({follower}.azimuth - 123.5) < 0.01"),
+          f"the follower turns to the presenter's 123.5 degrees ({driver.execute_script(f'return {follower}.azimuth'):.2f})")
+    ActionChains(driver).move_to_element(canvas).click_and_hold().move_by_offset(-50, 0).move_by_offset(-30, 0).release().perform()
+    time.sleep(3.0)  # the presenter's inertia dies down
+    presenter_az = driver.execute_script(f"return {element}.azimuth")
+    follower_az = driver.execute_script(f"return {follower}.azimuth")
+    on_the_circle = lambda degrees: (degrees + 180) % 360 - 180
+    check(abs(on_the_circle(presenter_az - 123.5)) >= 20 and abs(on_the_circle(follower_az - presenter_az)) < 0.01,
+          f"after the presenter's drag the follower shows its view ({presenter_az:.2f} -> {follower_az:.2f} degrees)")
+    # A presenter shares the product page's address with ?follow; nothing else of the query reaches the page.
+    for query, tag in (("?follow", '<inkwire-turntable session="duck" follow>'), ("?present", '<inkwire-turntable session="duck" present>'),
+                       ("?follow=<b>x</b>", '<inkwire-turntable session="duck">')):
+        page = urllib.request.urlopen(f"http://127.0.0.1:{http}/turntable/duck{query}").read().decode()
+        check(tag in page, f"the page /turntable/duck{query} holds {tag}")
+    late_log = os.path.join(OUT, "late-follower.jsonl")
+    subprocess.run([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{tcp}", "--session", "duck", "--headless", "--frames", "1",
+                    "--follow", "--size", f"{SIZE}x{SIZE}", "--out", os.path.join(OUT, "late-follower.png"), "--frame-log", late_log,
+                    "--cache", os.path.join(OUT, "cache")], check=True, stderr=subprocess.DEVNULL)
+    with open(late_log) as f:
+        late_az = json.loads(f.readline())["product"]["azimuth"]
+    check(abs(on_the_circle(late_az - presenter_az)) < 0.01,
+          f"a C++ client that follows later joins at the browser presenter's view ({late_az:.2f} degrees)")
 finally:
     if driver:
         driver.quit()

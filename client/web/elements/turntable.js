@@ -5,9 +5,12 @@
 // (with inertia), wheel or pinch to zoom, arrow keys step one photo, auto-spin until the first
 // touch (not under prefers-reduced-motion), fullscreen, sized by its container at the device
 // pixel ratio. Turning it sends nothing. Attributes: server, session, token, azimuth,
-// auto-rotate ("off" to stop it); property azimuth (degrees); attribute `loaded` once every
-// photo and tween cell is there.
+// auto-rotate ("off" to stop it), and presenter mode (off unless set): `present` sends this
+// view to the session as object poses, `follow` shows the newest view a presenter sent (a drag
+// turns it until the next); property azimuth (degrees); attribute `loaded` once every photo and
+// tween cell is there.
 import { decodeTweenCell } from '../common/tween_data.js';
+import { poseOfView, viewOfPose } from '../common/turntable_pose.js';
 import { AssetKind, bytesBy } from '../net/session.js';
 import { matteSample } from '../render/tween/matte_sample.js';
 import { loadTweenShaders, TweenView } from '../render/tween/tween_view.js';
@@ -79,17 +82,22 @@ export class InkwireTurntable extends SessionElement {
     this.removeAttribute('loaded');
     this.startedAt = performance.now();
     this.firstViewPhotos = this.firstViewBytes = undefined;
+    this.presented = null;  // a new session hears this view again
     const session = this.openSession();
     const pendingCells = [];
     session.addEventListener('tween-data', (e) => {
       if (this.view) this.addCell(e.detail);
       else pendingCells.push(e.detail);
     });
+    session.addEventListener('state', (e) => {
+      if (e.detail.type === 'object-pose') this.follow(e.detail);
+    });
     session.addEventListener('snapshot', async (e) => {
       try {
         const snapshot = e.detail;
         if (!snapshot.product.directions.length) throw new Error(`session '${snapshot.session}' has no product to show`);
         this.snapshot = snapshot;
+        this.follow(snapshot.object);
         this.view = new TweenView(this.webgl(), snapshot.product, await loadTweenShaders());
         for (const cell of pendingCells.splice(0)) this.addCell(cell);
         await this.download(session);
@@ -156,9 +164,31 @@ export class InkwireTurntable extends SessionElement {
     }
   }
 
+  // Following: the presenter's view replaces this one.
+  follow(pose) {
+    if (!this.hasAttribute('follow')) return;
+    const { azimuth, elevation, zoom } = viewOfPose(pose);
+    this.touched = true;  // no auto-spin of its own
+    this.velocity = 0;
+    this.elevation = elevation;
+    this.zoom = zoom;
+    this.azimuth = azimuth;
+  }
+
+  // Presenting: the view goes to the session whenever it changes, at most once a frame.
+  present() {
+    if (!this.hasAttribute('present') || !this.session || !this.snapshot) return;
+    const view = [this._azimuth, this.elevation, this.zoom];
+    if (this.presented && view.every((v, i) => v === this.presented[i])) return;
+    this.presented = view;
+    this.poseSequence = (this.poseSequence ?? 0) + 1;
+    this.session.send(poseOfView(...view, this.poseSequence));
+  }
+
   // Drawn at once (tests and screenshots read the canvas right after).
   draw() {
     if (!this.gl || !this.view) return;
+    this.present();
     const [width, height] = this.beginFrame();
     if (this.view.draw([width, height], this.direction(), this.zoom) && this.firstViewPhotos === undefined) {
       // What the first view waited for, for measuring: photos, milliseconds since start.
