@@ -17,6 +17,14 @@ using namespace inkwire;
 
 namespace {
 
+// `object` made into a product as the benchmark makes one (24 samples on a ring) at `size` pixels.
+void prepare_product(TweenRenderer& tween, const SceneObject& object, int size) {
+  StyleParams params(TweenRenderer::params());
+  params.set("sample_size", std::to_string(size));
+  tween.configure(params);
+  tween.prepare(object);
+}
+
 Image midway_view(TweenRenderer& tween, const std::string& compose, const FrameState& frame, Canvas& canvas) {
   StyleParams params(TweenRenderer::params());
   params.set("compose", compose);
@@ -38,9 +46,7 @@ TEST(TurntableGLTest, MidwayViewsOfAMeshProductShowOneOutline) {
   const int size = 256;
   Canvas canvas(size, size);
   TweenRenderer tween;
-  StyleParams params(TweenRenderer::params());
-  tween.configure(params);
-  tween.prepare(duck);
+  prepare_product(tween, duck, size);
   double iou_min[2] = {1.0, 1.0}, ghost_max[2] = {0.0, 0.0}, psnr_sum[2] = {0.0, 0.0};
   int views = 0;
   const char* composes[2] = {"matte", "sum"};
@@ -85,10 +91,7 @@ TEST(TurntableGLTest, TheTrucksMirrorsStandFreeOfTheCabNearHeadOn) {
   const int size = 512;
   Canvas canvas(size, size);
   TweenRenderer tween;
-  StyleParams params(TweenRenderer::params());
-  params.set("sample_size", std::to_string(size));
-  tween.configure(params);
-  tween.prepare(truck);
+  prepare_product(tween, truck, size);
   double iou_min = 1.0;
   for (float az = 76.0f; az <= 104.0f; az += 2.0f) {
     if (az == 90.0f) continue;  // a sample's own view
