@@ -44,8 +44,6 @@ std::string content_type(const std::string& path) {
   return "text/plain; charset=utf-8";  // shaders
 }
 
-// A session's page: `element` full-size, and the snippet to paste into one's own page.
-// Over TLS the snippet names https:// and wss:// (a shop's https page may load nothing else).
 // Presenter mode from a product page's address (/turntable/NAME?present or ?follow): that
 // attribute on the page's element. Anything else in the query is left out.
 std::string presenter_attribute(const std::string& target) {
@@ -57,6 +55,9 @@ std::string presenter_attribute(const std::string& target) {
   return "";
 }
 
+// A session's page: `element` full-size (with `attributes`), and the snippet to paste into one's
+// own page. Over TLS the snippet names https:// and wss:// (a shop's https page may load nothing
+// else).
 std::string element_page(const std::string& element, const std::string& session, const std::string& host, const std::string& invitation, bool tls,
                          const std::string& attributes = "") {
   const std::string http = tls ? "https://" : "http://", ws = tls ? "wss://" : "ws://";
