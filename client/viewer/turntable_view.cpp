@@ -17,6 +17,10 @@ glm::vec3 TurntableOrbit::direction() const {
   return {std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)};
 }
 
+TurntableOrbit TurntableOrbit::from_direction(const glm::vec3& d) {
+  return {.azimuth = glm::degrees(std::atan2(d.x, d.z)), .elevation = glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f)))};
+}
+
 protocol::ObjectPose TurntableOrbit::pose(uint32_t sequence) const {
   // Turning by -azimuth about the vertical, then by elevation about the horizontal, brings this
   // view's direction to the first sample's (0, 0, 1).
@@ -28,9 +32,9 @@ protocol::ObjectPose TurntableOrbit::pose(uint32_t sequence) const {
 TurntableOrbit TurntableOrbit::from_pose(const protocol::ObjectPose& pose) {
   // The decoder has checked the rotation is a unit quaternion and the scale positive.
   const glm::quat turn(pose.rotation.w, pose.rotation.x, pose.rotation.y, pose.rotation.z);
-  const glm::vec3 d = glm::normalize(glm::conjugate(turn) * glm::vec3(0, 0, 1));
-  return {.azimuth = glm::degrees(std::atan2(d.x, d.z)), .elevation = glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f))),
-          .zoom = std::clamp(pose.scale, 0.05f, 4.0f)};
+  TurntableOrbit view = from_direction(glm::normalize(glm::conjugate(turn) * glm::vec3(0, 0, 1)));
+  view.zoom = std::clamp(pose.scale, 0.05f, 4.0f);
+  return view;
 }
 
 TurntableView::TurntableView(const protocol::Snapshot& state) : product_(state.product) {
@@ -86,8 +90,8 @@ int TurntableView::next_sample(const TurntableOrbit& orbit) const {
 }
 
 glm::vec2 TurntableView::sample_angles(int index) const {
-  const glm::vec3 d = product_.directions.at(size_t(index));
-  return {glm::degrees(std::atan2(d.x, d.z)), glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f)))};
+  const TurntableOrbit view = TurntableOrbit::from_direction(product_.directions.at(size_t(index)));
+  return {view.azimuth, view.elevation};
 }
 
 Image TurntableView::sample_image(const std::filesystem::path& photo, const std::filesystem::path& matte) {

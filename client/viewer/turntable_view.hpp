@@ -21,6 +21,8 @@ namespace inkwire {
 struct TurntableOrbit {
   float azimuth = 0.0f, elevation = 0.0f, zoom = 1.0f;
   glm::vec3 direction() const;
+  // The view from unit direction `d` (the inverse of direction()), at zoom 1.
+  static TurntableOrbit from_direction(const glm::vec3& d);
   bool operator==(const TurntableOrbit&) const = default;
 
   // Presenter mode (SPEC T13): this view shared with the session as the pose that turns the
