@@ -48,12 +48,13 @@ Image render_truth(const fs::path& dir, float azimuth) {
 
 std::unique_ptr<Process> product_client(const ServerUnderTest& server, const std::string& session, const fs::path& dir,
                                         const std::string& name, int frames, const std::string& view, bool wait_for_product,
-                                        const std::string& cache = "") {
+                                        const std::string& cache = "", const std::vector<std::string>& more = {}) {
   std::vector<std::string> args = {"--connect", server.address(), "--session", session, "--headless", "--frames", std::to_string(frames),
                                    "--fps", "60", "--size", "256x256", "--view", view, "--cache", (dir / (cache.empty() ? "cache-" + name : cache)).string(),
                                    "--out", (dir / (name + "-%04d.png")).string(), "--frame-log", (dir / (name + ".jsonl")).string(),
                                    "--name", name};
   if (wait_for_product) args.push_back("--wait-for-product");
+  args.insert(args.end(), more.begin(), more.end());
   return std::make_unique<Process>("inkwire-client", args, dir / (name + ".log"));
 }
 
@@ -227,17 +228,12 @@ TEST_F(TurntableE2ETest, FollowersShowThePresentersViewAndOthersKeepTheirOwn) {
   ASSERT_EQ(add.wait(), 0) << add.output();
   ServerUnderTest server(dir, {{"sessions", nlohmann::json::array()}});
   const auto client = [&](const std::string& name, int frames, const std::string& view, const std::string& mode) {
-    std::vector<std::string> args = {"--connect", server.address(), "--session", "duck", "--headless", "--frames", std::to_string(frames),
-                                     "--fps", "20", "--size", "128x128", "--view", view, "--cache", (dir / ("cache-" + name)).string(),
-                                     "--out", (dir / (name + "-%04d.png")).string(), "--frame-log", (dir / (name + ".jsonl")).string(),
-                                     "--name", name, "--wait-for-product"};
-    if (!mode.empty()) args.push_back(mode);
-    return std::make_unique<Process>("inkwire-client", args, dir / (name + ".log"));
+    return product_client(server, "duck", dir, name, frames, view, true, "", mode.empty() ? std::vector<std::string>{} : std::vector{mode});
   };
-  // A follower and a visitor of their own are there while the presenter turns the product
-  // from 30 degrees, 9 degrees a frame.
-  auto follower = client("follower", 60, "0", "--follow");
-  auto visitor = client("visitor", 60, "200", "");
+  // A follower and a visitor of their own are there (3 s at 60 frames a second) while the
+  // presenter turns the product from 30 degrees, 9 degrees a frame.
+  auto follower = client("follower", 180, "0", "--follow");
+  auto visitor = client("visitor", 180, "200", "");
   ASSERT_TRUE(eventually([&] { return !frame_log(dir / "follower.jsonl").empty() && !frame_log(dir / "visitor.jsonl").empty(); }))
       << follower->output() << visitor->output();
   auto presenter = client("presenter", 40, "30", "--present");
@@ -256,10 +252,10 @@ TEST_F(TurntableE2ETest, FollowersShowThePresentersViewAndOthersKeepTheirOwn) {
   };
   const auto followed = frame_log(dir / "follower.jsonl");
   for (const auto& f : followed) EXPECT_TRUE(was_presented(f["product"]["azimuth"].get<double>())) << f.dump();
-  // The visitor's own turn, untouched: 200 degrees and 6 degrees a frame, sending nothing.
+  // The visitor's own turn, untouched: 200 degrees and 2 degrees a frame, sending nothing.
   const auto own = frame_log(dir / "visitor.jsonl");
   for (size_t i = 0; i < own.size(); ++i) {
-    EXPECT_NEAR(on_the_circle(own[i]["product"]["azimuth"].get<double>() - (200.0 + 6.0 * double(i))), 0.0, 0.01);
+    EXPECT_NEAR(on_the_circle(own[i]["product"]["azimuth"].get<double>() - (200.0 + 2.0 * double(i))), 0.0, 0.01);
     EXPECT_EQ(own[i]["product"]["bytes_sent"], own[0]["product"]["bytes_sent"]);
   }
 
