@@ -26,6 +26,12 @@ class Transport {
   virtual asio::awaitable<std::error_code> read_frame(protocol::Bytes& frame) = 0;
   // Writes the frames in order, gathered where the transport can.
   virtual asio::awaitable<std::error_code> write_frames(const std::deque<Outgoing>& frames) = 0;
+  // The transport's own last word before the connection closes for `error` (a WebSocket Close
+  // frame with its status code); nothing over TCP, where the error message is the last word.
+  virtual asio::awaitable<void> goodbye(protocol::ErrorCode error, const std::string& reason) {
+    (void)error, (void)reason;
+    co_return;
+  }
   virtual void close() = 0;
   virtual std::string peer() const = 0;
   virtual std::string name() const = 0;  // "tcp", "websocket": for logs and metrics

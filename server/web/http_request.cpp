@@ -3,11 +3,19 @@
 #include <algorithm>
 #include <cctype>
 #include <sstream>
+#include <string_view>
 
 #include "common/error.hpp"
 
 namespace inkwire::server {
 namespace {
+
+// RFC 9110 5.6.2: a field name is a token.
+bool is_token(const std::string& s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](unsigned char c) {
+    return std::isalnum(c) || std::string_view("!#$%&'*+-.^_`|~").find(char(c)) != std::string_view::npos;
+  });
+}
 
 std::string trim(const std::string& s) {
   const size_t a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
@@ -35,7 +43,13 @@ Request parse_head(const std::string& head) {
     if (line.empty()) break;
     const size_t colon = line.find(':');
     if (colon == std::string::npos || colon == 0) throw Error("malformed header line");
-    r.headers[lower(line.substr(0, colon))] = trim(line.substr(colon + 1));
+    const std::string name = line.substr(0, colon), value = trim(line.substr(colon + 1));
+    if (!is_token(name)) throw Error("malformed header name");
+    if (std::any_of(value.begin(), value.end(), [](unsigned char c) { return (c < 0x20 && c != '\t') || c == 0x7f; }))
+      throw Error("control character in header " + lower(name));
+    // A header given twice would be read as one or the other by different readers (a proxy and
+    // this server): refused, not guessed.
+    if (!r.headers.emplace(lower(name), value).second) throw Error("header " + lower(name) + " given twice");
   }
   return r;
 }

@@ -16,7 +16,8 @@ struct Request {
   }
 };
 
-// Throws inkwire::Error for a head that is not HTTP/1.x.
+// Throws inkwire::Error for a head that is not HTTP/1.x, a header name that is no token, a
+// control character in a value, or a header given twice.
 Request parse_head(const std::string& head);
 // ASCII lower case, as header names and upgrade tokens compare.
 std::string lower(std::string s);

@@ -145,20 +145,24 @@ asio::awaitable<void> HttpServer::serve(ByteStream accepted) {
     co_await reply(response(503, "Service Unavailable", "text/plain", place.refusal() + "\n"));
     co_return;
   }
-  // The whole head within the timeout, or the connection is cut: a slow-loris client holds
-  // one socket for a few seconds at most. Shared with the watchdog, which may run after this
+  // One deadline for the whole exchange (STYLE 16), head and reply, or the connection is cut: a
+  // slow-loris client that sends its head a byte at a time, or a reader that never reads its
+  // reply, holds one socket for a few seconds at most. A WebSocket hands the socket over once
+  // upgraded, with deadlines of its own. Shared with the watchdog, which may run after this
   // coroutine has ended.
-  auto head_done = std::make_shared<bool>(false);
+  auto handed_over = std::make_shared<bool>(false);
   auto watchdog = std::make_shared<asio::steady_timer>(io_, std::chrono::milliseconds(int64_t(server_.config().http_head_timeout_seconds * 1000)));
-  watchdog->async_wait([socket_ptr, head_done, peer](std::error_code ec) {
-    if (ec || *head_done) return;
+  watchdog->async_wait([socket_ptr, handed_over, peer](std::error_code ec) {
+    if (ec || *handed_over || !socket_ptr->socket().is_open()) return;
     log_warn("http-too-slow", {{"peer", peer}});
     socket_ptr->close();
   });
+  struct CancelAtEnd {
+    std::shared_ptr<asio::steady_timer> timer;
+    ~CancelAtEnd() { timer->cancel(); }
+  } cancel_at_end{watchdog};
   std::string buffer;
   auto [ec, n] = co_await asio::async_read_until(socket, asio::dynamic_buffer(buffer, kMaxHead), "\r\n\r\n", no_throw);
-  *head_done = true;
-  watchdog->cancel();
   if (ec) {
     if (ec == asio::error::not_found) co_await reply(response(431, "Request Header Fields Too Large", "text/plain", "request head over 8 KiB\n"));
     co_return;
@@ -197,6 +201,7 @@ asio::awaitable<void> HttpServer::serve(ByteStream accepted) {
                                 websocket_accept(key) + "\r\n\r\n";
     auto [wec, wn] = co_await asio::async_write(socket, asio::buffer(upgrade), no_throw);
     if (wec) co_return;
+    *handed_over = true;
     place.release();
     server_.adopt(std::make_unique<WebSocketTransport>(std::move(socket), buffer.substr(n)));
     co_return;

@@ -44,7 +44,10 @@ size_t websocket_frame_header(uint8_t opcode, uint64_t size, std::array<uint8_t,
 }
 
 WebSocketTransport::WebSocketTransport(ByteStream stream, std::string already_read)
-    : stream_(std::move(stream)), pending_(std::move(already_read)), peer_(peer_of(stream_.socket())) {
+    : stream_(std::move(stream)),
+      pending_(std::move(already_read)),
+      peer_(peer_of(stream_.socket())),
+      write_free_(stream_.get_executor(), asio::steady_timer::time_point::max()) {
   std::error_code ec;
   stream_.socket().set_option(asio::ip::tcp::no_delay(true), ec);
 }
@@ -83,8 +86,25 @@ asio::awaitable<std::error_code> WebSocketTransport::read_frame(protocol::Bytes&
       if (!fin || size > 125) throw protocol::ProtocolError("WebSocket control frame fragmented or over 125 bytes");
       uint8_t body[125];
       if (auto ec = co_await read_exactly(body, size_t(size))) co_return ec;
-      if (opcode == kClose) co_return asio::error::eof;
-      if (opcode != kPing && opcode != kPong) throw protocol::ProtocolError("unknown WebSocket control frame");
+      for (size_t i = 0; i < size; ++i) body[i] ^= mask[i % 4];
+      if (opcode == kClose) {
+        // RFC 6455 5.5.1: echo the status code (none given: none echoed), then the connection ends.
+        if (size == 1) throw protocol::ProtocolError("WebSocket Close with a one-byte body");
+        co_await send_close(size >= 2 ? uint16_t(body[0] << 8 | body[1]) : 0, "");
+        co_return asio::error::eof;
+      }
+      if (opcode == kPing) {
+        // RFC 6455 5.5.2: a Pong with the Ping's data, as soon as the writer lets it in.
+        co_await lock_writes();
+        std::array<uint8_t, 10> pong{};
+        const size_t n = websocket_frame_header(kPong, size, pong);
+        const std::array<asio::const_buffer, 2> out{asio::buffer(pong.data(), n), asio::buffer(body, size_t(size))};
+        auto [ec, written] = co_await asio::async_write(stream_, out, no_throw);
+        unlock_writes();
+        if (ec) co_return ec;
+        continue;
+      }
+      if (opcode != kPong) throw protocol::ProtocolError("unknown WebSocket control frame");
       continue;
     }
     if (opcode == kText) throw protocol::ProtocolError("a text WebSocket message: the protocol is binary");
@@ -92,7 +112,10 @@ asio::awaitable<std::error_code> WebSocketTransport::read_frame(protocol::Bytes&
     if ((opcode == kBinary) == in_message) throw protocol::ProtocolError("WebSocket fragments out of order");
     in_message = true;
     // The limit is checked before a byte of the payload is read or room is made for it.
-    if (size > kMaxMessage - frame.size()) throw protocol::ProtocolError("WebSocket message over the frame limit");
+    if (size > kMaxMessage - frame.size()) {
+      close_code_ = 1009;
+      throw protocol::ProtocolError("WebSocket message over the frame limit");
+    }
     const size_t at = frame.size();
     frame.resize(at + size_t(size));
     if (auto ec = co_await read_exactly(frame.data() + at, size_t(size))) co_return ec;
@@ -107,7 +130,50 @@ asio::awaitable<std::error_code> WebSocketTransport::read_frame(protocol::Bytes&
   co_return std::error_code();
 }
 
+asio::awaitable<void> WebSocketTransport::lock_writes() {
+  // The timer never expires: cancel() wakes its waiters, who look again.
+  while (writing_) co_await write_free_.async_wait(no_throw);
+  writing_ = true;
+}
+
+void WebSocketTransport::unlock_writes() {
+  writing_ = false;
+  write_free_.cancel();
+}
+
+asio::awaitable<void> WebSocketTransport::send_close(uint16_t code, const std::string& reason) {
+  if (close_sent_) co_return;
+  close_sent_ = true;
+  uint8_t body[125];
+  size_t size = 0;
+  if (code != 0) {
+    body[0] = uint8_t(code >> 8), body[1] = uint8_t(code);
+    const std::string text = reason.substr(0, 123);
+    std::memcpy(body + 2, text.data(), text.size());
+    size = 2 + text.size();
+  }
+  co_await lock_writes();
+  std::array<uint8_t, 10> head{};
+  const size_t n = websocket_frame_header(kClose, size, head);
+  const std::array<asio::const_buffer, 2> out{asio::buffer(head.data(), n), asio::buffer(body, size)};
+  co_await asio::async_write(stream_, out, no_throw);
+  unlock_writes();
+}
+
+asio::awaitable<void> WebSocketTransport::goodbye(protocol::ErrorCode error, const std::string& reason) {
+  using protocol::ErrorCode;
+  uint16_t code = close_code_;
+  if (code == 0) code = error == ErrorCode::ShuttingDown ? 1001 : error == ErrorCode::Malformed || error == ErrorCode::BadVersion ? 1002 : 1008;
+  co_await send_close(code, reason);
+}
+
 asio::awaitable<std::error_code> WebSocketTransport::write_frames(const std::deque<Outgoing>& frames) {
+  co_await lock_writes();
+  struct Unlock {
+    WebSocketTransport* self;
+    ~Unlock() { self->unlock_writes(); }
+  } unlock{this};
+  if (close_sent_) co_return asio::error::eof;  // nothing may follow a Close
   headers_.resize(frames.size());
   buffers_.clear();
   for (size_t i = 0; i < frames.size(); ++i) {

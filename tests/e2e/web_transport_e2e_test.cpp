@@ -147,6 +147,12 @@ TEST_F(WebTransportE2ETest, AWebSocketClientSpeaksTheProtocolWithTcpMembersOfThe
   EXPECT_NE(http_get(port, "GET / HTTP/1.1\r\nHost: x\r\n\r\n").find("cows"), std::string::npos);
   EXPECT_EQ(http_get(port, "GET /nothing HTTP/1.1\r\nHost: x\r\n\r\n").rfind("HTTP/1.1 404", 0), 0u);
   EXPECT_EQ(http_get(port, "POST /ws HTTP/1.1\r\nHost: x\r\n\r\n").rfind("HTTP/1.1 405", 0), 0u);
+  // A header given twice, a name that is no token, a control character: 400, not a guess.
+  for (const char* head : {"GET / HTTP/1.1\r\nHost: x\r\nHost: y\r\n\r\n", "GET / HTTP/1.1\r\nHo st: x\r\n\r\n",
+                           "GET / HTTP/1.1\r\nHost: x\x01y\r\n\r\n", "GET /ws HTTP/1.1\r\nUpgrade: websocket\r\nupgrade: h2c\r\n\r\n"}) {
+    const std::string answer = http_get(port, head);
+    EXPECT_EQ(answer.rfind("HTTP/1.1 400", 0), 0u) << head << " -> " << answer;
+  }
 }
 
 TEST_F(WebTransportE2ETest, ForeignOriginsTextMessagesOversizedMessagesAndSlowHeadsAreCutOffWhileOthersCarryOn) {
