@@ -113,6 +113,10 @@ AssetStore::AssetStore(const fs::path& dir) : dir_(dir) {
        "added TEXT NOT NULL DEFAULT CURRENT_TIMESTAMP)");
   exec("CREATE TABLE IF NOT EXISTS sessions (name TEXT PRIMARY KEY, kind TEXT NOT NULL, token TEXT NOT NULL, "
        "state BLOB NOT NULL, updated TEXT NOT NULL DEFAULT CURRENT_TIMESTAMP)");
+  // Catalogues from before editor tokens gain the column (a session without one has no editors).
+  bool has_editor_token = false;
+  for (Statement q(db_, "PRAGMA table_info(sessions)"); q.step();) has_editor_token |= q.text(1) == "editor_token";
+  if (!has_editor_token) exec("ALTER TABLE sessions ADD COLUMN editor_token TEXT NOT NULL DEFAULT ''");
 }
 
 AssetStore::~AssetStore() { sqlite3_close(db_); }
@@ -217,10 +221,10 @@ protocol::Bytes AssetStore::read(const protocol::Hash& hash, uint64_t offset, ui
 
 std::vector<StoredSession> AssetStore::sessions() const {
   std::vector<StoredSession> out;
-  Statement q(db_, "SELECT name, token, state FROM sessions ORDER BY name");
+  Statement q(db_, "SELECT name, token, editor_token, state FROM sessions ORDER BY name");
   while (q.step()) {
     try {
-      out.push_back({as_token_hash(q.text(1)), decode_state(q.blob(2))});
+      out.push_back({as_token_hash(q.text(1)), as_token_hash(q.text(2)), decode_state(q.blob(3))});
     } catch (const Error& e) {
       log_warn("session-state-unreadable", {{"session", q.text(0)}, {"reason", e.what()}});
     }
@@ -244,9 +248,9 @@ std::optional<protocol::Snapshot> AssetStore::find_product(const std::string& ke
 }
 
 void AssetStore::save_session(const StoredSession& session) {
-  Statement(db_, "INSERT OR REPLACE INTO sessions (name, kind, token, state, updated) VALUES (?, ?, ?, ?, CURRENT_TIMESTAMP)")
+  Statement(db_, "INSERT OR REPLACE INTO sessions (name, kind, token, editor_token, state, updated) VALUES (?, ?, ?, ?, ?, CURRENT_TIMESTAMP)")
       .bind(1, session.state.session).bind(2, protocol::to_string(session.state.kind)).bind(3, session.token)
-      .bind_blob(4, protocol::encode(session.state)).step();
+      .bind(4, session.editor_token).bind_blob(5, protocol::encode(session.state)).step();
 }
 
 }  // namespace inkwire::server

@@ -18,6 +18,7 @@ namespace inkwire::server {
 
 struct StoredSession {
   std::string token;  // hash_token() of the session's token (session_token.hpp); empty: anyone may join
+  std::string editor_token;  // hash_token() of the token that makes a member an editor (authority.hpp); empty: none
   protocol::Snapshot state;
 };
 

@@ -11,6 +11,7 @@ nlohmann::json frame_log_line(SessionSync& sync, const SessionClient& client, lo
     line["product"] = {{"azimuth", sync.view().orbit().azimuth}, {"samples_loaded", t->samples_loaded()},
                        {"cells_loaded", t->cells_loaded()}, {"bytes_sent", client.bytes_sent()},
                        {"bytes_received", client.bytes_received()}};
+  if (client.refusals() > 0) line["refused"] = {{"count", client.refusals()}, {"reason", client.refusal()}};
   if (const auto expression = sync.view().expression())
     line["expression"] = {{"name", name_of(expression->expression)}, {"intensity", expression->intensity}};
   return line;

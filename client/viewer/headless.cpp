@@ -47,7 +47,8 @@ int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& 
       view.azimuth = o.azimuth + 360.0f * float(i) / float(o.frames);
       view.elevation = o.elevation;
     }
-    if (o.present && sync.view().turntable()) client.send(view.pose(uint32_t(i + 1)));
+    // A refused presenter stops: its views would only be refused again.
+    if (o.present && sync.view().turntable() && client.refusals() == 0) client.send(view.pose(uint32_t(i + 1)));
     canvas.bind();
     sync.view().draw(o.size, double(i) / o.fps, i);
     writer.write(canvas.read());

@@ -100,10 +100,17 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
   TurntableOrbit presented{.zoom = 0.0f};  // none sent yet
   protocol::ObjectPose followed{.sequence = ~0u};  // none shown yet
   Orbit& orbit = input.orbit;
+  uint64_t refusals = 0;  // the server's refusals seen so far (a change this member may not make)
   while (!context->should_close() && client.connected()) {
     const double now = glfwGetTime(), dt = std::min(now - last_time, 0.1);
     last_time = now;
     bool dirty = sync.poll();
+    if (client.refusals() != refusals) {
+      // Refused: the session's value came back; stop presenting what nobody will see.
+      refusals = client.refusals();
+      present = false;
+      dirty = true;
+    }
     TurntableView* product = sync.view().turntable();
     if (product) {
       if (!turntable_started) orbit = Orbit{.azimuth = 0, .elevation = 0, .distance = 1.0f}, turntable_started = true;
@@ -204,6 +211,7 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
         if (auto change = panel.draw(sync.state().style)) client.send(*change);
       }
       if (!sync.view().error().empty()) ImGui::TextColored(ImVec4(0.9f, 0.3f, 0.3f, 1), "%s", sync.view().error().c_str());
+      if (refusals > 0) ImGui::TextColored(ImVec4(0.95f, 0.6f, 0.2f, 1), "Refused: %s", client.refusal().c_str());
     }
     ImGui::PopAllowKeyboardFocus();
     ImGui::End();

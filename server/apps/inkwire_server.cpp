@@ -11,6 +11,7 @@
 #include "common/log.hpp"
 #include "server/products/product_store.hpp"
 #include "server/server.hpp"
+#include "server/session_token.hpp"
 
 using namespace inkwire;
 
@@ -18,7 +19,7 @@ namespace {
 
 // `inkwire-server add-product`: a turntable session NAME in the data folder, from a folder of
 // photos or a mesh, made once (the same inputs and settings again find the stored product).
-int add_product(const std::string& name, const server::ProductSource& source, const std::string& data) {
+int add_product(const std::string& name, const server::ProductSource& source, const std::string& data, const std::string& editor_token) {
   if (name.empty() || name.size() > protocol::kMaxName ||
       name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_.") != std::string::npos)
     throw Error("product name '" + name + "' must be 1-64 letters, digits, - _ .");
@@ -36,11 +37,12 @@ int add_product(const std::string& name, const server::ProductSource& source, co
     std::printf("%spair %d/%d %s\n", bar.c_str(), done, total, line.c_str());
     std::fflush(stdout);
   }, &made);
-  // Re-adding under a name keeps nothing of the old session but its token.
-  std::string token;
+  // Re-adding under a name keeps nothing of the old session but its tokens (a new editor token
+  // replaces the old one).
+  std::string token, editor = server::hash_token(editor_token);
   for (const auto& s : store.sessions())
-    if (s.state.session == name) token = s.token;
-  store.save_session({.token = token, .state = state});
+    if (s.state.session == name) token = s.token, editor = editor_token.empty() ? s.editor_token : editor;
+  store.save_session({.token = token, .editor_token = editor, .state = state});
   uint64_t bytes = 0;
   for (const auto& a : state.assets) bytes += a.size;
   std::printf("%s product '%s': %zu photos %dx%d, %u tween cells, %llu bytes in %s\n", made ? "stored" : "already stored:",
@@ -63,7 +65,7 @@ int main(int argc, char** argv) {
   app.add_option("--name", name, "this instance's name, unique among the instances sharing a broker (default inkwire-server)");
   app.add_flag("--quiet", quiet, "log warnings and errors only");
 
-  std::string product_name, product_data;
+  std::string product_name, product_data, editor_token;
   server::ProductSource source;
   CLI::App* add = app.add_subcommand("add-product", "make a turntable session NAME from a folder of photos or a mesh, once");
   add->add_option("name", product_name, "the session's name, as clients and pages ask for it")->required();
@@ -84,6 +86,9 @@ int main(int argc, char** argv) {
                   "samples on a geodesic sphere instead of a ring: 0, 1 or 2 (12, 42, 162 samples), views from any side")
       ->needs(mesh);
   add->add_option("--data", product_data, "data folder (default ./inkwire-data)");
+  add->add_option("--editor-token", editor_token,
+                  "who joins the product with this token may present it and change its style; visitors only turn their own view "
+                  "(without it the product keeps the editor token it had; one never given has no editor)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -93,7 +98,7 @@ int main(int argc, char** argv) {
     try {
       if (source.photos.empty() && source.mesh.empty()) throw Error("add-product needs --photos DIR or --mesh FILE");
       if (quiet) set_log_level(LogLevel::Warn);
-      return add_product(product_name, source, product_data);
+      return add_product(product_name, source, product_data, editor_token);
     } catch (const std::exception& e) {
       std::cerr << "inkwire-server add-product: " << e.what() << "\n";
       return 1;

@@ -64,13 +64,14 @@ BrokerEvent parse_event(std::string_view payload) {
 
 std::string session_definition(const StoredSession& stored) {
   const protocol::Bytes frame = protocol::encode(stored.state);
-  return counted(stored.token) + std::string(frame.begin(), frame.end());
+  return counted(stored.token) + counted(stored.editor_token) + std::string(frame.begin(), frame.end());
 }
 
 StoredSession parse_session_definition(std::string_view text) {
   Reader r{text};
   StoredSession stored;
   stored.token = r.name("token");
+  stored.editor_token = r.name("editor token");
   protocol::Message message = r.frame();
   auto* snapshot = std::get_if<protocol::Snapshot>(&message);
   if (!snapshot) throw ProtocolError("broker text: a session's definition holds no snapshot");

@@ -28,7 +28,7 @@ std::string event_header(int64_t published_us, uint64_t sender, const std::strin
 // The whole published text back. Throws protocol::ProtocolError naming what is wrong.
 BrokerEvent parse_event(std::string_view payload);
 
-// A session's definition as instances share it: its token's digest and its state as a snapshot.
+// A session's definition as instances share it: its tokens' digests and its state as a snapshot.
 std::string session_definition(const StoredSession& stored);
 // Throws protocol::ProtocolError naming what is wrong.
 StoredSession parse_session_definition(std::string_view text);

@@ -74,7 +74,6 @@ nlohmann::json instance_config(const std::string& name, const BrokerUnderTest& b
   return {{"name", name}, {"broker", broker.url()}, {"http", "127.0.0.1:0"}, {"sessions", std::move(sessions)}};
 }
 
-std::string metrics_of(ServerUnderTest& server) { return http_get(http_port(server), "GET /metrics HTTP/1.1\r\nHost: x\r\n\r\n"); }
 std::string health_of(ServerUnderTest& server) { return http_get(http_port(server), "GET /healthz HTTP/1.1\r\nHost: x\r\n\r\n"); }
 
 // Instance one defines the session "cows"; instance two defines none and learns it from the broker.

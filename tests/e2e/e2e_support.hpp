@@ -91,6 +91,9 @@ inline std::string http_get(int port, const std::string& request) {
   return answer;
 }
 
+// What the server's /metrics says now (its config must give "http").
+inline std::string metrics_of(ServerUnderTest& server) { return http_get(http_port(server), "GET /metrics HTTP/1.1\r\nHost: x\r\n\r\n"); }
+
 // A headless client of `session` writing DIR/NAME-%04d.png and the frame log DIR/NAME.jsonl.
 inline std::unique_ptr<Process> headless_client(const ServerUnderTest& server, const std::string& session, const fs::path& dir,
                                                 const std::string& name, int frames, int fps) {

@@ -188,3 +188,42 @@ TEST_F(SessionE2ETest, AKilledServerRestartsWithItsCatalogueAndAssetsIntact) {
   const auto files = after.fetch_assets(state, fresh);  // verifies the SHA-256 of what arrives
   EXPECT_EQ(fs::file_size(files.at(0)), fs::file_size(kMesh));
 }
+
+// Authority on the server (SPEC W8): a scene that names an editor token takes style, camera and
+// pose changes from editors only. A visitor's change is refused with the reason, the visitor's
+// copy goes back to the session's value and nobody else sees the change; the editor's reaches
+// everyone. A wrong editor token on an open session is a wrong token.
+TEST_F(SessionE2ETest, AVisitorsChangeIsRefusedWithTheReasonWhileTheEditorsReachesEveryone) {
+  const fs::path dir = output_dir("editor-token");
+  ServerUnderTest server(dir, {{"http", "127.0.0.1:0"}, {"sessions", {{{"name", "lecture"}, {"kind", "scene"}, {"style", "default"}, {"editor_token", "t3acher"},
+                                              {"assets", {{{"path", kMesh.string()}}}}}}}});
+  SessionClient editor(server.address(), "teacher"), visitor(server.address(), "student"), other(server.address(), "other");
+  editor.join("lecture", "t3acher");
+  visitor.join("lecture", "");
+  other.join("lecture", "");
+  try {
+    SessionClient guesser(server.address(), "guesser");
+    guesser.join("lecture", "teacher?");
+    ADD_FAILURE() << "a wrong editor token was let in";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("wrong token"), std::string::npos) << e.what();
+  }
+
+  const uint64_t seen = other.updates();
+  visitor.send(protocol::StyleChange{.renderer = "comic", .settings = {}});
+  ASSERT_TRUE(eventually([&] { return visitor.refusals() == 1 && visitor.state().style.renderer == "default"; }))
+      << "refusals " << visitor.refusals() << ", style " << visitor.state().style.renderer;
+  EXPECT_NE(visitor.refusal().find("only the session's editors may change the style"), std::string::npos) << visitor.refusal();
+  EXPECT_TRUE(visitor.connected());
+  visitor.send(orbit_pose(90, 10, 2, 1));
+  ASSERT_TRUE(eventually([&] { return visitor.refusals() == 2; }));
+
+  editor.send(protocol::StyleChange{.renderer = "hatching", .settings = {}});
+  ASSERT_TRUE(eventually([&] { return other.state().style.renderer == "hatching" && visitor.state().style.renderer == "hatching"; }));
+  EXPECT_EQ(editor.refusals(), 0u);
+  EXPECT_EQ(other.refusals(), 0u);
+  // The one change the other member saw was the editor's (the refused ones never reached it).
+  EXPECT_EQ(other.updates(), seen + 1);
+  const std::string metrics = metrics_of(server);
+  EXPECT_NE(metrics.find("inkwire_changes_refused_total 2"), std::string::npos) << metrics;
+}

@@ -220,15 +220,17 @@ TEST(TurntableOrbitTest, AViewSharedAsAPoseComesBackAsTheSameView) {
   for (int i = 0; i < 4; ++i) EXPECT_NEAR(rotation[i], web[i], 1e-6f) << i;
 }
 
-TEST_F(TurntableE2ETest, FollowersShowThePresentersViewAndOthersKeepTheirOwn) {
+TEST_F(TurntableE2ETest, FollowersShowTheEditorsViewAVisitorWhoTriesToPresentIsRefusedAndOthersKeepTheirOwn) {
   const fs::path dir = output_dir("turntable-presenter");
   Process add("inkwire-server", {"add-product", "duck", "--mesh", kDuck.string(), "--samples", "12", "--size", "128", "--data",
-                                 (dir / "data").string()},
+                                 (dir / "data").string(), "--editor-token", "sh0p-0wner"},
               dir / "add.log");
   ASSERT_EQ(add.wait(), 0) << add.output();
   ServerUnderTest server(dir, {{"sessions", nlohmann::json::array()}});
   const auto client = [&](const std::string& name, int frames, const std::string& view, const std::string& mode) {
-    return product_client(server, "duck", dir, name, frames, view, true, "", mode.empty() ? std::vector<std::string>{} : std::vector{mode});
+    std::vector<std::string> more = mode.empty() ? std::vector<std::string>{} : std::vector{mode};
+    if (name == "presenter") more.insert(more.end(), {"--token", "sh0p-0wner"});
+    return product_client(server, "duck", dir, name, frames, view, true, "", more);
   };
   // A follower and a visitor of their own are there (3 s at 60 frames a second) while the
   // presenter turns the product from 30 degrees, 9 degrees a frame.
@@ -236,6 +238,13 @@ TEST_F(TurntableE2ETest, FollowersShowThePresentersViewAndOthersKeepTheirOwn) {
   auto visitor = client("visitor", 180, "200", "");
   ASSERT_TRUE(eventually([&] { return !frame_log(dir / "follower.jsonl").empty() && !frame_log(dir / "visitor.jsonl").empty(); }))
       << follower->output() << visitor->output();
+  // A visitor without the editor token tries to present first: refused, with the reason shown.
+  auto stranger = client("stranger", 20, "120", "--present");
+  ASSERT_EQ(stranger->wait(), 0) << stranger->output();
+  const auto strange = frame_log(dir / "stranger.jsonl");
+  ASSERT_FALSE(strange.empty());
+  ASSERT_TRUE(strange.back().contains("refused")) << strange.back().dump();
+  EXPECT_NE(strange.back()["refused"]["reason"].get<std::string>().find("only the product's editor"), std::string::npos);
   auto presenter = client("presenter", 40, "30", "--present");
   ASSERT_EQ(presenter->wait(), 0) << presenter->output();
   ASSERT_EQ(follower->wait(), 0) << follower->output();
@@ -243,7 +252,8 @@ TEST_F(TurntableE2ETest, FollowersShowThePresentersViewAndOthersKeepTheirOwn) {
   const auto presented = frame_log(dir / "presenter.jsonl");
   ASSERT_EQ(presented.size(), 40u);
   EXPECT_GT(presented.back()["product"]["bytes_sent"].get<uint64_t>(), presented.front()["product"]["bytes_sent"].get<uint64_t>());
-  // The follower shows no view the presenter did not send (the first sample's before any came).
+  // The follower shows no view the editor did not present (the first sample's before any came):
+  // none of the stranger's 120-degree turn reached it.
   const auto on_the_circle = [](double degrees) { return std::remainder(degrees, 360.0); };
   const auto was_presented = [&](double azimuth) {
     for (const auto& f : presented)

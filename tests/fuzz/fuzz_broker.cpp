@@ -30,7 +30,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     } else {
       const server::StoredSession s = server::parse_session_definition(text);
       const server::StoredSession back = server::parse_session_definition(server::session_definition(s));
-      if (back.token != s.token || !(back.state == s.state)) __builtin_trap();
+      if (back.token != s.token || back.editor_token != s.editor_token || !(back.state == s.state)) __builtin_trap();
     }
   } catch (const protocol::ProtocolError&) {
   }

@@ -34,12 +34,13 @@ TEST(BrokerFormatsTest, AChangeComesBackAsItWasPublished) {
 }
 
 TEST(BrokerFormatsTest, ASessionDefinitionComesBackWhole) {
-  StoredSession s{.token = hash_token("s3cret"), .state = {}};
+  StoredSession s{.token = hash_token("s3cret"), .editor_token = hash_token("ed1tor"), .state = {}};
   s.state.session = "cows";
   s.state.revision = 9;
   s.state.assets.push_back({.hash = {}, .size = 10, .kind = protocol::AssetKind::Mesh, .name = "cow.off"});
   const StoredSession back = parse_session_definition(session_definition(s));
   EXPECT_EQ(back.token, s.token);
+  EXPECT_EQ(back.editor_token, s.editor_token);
   EXPECT_EQ(back.state, s.state);
 }
 

@@ -25,13 +25,22 @@ export class SessionElement extends HTMLElement {
     this.message = this.shadowRoot.querySelector('.message');
   }
 
+  // What connectedCallback adds, disconnectedCallback removes (STYLE 17): listeners are added
+  // with `this.connection` (an AbortSignal) and go with it, the observer is disconnected.
   connectedCallback() {
     this.setAttribute('role', 'img');
-    new ResizeObserver(() => this.redraw()).observe(this);
+    this.aborter = new AbortController();
+    this.resizeObserver = new ResizeObserver(() => this.redraw());
+    this.resizeObserver.observe(this);
     this.start();
   }
 
+  get connection() { return this.aborter.signal; }
+
   disconnectedCallback() {
+    this.aborter?.abort();
+    this.resizeObserver?.disconnect();
+    this.resizeObserver = null;
     this.session?.close();
     this.session = null;
   }
@@ -45,12 +54,19 @@ export class SessionElement extends HTMLElement {
     this.dispatchEvent(new CustomEvent('error', { detail: reason }));
   }
 
+  // A change the server refused (this member may not make it): said, and the element goes on.
+  refused(reason) {
+    this.message.textContent = `Refused: ${reason}`;
+    this.dispatchEvent(new CustomEvent('refused', { detail: reason }));
+  }
+
   // A new session from the attributes, replacing any before it.
   openSession() {
     this.session?.close();
     const server = this.getAttribute('server') ?? `${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/ws`;
     this.session = new Session(server, this.getAttribute('session') ?? '', this.getAttribute('token') ?? '');
     this.session.addEventListener('error', (e) => this.fail(e.detail));
+    this.session.addEventListener('refused', (e) => this.refused(e.detail));
     return this.session;
   }
 

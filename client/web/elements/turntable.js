@@ -67,9 +67,11 @@ export class InkwireTurntable extends SessionElement {
   connectedCallback() {
     if (!this.hasAttribute('tabindex')) this.tabIndex = 0;
     if (!this.hasAttribute('aria-label')) this.setAttribute('aria-label', `${this.getAttribute('session') ?? 'Product'}: drag or use the arrow keys to turn it`);
-    this.shadowRoot.querySelector('button').addEventListener('click', () => (document.fullscreenElement ? document.exitFullscreen() : this.requestFullscreen()));
-    this.listen();
     super.connectedCallback();
+    this.shadowRoot.querySelector('button').addEventListener('click', () => (document.fullscreenElement ? document.exitFullscreen() : this.requestFullscreen()),
+                                                             { signal: this.connection });
+    this.listen(this.connection);
+    this.spin(this.connection);
   }
 
   attributeChangedCallback(name, before, after) {
@@ -83,12 +85,14 @@ export class InkwireTurntable extends SessionElement {
     this.startedAt = performance.now();
     this.firstViewPhotos = this.firstViewBytes = undefined;
     this.presented = null;  // a new session hears this view again
+    this.presentRefused = false;
     const session = this.openSession();
     const pendingCells = [];
     session.addEventListener('tween-data', (e) => {
       if (this.view) this.addCell(e.detail);
       else pendingCells.push(e.detail);
     });
+    session.addEventListener('refused', () => { this.presentRefused = true; });
     session.addEventListener('state', (e) => {
       if (e.detail.type === 'object-pose') this.follow(e.detail);
     });
@@ -105,7 +109,6 @@ export class InkwireTurntable extends SessionElement {
         if (this.session === session) this.fail(error.message);
       }
     });
-    this.spin();
   }
 
   addCell({ pair, data }) {
@@ -175,9 +178,10 @@ export class InkwireTurntable extends SessionElement {
     this.azimuth = azimuth;
   }
 
-  // Presenting: the view goes to the session whenever it changes, at most once a frame.
+  // Presenting: the view goes to the session whenever it changes, at most once a frame; a
+  // presenter the server refused (only the product's editor presents) stops sending.
   present() {
-    if (!this.hasAttribute('present') || !this.session || !this.snapshot) return;
+    if (!this.hasAttribute('present') || this.presentRefused || !this.session || !this.snapshot) return;
     const view = [this._azimuth, this.elevation, this.zoom];
     if (this.presented && view.every((v, i) => v === this.presented[i])) return;
     this.presented = view;
@@ -197,14 +201,15 @@ export class InkwireTurntable extends SessionElement {
     }
   }
 
-  // Auto-spin until the first touch, unless motion is unwelcome; then inertia after a drag.
-  spin() {
+  // Auto-spin until the first touch, unless motion is unwelcome; then inertia after a drag. One
+  // loop while the element is in the page, whatever its attributes do; it ends with `signal`.
+  spin(signal) {
     const reduced = window.matchMedia?.('(prefers-reduced-motion: reduce)').matches;
     let last = performance.now();
     const step = (now) => {
       const dt = Math.min((now - last) / 1000, 0.1);
       last = now;
-      if (!this.isConnected) return;
+      if (signal.aborted) return;
       if (!this.touched && !reduced && this.getAttribute('auto-rotate') !== 'off' && this.hasAttribute('loaded')) this.azimuth = this._azimuth + kAutoSpin * dt;
       else if (Math.abs(this.velocity) > 2 && this.pointers.size === 0) {
         this.azimuth = this._azimuth + this.velocity * dt;
@@ -215,15 +220,16 @@ export class InkwireTurntable extends SessionElement {
     requestAnimationFrame(step);
   }
 
-  listen() {
-    const c = this.canvas;
+  // Pointer, wheel and key handlers, removed with `signal` (when the element leaves the page).
+  listen(signal) {
+    const c = this.canvas, options = { signal };
     c.addEventListener('pointerdown', (e) => {
       this.touched = true;
       this.velocity = 0;
       c.setPointerCapture(e.pointerId);
       this.pointers.set(e.pointerId, { x: e.clientX, y: e.clientY, t: e.timeStamp });
       c.classList.add('dragging');
-    });
+    }, options);
     c.addEventListener('pointermove', (e) => {
       const p = this.pointers.get(e.pointerId);
       if (!p) return;
@@ -240,18 +246,18 @@ export class InkwireTurntable extends SessionElement {
       // Inertia follows the last moments of the drag, at most a turn a second.
       this.velocity = Math.min(Math.max(0.7 * this.velocity + 0.3 * ((-dx * kDegreesPerPixel) / dt), -360), 360);
       Object.assign(p, { x: e.clientX, y: e.clientY, t: e.timeStamp });
-    });
+    }, options);
     const up = (e) => {
       this.pointers.delete(e.pointerId);
       if (this.pointers.size === 0) c.classList.remove('dragging');
     };
-    c.addEventListener('pointerup', up);
-    c.addEventListener('pointercancel', up);
+    c.addEventListener('pointerup', up, options);
+    c.addEventListener('pointercancel', up, options);
     c.addEventListener('wheel', (e) => {
       e.preventDefault();
       this.touched = true;
       this.setZoom(this.zoom * Math.pow(0.9, Math.sign(e.deltaY)));
-    }, { passive: false });
+    }, { passive: false, signal });
     this.addEventListener('keydown', (e) => {
       if (e.key !== 'ArrowLeft' && e.key !== 'ArrowRight' || !this.snapshot) return;
       e.preventDefault();
@@ -262,7 +268,7 @@ export class InkwireTurntable extends SessionElement {
       dirs.forEach((s, i) => { if (s[0] * d[0] + s[2] * d[2] > dirs[nearest][0] * d[0] + dirs[nearest][2] * d[2]) nearest = i; });
       const next = dirs[(nearest + (e.key === 'ArrowRight' ? 1 : -1) + dirs.length) % dirs.length];
       this.azimuth = (Math.atan2(next[0], next[2]) * 180) / Math.PI;
-    });
+    }, options);
   }
 
   setZoom(zoom) {

@@ -2,7 +2,7 @@
 // client/net/session_client.cpp: hello, join, the session's state, tween data, and assets
 // fetched in chunks (4 requests ahead) into the browser's cache by content hash, each checked
 // against its SHA-256 before use, so a second visit downloads only what changed.
-import { AssetKind, decodeFrame, encode, kMaxChunk } from '../protocol/messages.js';
+import { AssetKind, decodeFrame, encode, ErrorCode, kMaxChunk } from '../protocol/messages.js';
 
 const kRequestsAhead = 4;
 const kCacheName = 'inkwire-assets-v1';
@@ -10,7 +10,9 @@ const toHex = (bytes) => Array.from(bytes, (b) => b.toString(16).padStart(2, '0'
 
 export class Session extends EventTarget {
   // Events: 'snapshot' (detail: the snapshot), 'tween-data' (detail: {pair, data}), 'state' (a
-  // style, pose or expression change: detail the message), 'error' (detail: the reason), 'close'.
+  // style, pose or expression change: detail the message), 'refused' (a change this member may
+  // not make: detail the server's reason; the session's own value follows as a 'state'), 'error'
+  // (detail: the reason), 'close'.
   constructor(url, session, token = '', clientName = 'inkwire-web') {
     super();
     this.session = session;
@@ -54,6 +56,7 @@ export class Session extends EventTarget {
     else if (m.type === 'expression-code' || m.type === 'style-change' || m.type === 'camera-pose' || m.type === 'object-pose')
       this.dispatchEvent(new CustomEvent('state', { detail: m }));
     else if (m.type === 'asset-chunk') this.chunk(m);
+    else if (m.type === 'error' && m.code === ErrorCode['not-allowed']) this.dispatchEvent(new CustomEvent('refused', { detail: m.reason }));
     else if (m.type === 'error') {
       for (const w of this.waiting.values()) w.reject(new Error(m.reason));
       this.waiting.clear();
