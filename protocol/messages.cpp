@@ -56,7 +56,7 @@ void serialise(Stream& s, Welcome& m) {
 
 template <class Stream>
 void serialise(Stream& s, ErrorMessage& m) {
-  enumeration(s, m.code, 1, 9, "error code");
+  enumeration(s, m.code, 1, 10, "error code");
   s.text(m.reason, kMaxReason);
 }
 
@@ -215,6 +215,88 @@ void serialise(Stream& s, Snapshot& m) {
   serialise(s, m.product);
 }
 
+template <class Stream>
+void flag(Stream& s, bool& v, const char* what) {
+  uint8_t raw = v;
+  s.u8(raw);
+  if constexpr (Stream::reading) {
+    if (raw > 1) throw ProtocolError(std::string(what) + " is not 0 or 1");
+    v = raw == 1;
+  }
+}
+
+template <class Stream>
+void serialise(Stream& s, Publish& m) {
+  flag(s, m.camera, "publish camera");
+  flag(s, m.microphone, "publish microphone");
+}
+
+template <class Stream>
+void serialise(Stream& s, NeutralPhoto& m) {
+  s.blob(m.jpeg, kMaxPhotoBytes);
+}
+
+template <class Stream>
+void serialise(Stream& s, FaceCrop& m) {
+  s.u32(m.time_ms);
+  for (uint16_t* v : {&m.frame_width, &m.frame_height, &m.x, &m.y, &m.width, &m.height}) s.u16(*v);
+  s.blob(m.jpeg, kMaxCropBytes);
+  if constexpr (Stream::reading) {
+    check(m.frame_width >= 16 && m.frame_height >= 16 && m.frame_width <= 4096 && m.frame_height <= 4096, "face crop: frame size outside 16..4096");
+    check(m.width >= 8 && m.height >= 8 && uint32_t(m.x) + m.width <= m.frame_width && uint32_t(m.y) + m.height <= m.frame_height,
+          "face crop: rectangle outside its frame");
+  }
+}
+
+template <class Stream>
+void serialise(Stream& s, FaceRegion& m) {
+  flag(s, m.found, "face region found");
+  for (uint16_t* v : {&m.x, &m.y, &m.width, &m.height}) s.u16(*v);
+}
+
+template <class Stream>
+void serialise(Stream& s, VoiceFrame& m) {
+  s.u16(m.member);
+  s.u32(m.time_ms);
+  s.blob(m.opus, kMaxVoiceBytes);
+  if constexpr (Stream::reading) check(!m.opus.empty(), "empty voice frame");
+}
+
+template <class Stream>
+void serialise(Stream& s, MemberFace& m) {
+  s.u16(m.member);
+  s.u32(m.time_ms);
+  serialise(s, m.expression);
+  for (int8_t* v : {&m.yaw, &m.pitch, &m.roll}) {
+    auto raw = uint8_t(*v);
+    s.u8(raw);
+    *v = int8_t(raw);
+  }
+  enumeration(s, m.source, 0, 2, "face source");
+}
+
+template <class Stream>
+void serialise(Stream& s, CallMember& m) {
+  s.u16(m.member);
+  s.text(m.name, kMaxName);
+  flag(s, m.camera, "member camera");
+  flag(s, m.microphone, "member microphone");
+  flag(s, m.speaking, "member speaking");
+  flag(s, m.face_found, "member face found");
+  const size_t n = s.count(m.assets.size(), 2, "member assets");
+  if constexpr (Stream::reading) m.assets.resize(n);
+  for (AssetAnnounce& a : m.assets) serialise(s, a);
+  if constexpr (Stream::reading) check(m.member != 0, "member number 0");
+}
+
+template <class Stream>
+void serialise(Stream& s, Roster& m) {
+  s.u16(m.you);
+  const size_t n = s.count(m.members.size(), kMaxMembers, "call members");
+  if constexpr (Stream::reading) m.members.resize(n);
+  for (CallMember& member : m.members) serialise(s, member);
+}
+
 // Runs a message's serialise function over a writing or measuring stream. The streams take
 // fields by reference so one function serves reading too; writing and measuring never change them.
 template <class Stream>
@@ -257,14 +339,15 @@ MessageType type_of(const Message& m) { return MessageType(m.index() + 1); }
 const char* name_of(MessageType type) {
   static const char* names[] = {"hello", "welcome", "error", "ping", "pong", "join", "leave", "snapshot",
                                 "style-change", "camera-pose", "object-pose", "expression-code", "tween-data",
-                                "asset-announce", "asset-request", "asset-chunk"};
+                                "asset-announce", "asset-request", "asset-chunk", "publish", "neutral-photo",
+                                "face-crop", "face-region", "voice-frame", "member-face", "roster"};
   const auto i = unsigned(type);
   return i >= 1 && i <= kMessageTypes ? names[i - 1] : "unknown";
 }
 
 bool is_state(MessageType type) {
   return type == MessageType::StyleChange || type == MessageType::CameraPose || type == MessageType::ObjectPose ||
-         type == MessageType::ExpressionCode || type == MessageType::Snapshot;
+         type == MessageType::ExpressionCode || type == MessageType::Snapshot || type == MessageType::Roster;
 }
 
 bool apply_state_change(Snapshot& s, const Message& m) {

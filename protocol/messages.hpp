@@ -18,7 +18,7 @@
 namespace inkwire::protocol {
 
 inline constexpr uint32_t kMagic = 0x574B4E49;  // the bytes "INKW" read as a little-endian u32
-inline constexpr uint16_t kVersion = 2;  // 2: snapshots describe a turntable's product
+inline constexpr uint16_t kVersion = 3;  // 2: snapshots describe a turntable's product; 3: calls, refused changes
 
 inline constexpr size_t kMaxName = 64;           // session, client and server names
 inline constexpr size_t kMaxToken = 128;
@@ -31,19 +31,29 @@ inline constexpr size_t kMaxProductSamples = 360; // sample photos of one produc
 inline constexpr size_t kMaxChunk = 64 * 1024;   // asset bytes per chunk
 inline constexpr size_t kMaxTween = 16 * 1024;   // one cell's tween data
 inline constexpr uint64_t kMaxAssetBytes = uint64_t(1) << 30;
+// Calls (SPEC F7-F13).
+// What a frame may carry; the server drops what is over its own, smaller limits (server/call/)
+// and counts it, so a client with a bad encoder loses a crop, not its call.
+inline constexpr size_t kMaxCropBytes = 64 * 1024;    // one face crop, a JPEG of about 160 px (4-10 KB)
+inline constexpr size_t kMaxPhotoBytes = 120 * 1024;  // a member's neutral photo, JPEG
+inline constexpr size_t kMaxVoiceBytes = 1275;        // one Opus packet at most (RFC 6716); 12 kbit/s x 60 ms is 90 bytes
+inline constexpr size_t kMaxMembers = 64;             // members a roster lists
 
 enum class MessageType : uint16_t {
   Hello = 1, Welcome, Error, Ping, Pong, Join, Leave, Snapshot, StyleChange, CameraPose,
-  ObjectPose, ExpressionCode, TweenData, AssetAnnounce, AssetRequest, AssetChunk
+  ObjectPose, ExpressionCode, TweenData, AssetAnnounce, AssetRequest, AssetChunk,
+  Publish, NeutralPhoto, FaceCrop, FaceRegion, VoiceFrame, MemberFace, Roster
 };
-inline constexpr uint16_t kMessageTypes = 16;
+inline constexpr uint16_t kMessageTypes = 23;
 
 enum class SessionKind : uint8_t { Scene = 1, Turntable = 2, Conference = 3 };
 // Samples: a product's sample photos in sample order; Matte: their mattes, in the same order.
 enum class AssetKind : uint8_t { Mesh = 1, Image = 2, Samples = 3, Tween = 4, Landmarks = 5, Matte = 6 };
 enum class ErrorCode : uint16_t {
   BadVersion = 1, Malformed = 2, NoSession = 3, BadToken = 4, NotJoined = 5, NoAsset = 6,
-  TooSlow = 7, ShuttingDown = 8, Refused = 9
+  TooSlow = 7, ShuttingDown = 8, Refused = 9,
+  // A change this member may not make (SPEC W8): not applied, the connection stays open.
+  NotAllowed = 10
 };
 
 std::string to_string(SessionKind kind);
@@ -194,9 +204,90 @@ struct Snapshot {
   Product product;
 };
 
+// ---- Calls (SPEC F7-F13): every member of a conference session may publish its own face and
+// voice. Times are milliseconds on the publisher's own clock (from when it started sending), one
+// clock for its crops and its voice, so receivers can keep mouth and sound in step.
+
+// What a member publishes from now on (C->S): its camera, its microphone (muted: nothing is sent).
+struct Publish {
+  static constexpr MessageType type = MessageType::Publish;
+  bool operator==(const Publish&) const = default;
+  bool camera = false, microphone = false;
+};
+
+// A member's neutral photo (C->S), taken before joining and retaken at will: the server finds
+// the face and its landmarks and lists both in the roster as the member's assets.
+struct NeutralPhoto {
+  static constexpr MessageType type = MessageType::NeutralPhoto;
+  bool operator==(const NeutralPhoto&) const = default;
+  Bytes jpeg;
+};
+
+// The face region of one camera frame (C->S, at most 15 a second): the rectangle x, y, width,
+// height of the frame_width x frame_height frame that the JPEG shows (scaled to about 160 px).
+struct FaceCrop {
+  static constexpr MessageType type = MessageType::FaceCrop;
+  bool operator==(const FaceCrop&) const = default;
+  uint32_t time_ms = 0;
+  uint16_t frame_width = 0, frame_height = 0;
+  uint16_t x = 0, y = 0, width = 0, height = 0;
+  Bytes jpeg;
+};
+
+// Where the server found the publisher's face (S->C, to the publisher only): the box in frame
+// pixels to crop around next, or found = false (then the next crop is the whole frame).
+struct FaceRegion {
+  static constexpr MessageType type = MessageType::FaceRegion;
+  bool operator==(const FaceRegion&) const = default;
+  bool found = false;
+  uint16_t x = 0, y = 0, width = 0, height = 0;
+};
+
+// One Opus packet of a member's voice (mono, 20-60 ms). A client sends member 0; the server
+// fills in the sender's member number and relays the packet as it came.
+struct VoiceFrame {
+  static constexpr MessageType type = MessageType::VoiceFrame;
+  bool operator==(const VoiceFrame&) const = default;
+  uint16_t member = 0;
+  uint32_t time_ms = 0;
+  Bytes opus;
+};
+
+// What a member's face shows (S->C): the expression code (as ExpressionCode), the head's yaw,
+// pitch and roll in degrees, and where it came from.
+enum class FaceSource : uint8_t { Neutral = 0, Camera = 1, Voice = 2 };
+struct MemberFace {
+  static constexpr MessageType type = MessageType::MemberFace;
+  bool operator==(const MemberFace&) const = default;
+  uint16_t member = 0;
+  uint32_t time_ms = 0;  // of the crop or voice frame it was read from (the publisher's clock)
+  ExpressionCode expression;
+  int8_t yaw = 0, pitch = 0, roll = 0;
+  FaceSource source = FaceSource::Neutral;
+};
+
+// Every member of a call (S->C, a state message: the newest replaces the last). `assets` is
+// empty until the member's neutral photo is in, then the photo (kind image) and its landmarks.
+struct CallMember {
+  bool operator==(const CallMember&) const = default;
+  uint16_t member = 0;
+  std::string name;
+  bool camera = false, microphone = false;
+  bool speaking = false;  // among the loudest few now
+  bool face_found = true; // false when the server finds no face in its camera pictures
+  std::vector<AssetAnnounce> assets;
+};
+struct Roster {
+  static constexpr MessageType type = MessageType::Roster;
+  bool operator==(const Roster&) const = default;
+  uint16_t you = 0;  // the receiver's own member number (0: not a member of a call)
+  std::vector<CallMember> members;
+};
+
 // Alternatives in MessageType order: index + 1 == type code.
 using Message = std::variant<Hello, Welcome, ErrorMessage, Ping, Pong, Join, Leave, Snapshot, StyleChange, CameraPose,
-                             ObjectPose, ExpressionCode, TweenData, AssetAnnounce, AssetRequest, AssetChunk>;
+                             ObjectPose, ExpressionCode, TweenData, AssetAnnounce, AssetRequest, AssetChunk,
+                             Publish, NeutralPhoto, FaceCrop, FaceRegion, VoiceFrame, MemberFace, Roster>;
 
 MessageType type_of(const Message& m);
 const char* name_of(MessageType type);

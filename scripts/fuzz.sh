@@ -10,7 +10,7 @@ cd "$here"
 seconds=${1:-600}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_frames fuzz_message fuzz_tween fuzz_landmarks fuzz_http fuzz_websocket fuzz_config fuzz_broker)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_frames fuzz_message fuzz_tween fuzz_landmarks fuzz_http fuzz_websocket fuzz_config fuzz_broker fuzz_voice)
 
 if [ "${FUZZ_TABLE_ONLY:-0}" != 1 ]; then
 for p in clang libclang-rt-14-dev; do
@@ -43,7 +43,7 @@ import json
 frames = {f["type"]: bytes.fromhex(f["hex"]) for f in json.load(open("tests/golden/protocol-frames.json"))["frames"]}
 for t in ("style-change", "camera-pose", "object-pose", "expression-code"):
     open(f"fuzz-corpus/fuzz_broker/event-{t}", "wb").write(b"\x01" + b"17 1764000000000000 3 1:a4:cows" + frames[t])
-open("fuzz-corpus/fuzz_broker/definition", "wb").write(b"\x00" + b"71:sha256:" + b"0" * 64 + frames["snapshot"])
+open("fuzz-corpus/fuzz_broker/definition", "wb").write(b"\x00" + b"71:sha256:" + b"0" * 64 + b"0:" + frames["snapshot"])
 PY
 fi
 

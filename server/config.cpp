@@ -114,6 +114,7 @@ ServerConfig ServerConfig::parse(const std::string& text, const std::string& ori
     if (j.contains("http")) parse_http(j.at("http").get<std::string>(), c);
     if (j.contains("allowed_origins")) c.allowed_origins = j.at("allowed_origins").get<std::vector<std::string>>();
     if (j.contains("broker")) c.broker = j.at("broker").get<std::string>();
+    if (j.contains("call_loudest")) c.call.loudest = j.at("call_loudest").get<int>();
     if (j.contains("max_connections")) c.max_connections = j.at("max_connections").get<size_t>();
     if (j.contains("max_connections_per_address")) c.max_connections_per_address = j.at("max_connections_per_address").get<size_t>();
     if (j.contains("join_failures_allowed")) c.join_failures_allowed = j.at("join_failures_allowed").get<int>();
@@ -128,6 +129,7 @@ ServerConfig ServerConfig::parse(const std::string& text, const std::string& ori
         session.name = s.at("name").get<std::string>();
         session.kind = protocol::session_kind_from_string(s.value("kind", "scene"));
         session.token = s.value("token", "");
+        session.editor_token = s.value("editor_token", "");
         session.style = s.value("style", "default");
         session.settings = s.value("settings", std::vector<std::string>{});
         session.up = parse_up_axis(s.value("up", "auto"));
@@ -144,6 +146,7 @@ ServerConfig ServerConfig::parse(const std::string& text, const std::string& ori
   }
   if (!(c.http_head_timeout_seconds > 0.05 && c.http_head_timeout_seconds <= 300)) throw Error("config: http_head_timeout_seconds must be 0.05..300");
   if (c.max_connections < 1 || c.max_connections_per_address < 1) throw Error("config: max_connections and max_connections_per_address must be at least 1");
+  if (c.call.loudest < 1 || c.call.loudest > int(protocol::kMaxMembers)) throw Error("config: call_loudest must be 1..64");
   if (c.join_failures_allowed < 0) throw Error("config: join_failures_allowed must be 0 or more");
   if (c.queue_bytes < 2 * protocol::kMaxPayload) throw Error("config: queue_bytes must be at least two frames (262144)");
   return c;

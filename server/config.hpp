@@ -11,6 +11,7 @@
 
 #include "protocol/messages.hpp"
 #include "common/mesh_import.hpp"
+#include "server/call/call.hpp"
 #include "server/products/product_store.hpp"
 
 namespace inkwire::server {
@@ -33,6 +34,7 @@ struct SessionConfig {
   std::string name;
   protocol::SessionKind kind = protocol::SessionKind::Scene;
   std::string token;  // empty: anyone may join
+  std::string editor_token;  // who joins with it is an editor (server/authority.hpp); empty: none
   std::vector<SessionAsset> assets;
   std::string style = "default";
   std::vector<std::string> settings;  // KEY=VALUE
@@ -71,6 +73,7 @@ struct ServerConfig {
   // Several instances: "redis://HOST:PORT" of the broker they share sessions through (and
   // `name`, unique per instance). Empty: this instance runs alone.
   std::string broker;
+  CallOptions call;  // "call_loudest": voices each call member hears at once (K, default 3)
 
   // The embedded default's demo sessions; models that are not installed are left out.
   static ServerConfig embedded_default();

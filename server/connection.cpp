@@ -57,6 +57,7 @@ void Connection::close_with(ErrorCode code, const std::string& reason) {
   queue_.take_all();
   queue_.push(std::make_shared<const Bytes>(encode(ErrorMessage{.code = code, .reason = reason.substr(0, kMaxReason)})), MessageType::Error);
   closing_ = true;
+  closed_for_ = {code, reason};
   wake_.cancel();
   // A peer that does not read would keep the error unsent forever: cut it off after a second.
   auto self = shared_from_this();
@@ -127,6 +128,7 @@ asio::awaitable<void> Connection::write_loop() {
     if (co_await transport_->write_frames(batch)) break;
     server_.counters().messages_out += batch.size();
   }
+  if (closing_ && !shut_) co_await transport_->goodbye(closed_for_.first, closed_for_.second);
   shut();
 }
 
@@ -155,15 +157,17 @@ void Connection::handle(Message& message) {
     case MessageType::Error:
       log_info("client-error", {{"client", id_}, {"reason", std::get<ErrorMessage>(message).reason}});
       break;
+    case MessageType::Publish:
+    case MessageType::NeutralPhoto:
+    case MessageType::FaceCrop:
+    case MessageType::VoiceFrame:
+      publish(message);
+      break;
     case MessageType::StyleChange:
     case MessageType::CameraPose:
     case MessageType::ObjectPose:
     case MessageType::ExpressionCode:
-      if (!session_) {
-        send(ErrorMessage{.code = ErrorCode::NotJoined, .reason = std::string(name_of(type_of(message))) + " before joining a session"});
-        break;
-      }
-      server_.relay().publish(*session_, message, id_);
+      change(message);
       break;
     default:
       throw ProtocolError(std::string("a client may not send ") + name_of(type_of(message)));
@@ -176,7 +180,8 @@ void Connection::join(const Join& join) {
     send(ErrorMessage{.code = ErrorCode::NoSession, .reason = "no session named '" + join.session + "'"});
     return;
   }
-  if (!session->token_matches(join.token)) {
+  const std::optional<Role> role = session->role_of(join.token);
+  if (!role) {
     server_.join_failed(address_);
     log_warn("bad-token", {{"client", id_}, {"peer", peer_}, {"session", join.session}});
     send(ErrorMessage{.code = ErrorCode::BadToken, .reason = "wrong token for session '" + join.session + "'"});
@@ -189,8 +194,11 @@ void Connection::join(const Join& join) {
   if (!join.token.empty()) server_.join_succeeded(address_);
   leave_session();
   session_ = session;
+  role_ = *role;
   session_->join(shared_from_this());
-  log_info("join", {{"client", id_}, {"name", client_name_}, {"session", join.session}, {"members", session_->members()}});
+  if (Call* call = session_->call()) call->join(shared_from_this(), client_name_);
+  log_info("join", {{"client", id_}, {"name", client_name_}, {"session", join.session}, {"members", session_->members()},
+                    {"role", role_ == Role::Editor ? "editor" : "visitor"}});
   send(session_->state());
   cells_pending_ = !session_->tween_frames().empty();
   if (cells_pending_) {
@@ -201,6 +209,44 @@ void Connection::join(const Join& join) {
       if (const auto self = weak.lock(); self && !ec) self->send_tween_cells();
     });
   }
+}
+
+// What a call member publishes of itself (SPEC F7-F9): its camera and microphone, its neutral
+// photo, face crops, voice. Only in a call; the call stamps it with this member's own number.
+void Connection::publish(Message& message) {
+  Call* call = session_ ? session_->call() : nullptr;
+  if (!call) {
+    send(ErrorMessage{.code = session_ ? ErrorCode::NotAllowed : ErrorCode::NotJoined,
+                      .reason = std::string(name_of(type_of(message))) + (session_ ? " outside a call" : " before joining a call")});
+    return;
+  }
+  if (auto* p = std::get_if<Publish>(&message)) call->publish(id_, *p);
+  else if (auto* photo = std::get_if<NeutralPhoto>(&message)) call->photo(id_, std::move(photo->jpeg));
+  else if (auto* crop = std::get_if<FaceCrop>(&message)) call->crop(id_, std::move(*crop));
+  else if (auto* voice = std::get_if<VoiceFrame>(&message)) call->voice(id_, std::move(*voice));
+}
+
+// A state change from this member: relayed to the session when its role allows it, otherwise
+// refused with the reason, and the session's own value sent back so the member, which applied
+// the change to its copy already, shows what everyone else sees.
+void Connection::change(const Message& change) {
+  const MessageType type = type_of(change);
+  if (!session_) {
+    send(ErrorMessage{.code = ErrorCode::NotJoined, .reason = std::string(name_of(type)) + " before joining a session"});
+    return;
+  }
+  if (const std::string reason = refusal(session_->authority(), role_, type); !reason.empty()) {
+    ++server_.counters().changes_refused;
+    log_info("change-refused", {{"client", id_}, {"session", session_->name()}, {"change", name_of(type)}});
+    send(ErrorMessage{.code = ErrorCode::NotAllowed, .reason = reason});
+    const Snapshot& state = session_->state();
+    if (type == MessageType::StyleChange) send(state.style);
+    else if (type == MessageType::CameraPose) send(state.camera);
+    else if (type == MessageType::ObjectPose) send(state.object);
+    else send(state.expression);
+    return;
+  }
+  server_.relay().publish(*session_, change, id_);
 }
 
 void Connection::send_tween_cells() {
@@ -215,11 +261,23 @@ void Connection::leave_session() {
   if (cells_timer_) cells_timer_->cancel();
   if (!session_) return;
   session_->leave(this);
+  if (Call* call = session_->call()) call->leave(id_);
   log_info("leave", {{"client", id_}, {"session", session_->name()}, {"members", session_->members()}});
   session_.reset();
 }
 
 void Connection::serve_asset(const AssetRequest& request) {
+  // A call member's photo and landmarks are in memory while the member is in the call.
+  if (Call* call = session_ ? session_->call() : nullptr)
+    if (const Bytes* bytes = call->asset(request.hash)) {
+      if (request.offset > bytes->size()) {
+        send(ErrorMessage{.code = ErrorCode::NoAsset, .reason = "asset " + to_hex(request.hash) + ": offset past its end"});
+        return;
+      }
+      const size_t n = std::min<uint64_t>(request.length, bytes->size() - request.offset);
+      send(AssetChunk{.hash = request.hash, .offset = request.offset, .data = Bytes(bytes->begin() + long(request.offset), bytes->begin() + long(request.offset + n))});
+      return;
+    }
   // Assets are served to members of a session that lists them: the token guards them too.
   const AssetAnnounce* asset = session_ ? session_->find_asset(request.hash) : nullptr;
   if (!asset) {

@@ -9,6 +9,7 @@
 #include <asio.hpp>
 
 #include "protocol/messages.hpp"
+#include "server/authority.hpp"
 #include "server/send_queue.hpp"
 #include "server/transport.hpp"
 
@@ -38,6 +39,8 @@ class Connection : public std::enable_shared_from_this<Connection> {
   asio::awaitable<void> hello_watchdog();
   void handle(protocol::Message& message);
   void join(const protocol::Join& join);
+  void change(const protocol::Message& change);
+  void publish(protocol::Message& message);
   void leave_session();
   void serve_asset(const protocol::AssetRequest& request);
   void send_tween_cells();
@@ -54,6 +57,8 @@ class Connection : public std::enable_shared_from_this<Connection> {
   // a first view costs the snapshot and one photo.
   bool cells_pending_ = false;
   std::shared_ptr<asio::steady_timer> cells_timer_;
+  Role role_ = Role::Visitor;  // in session_
+  std::pair<protocol::ErrorCode, std::string> closed_for_;  // why close_with() ends the connection
   bool greeted_ = false, closing_ = false, shut_ = false;
 };
 

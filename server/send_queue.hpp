@@ -1,8 +1,9 @@
 #pragma once
 // A client's outgoing queue (SPEC N4): bounded in bytes, and latest-wins for state messages
 // (style, poses, expression, snapshot), so a reader that falls behind receives fewer, newer
-// updates and never makes the server buffer without limit or wait for it. No sockets here: the
-// connection's writer drains it.
+// updates and never makes the server buffer without limit or wait for it. Voice is neither: it is
+// never replaced, but a reader with kMaxWaitingVoice packets waiting loses the oldest. No
+// sockets here: the connection's writer drains it.
 #include <cstdint>
 #include <deque>
 #include <memory>
@@ -30,11 +31,13 @@ class SendQueue {
   bool empty() const { return entries_.empty(); }
   size_t bytes() const { return bytes_; }
   uint64_t replaced() const { return replaced_; }  // state messages overtaken before sending
+  uint64_t voice_dropped() const { return voice_dropped_; }  // voice packets that waited too long
+  static constexpr size_t kMaxWaitingVoice = 8;
 
  private:
   std::deque<Outgoing> entries_;
   size_t bytes_ = 0, max_bytes_;
-  uint64_t replaced_ = 0;
+  uint64_t replaced_ = 0, voice_dropped_ = 0;
 };
 
 }  // namespace inkwire::server

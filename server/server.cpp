@@ -7,6 +7,7 @@
 #include "common/face/landmarks_file.hpp"
 #include "common/log.hpp"
 #include "common/model_bundle.hpp"
+#include "server/call/call_analyst.hpp"
 #include "server/connection.hpp"
 #include "server/face/face_feed.hpp"
 #include "server/products/product_store.hpp"
@@ -82,13 +83,21 @@ Server::~Server() = default;
 
 void Server::create_sessions() {
   // Sessions in the catalogue come back as they were; configured ones it lacks are created.
+  // Tokens are the config's to give: a configured session takes the config's tokens even when its
+  // state comes from the catalogue (a changed editor token applies at the next start).
   for (StoredSession& stored : store_->sessions()) {
     const std::string name = stored.state.session;
+    for (const SessionConfig& c : config_.sessions)
+      if (c.name == name && (stored.token != hash_token(c.token) || stored.editor_token != hash_token(c.editor_token))) {
+        stored.token = hash_token(c.token);
+        stored.editor_token = hash_token(c.editor_token);
+        store_->save_session(stored);
+      }
     sessions_[name] = std::make_shared<Session>(std::move(stored));
   }
   for (const SessionConfig& c : config_.sessions) {
     if (sessions_.count(c.name)) continue;
-    StoredSession stored{.token = hash_token(c.token), .state = {}};
+    StoredSession stored{.token = hash_token(c.token), .editor_token = hash_token(c.editor_token), .state = {}};
     if (c.product) {
       try {
         stored.state = find_or_make_product(*store_, *c.product, c.name, [&](int done, int total, const std::string& line) {
@@ -110,6 +119,17 @@ void Server::create_sessions() {
     sessions_[c.name] = std::make_shared<Session>(std::move(stored));
   }
   for (auto& [name, session] : sessions_) ready_product(*session);
+  // Every conference session is a call its members may publish in; their pictures are analysed
+  // on one thread, whose results come back to this I/O thread.
+  call_analyst_ = std::make_unique<CallAnalyst>([this](CallAnalyst::Result result) {
+    asio::post(io_, [this, result = std::move(result)] {
+      std::visit([&](const auto& r) {
+        if (const auto session = find_session(r.who.session); session && session->call()) session->call()->analysed(r);
+      }, result);
+    });
+  });
+  for (auto& [name, session] : sessions_)
+    if (session->state().kind == protocol::SessionKind::Conference) session->start_call(config_.call, *call_analyst_, counters_.call_drops);
 }
 
 // A product is checked (every file against its hash) and its tween data readied once.
@@ -136,6 +156,7 @@ std::shared_ptr<Session> Server::add_session(StoredSession stored) {
   }
   auto session = std::make_shared<Session>(std::move(stored));
   ready_product(*session);
+  if (session->state().kind == protocol::SessionKind::Conference) session->start_call(config_.call, *call_analyst_, counters_.call_drops);
   sessions_[name] = session;
   log_info("session-added", {{"session", name}, {"kind", protocol::to_string(session->state().kind)}, {"assets", session->state().assets.size()}});
   return session;
@@ -289,6 +310,7 @@ void Server::stop() {
   persist_timer_.cancel();
   relay_->stop();
   face_feeds_.clear();  // joins their threads; codes they posted are applied or dropped with the context
+  call_analyst_.reset();
   for (auto& [name, session] : sessions_) persist(*session);
   // Copy: closing connections forget themselves.
   auto open = connections_;

@@ -17,6 +17,7 @@
 
 namespace inkwire::server {
 
+class CallAnalyst;
 class Connection;
 class FaceFeed;
 class HttpServer;
@@ -30,6 +31,8 @@ struct ServerCounters {
   uint64_t too_slow = 0;             // clients closed because their queue overflowed
   uint64_t connections_refused = 0;  // past a connection cap
   uint64_t joins_refused = 0;        // wrong token
+  uint64_t changes_refused = 0;      // changes a member had no authority to make (authority.hpp)
+  std::map<std::string, uint64_t> call_drops;  // call messages dropped, by reason (call/call.hpp)
 };
 
 class Server {
@@ -107,6 +110,7 @@ class Server {
   };
   std::map<std::string, JoinFailures> join_failures_;
   std::vector<std::unique_ptr<FaceFeed>> face_feeds_;
+  std::unique_ptr<CallAnalyst> call_analyst_;  // the calls' face analysis, on a thread of its own
   std::unique_ptr<HttpServer> http_;
   std::unique_ptr<Relay> relay_;
   ServerCounters counters_;

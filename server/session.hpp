@@ -2,11 +2,14 @@
 // One session ("room", SPEC N1/N4): its current state as a snapshot, its members, and the rule
 // that a change by one member is applied, counted and forwarded to all the others.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "protocol/messages.hpp"
 #include "server/asset_store.hpp"
+#include "server/authority.hpp"
+#include "server/call/call.hpp"
 #include "server/session_token.hpp"
 
 namespace inkwire::server {
@@ -18,7 +21,9 @@ class Session {
   explicit Session(StoredSession stored) : stored_(std::move(stored)) {}
 
   const std::string& name() const { return stored_.state.session; }
-  bool token_matches(const std::string& token) const { return server::token_matches(stored_.token, token); }
+  // The role a join's token gives (an editor, a visitor), or nothing for a wrong token.
+  std::optional<Role> role_of(const std::string& token) const { return server::role_of(stored_.token, stored_.editor_token, token); }
+  SessionAuthority authority() const { return {.kind = stored_.state.kind, .has_editor_token = !stored_.editor_token.empty()}; }
   const protocol::Snapshot& state() const { return stored_.state; }
   const StoredSession& stored() const { return stored_; }
   const protocol::AssetAnnounce* find_asset(const protocol::Hash& hash) const;  // null unless listed
@@ -46,6 +51,12 @@ class Session {
   const std::string& unavailable() const { return unavailable_; }
   const std::vector<std::shared_ptr<const protocol::Bytes>>& tween_frames() const { return tween_frames_; }
 
+  // A conference session's call (its members' own faces and voices); null in other sessions.
+  Call* call() { return call_.get(); }
+  void start_call(CallOptions options, CallAnalyst& analyst, Call::Drops& drops) {
+    call_ = std::make_unique<Call>(name(), options, analyst, drops);
+  }
+
   // Set by apply(); cleared by whoever persists the state.
   bool dirty = false;
 
@@ -54,6 +65,7 @@ class Session {
   std::vector<std::weak_ptr<Connection>> members_;
   std::vector<std::shared_ptr<const protocol::Bytes>> tween_frames_;
   std::string unavailable_;
+  std::unique_ptr<Call> call_;
 };
 
 }  // namespace inkwire::server

@@ -112,6 +112,23 @@ void SessionClient::on_message(Message message) {
     }
   } else if (apply_state_change(state_, message)) {
     ++updates_;
+  } else if (auto* roster = std::get_if<Roster>(&message)) {
+    roster_ = std::move(*roster);
+    ++updates_;
+  } else if (const auto* face = std::get_if<MemberFace>(&message)) {
+    member_faces_[face->member] = *face;
+    ++updates_;
+  } else if (const auto* region = std::get_if<FaceRegion>(&message)) {
+    face_region_ = *region;
+  } else if (auto* voice = std::get_if<VoiceFrame>(&message)) {
+    constexpr size_t kKept = 500;  // ten seconds of 20 ms packets
+    if (voice_.size() >= kKept) voice_.pop_front();
+    voice_.push_back(std::move(*voice));
+  } else if (const auto* refused = std::get_if<ErrorMessage>(&message); refused && refused->code == ErrorCode::NotAllowed) {
+    // A change this member may not make: the session's own value follows it; nothing else stops.
+    refusal_ = refused->reason;
+    ++refusals_;
+    std::fprintf(stderr, "inkwire-client: change refused: %s\n", refused->reason.c_str());
   } else if (const auto* error = std::get_if<ErrorMessage>(&message)) {
     last_error_ = error->reason;
     std::fprintf(stderr, "inkwire-client: server says: %s\n", error->reason.c_str());
@@ -194,6 +211,36 @@ uint64_t SessionClient::wait_for_update(uint64_t seen, std::chrono::milliseconds
 bool SessionClient::connected() const {
   std::lock_guard lock(mutex_);
   return connected_;
+}
+
+Roster SessionClient::roster() const {
+  std::lock_guard lock(mutex_);
+  return roster_;
+}
+
+std::map<uint16_t, MemberFace> SessionClient::member_faces() const {
+  std::lock_guard lock(mutex_);
+  return member_faces_;
+}
+
+std::optional<FaceRegion> SessionClient::face_region() const {
+  std::lock_guard lock(mutex_);
+  return face_region_;
+}
+
+std::deque<VoiceFrame> SessionClient::take_voice() {
+  std::lock_guard lock(mutex_);
+  return std::exchange(voice_, {});
+}
+
+std::string SessionClient::refusal() const {
+  std::lock_guard lock(mutex_);
+  return refusal_;
+}
+
+uint64_t SessionClient::refusals() const {
+  std::lock_guard lock(mutex_);
+  return refusals_;
 }
 
 std::string SessionClient::last_error() const {

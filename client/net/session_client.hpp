@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -44,6 +45,10 @@ class SessionClient {
   uint64_t wait_for_update(uint64_t seen, std::chrono::milliseconds timeout) const;
   bool connected() const;
   std::string last_error() const;
+  // The reason the server gave for the latest change it refused (SPEC W8: this member may not
+  // make it), and how many it refused so far; the session's value replaced the change.
+  std::string refusal() const;
+  uint64_t refusals() const;
 
   // Downloads every asset of the snapshot that the cache lacks (resuming partial files) and
   // returns the cached paths in the snapshot's order. Throws inkwire::Error.
@@ -55,6 +60,14 @@ class SessionClient {
   // snapshot (SPEC T12), by cell index, and how many have arrived.
   std::map<uint16_t, protocol::Bytes> tween_cells() const;
   size_t tween_cell_count() const;
+
+  // Calls (SPEC F7-F12): the newest roster, each member's newest face, where the server last
+  // found this member's face, and the voice packets received since the last take (at most a
+  // few seconds' worth are kept: a reader that does not take them loses the oldest).
+  protocol::Roster roster() const;
+  std::map<uint16_t, protocol::MemberFace> member_faces() const;
+  std::optional<protocol::FaceRegion> face_region() const;
+  std::deque<protocol::VoiceFrame> take_voice();
 
   uint64_t bytes_sent() const { return bytes_sent_; }
   uint64_t bytes_received() const { return bytes_received_; }
@@ -79,9 +92,14 @@ class SessionClient {
   mutable std::condition_variable changed_;
   protocol::Snapshot state_;
   std::map<uint16_t, protocol::Bytes> tween_cells_;
+  protocol::Roster roster_;
+  std::map<uint16_t, protocol::MemberFace> member_faces_;
+  std::optional<protocol::FaceRegion> face_region_;
+  std::deque<protocol::VoiceFrame> voice_;
   uint64_t updates_ = 0;
   bool connected_ = true;
-  std::string last_error_;
+  std::string last_error_, refusal_;
+  uint64_t refusals_ = 0;
   std::deque<protocol::Message> replies_;  // welcome, snapshot, errors, asset chunks, awaited by callers
   std::atomic<uint64_t> bytes_sent_{0}, bytes_received_{0};
 };

@@ -53,6 +53,9 @@ std::string metrics_text(Server& server) {
   m.one("inkwire_queue_overflow_total", "counter", "Clients closed because they did not read their queue.", c.too_slow);
   m.one("inkwire_connections_refused_total", "counter", "Connections refused past a connection cap.", c.connections_refused);
   m.one("inkwire_joins_refused_total", "counter", "Joins refused for a wrong token.", c.joins_refused);
+  m.one("inkwire_changes_refused_total", "counter", "Changes refused: the member had no authority to make them.", c.changes_refused);
+  m.metric("inkwire_call_dropped_total", "counter", "Call messages dropped (too frequent, too large, not JPEG, not Opus), by reason.");
+  for (const auto& [reason, count] : c.call_drops) m.sample("inkwire_call_dropped_total", count, "reason=\"" + metric_label(reason) + "\"");
   const RelayStatus r = server.relay().status();
   if (r.broker) {
     m.one("inkwire_broker_up", "gauge", "1 while the broker is reachable; 0 while this instance serves its own members only.", int(r.connected));

@@ -24,6 +24,13 @@ Hash sample_hash(uint8_t seed) {
 }
 
 // One filled-in example of every message type, in type order.
+// Bytes that start as a JPEG does (SOI and a marker), as decoders check before decoding.
+Bytes jpeg_like(size_t size) {
+  Bytes b(size, 0x42);
+  b[0] = 0xff, b[1] = 0xd8, b[2] = 0xff, b[3] = 0xe0;
+  return b;
+}
+
 std::vector<Message> every_message() {
   AssetAnnounce asset{.hash = sample_hash(1), .size = 123456, .kind = AssetKind::Mesh, .name = "cow.off"};
   StyleChange style{.renderer = "hatching+sketch-charcoal", .settings = {"boil_fps=6", "paper=canvas"}};
@@ -48,7 +55,17 @@ std::vector<Message> every_message() {
           TweenData{.pair = 4, .data = Bytes(800, 0xab)},
           asset,
           AssetRequest{.hash = sample_hash(2), .offset = 65536, .length = 65536},
-          AssetChunk{.hash = sample_hash(3), .offset = 131072, .data = Bytes(1000, 7)}};
+          AssetChunk{.hash = sample_hash(3), .offset = 131072, .data = Bytes(1000, 7)},
+          Publish{.camera = true, .microphone = false},
+          NeutralPhoto{.jpeg = jpeg_like(300)},
+          FaceCrop{.time_ms = 123456, .frame_width = 640, .frame_height = 480, .x = 200, .y = 100, .width = 240, .height = 260, .jpeg = jpeg_like(200)},
+          FaceRegion{.found = true, .x = 210, .y = 95, .width = 230, .height = 250},
+          VoiceFrame{.member = 3, .time_ms = 123440, .opus = Bytes(40, 0x5a)},
+          MemberFace{.member = 3, .time_ms = 123456, .expression = expression, .yaw = -20, .pitch = 5, .roll = 127, .source = FaceSource::Camera},
+          Roster{.you = 2, .members = {CallMember{.member = 2, .name = "Ada", .camera = true, .microphone = true, .speaking = false, .face_found = true, .assets = {}},
+                                       CallMember{.member = 3, .name = "Grace", .camera = false, .microphone = true, .speaking = true, .face_found = false,
+                                                  .assets = {AssetAnnounce{.hash = sample_hash(4), .size = 5000, .kind = AssetKind::Image, .name = "face.jpg"},
+                                                             AssetAnnounce{.hash = sample_hash(5), .size = 900, .kind = AssetKind::Landmarks, .name = "face.landmarks.json"}}}}}};
 }
 
 Bytes stream_of(const std::vector<Message>& messages) {

@@ -6,6 +6,7 @@
 
 using namespace inkwire;
 using namespace inkwire::protocol;
+using inkwire::server::SendQueue;
 
 namespace {
 std::shared_ptr<const Bytes> frame(const Message& m) { return std::make_shared<const Bytes>(encode(m)); }
@@ -38,4 +39,22 @@ TEST(SendQueueTest, OtherMessagesAreNeverDroppedButOverflowIsReported) {
   EXPECT_TRUE(q.push(frame(CameraPose{}), MessageType::CameraPose));
   EXPECT_TRUE(q.push(frame(CameraPose{}), MessageType::CameraPose));
   EXPECT_EQ(q.take_all().size(), 4u);
+}
+
+// Voice is not a state message (every packet is different) but late voice is worth nothing: a
+// reader with kMaxWaitingVoice packets waiting loses the oldest, never the connection.
+TEST(SendQueueTest, LateVoiceLosesItsOldestPacketInsteadOfGrowingTheQueue) {
+  SendQueue queue(1 << 20);
+  for (uint8_t i = 0; i < 20; ++i)
+    ASSERT_TRUE(queue.push(frame(VoiceFrame{.member = 1, .time_ms = i, .opus = Bytes(60, i)}), MessageType::VoiceFrame));
+  ASSERT_TRUE(queue.push(frame(Ping{.nonce = 1}), MessageType::Ping));
+  EXPECT_EQ(queue.voice_dropped(), 12u);
+  const auto sent = queue.take_all();
+  ASSERT_EQ(sent.size(), SendQueue::kMaxWaitingVoice + 1);
+  // The newest eight are what goes out, in order, and the ping is kept.
+  for (size_t i = 0; i < SendQueue::kMaxWaitingVoice; ++i) {
+    const auto voice = std::get<VoiceFrame>(decode_frame(sent[i].frame->data(), sent[i].frame->size()));
+    EXPECT_EQ(voice.time_ms, 12 + i);
+  }
+  EXPECT_EQ(sent.back().type, MessageType::Ping);
 }

@@ -5,7 +5,7 @@
 import { ProtocolError, ReadStream, WriteStream } from './streams.js';
 
 export const kMagic = 0x574b4e49;  // the bytes "INKW" read as a little-endian u32
-export const kVersion = 2;
+export const kVersion = 3;
 export const kMaxName = 64;
 export const kMaxToken = 128;
 export const kMaxReason = 512;
@@ -17,19 +17,25 @@ export const kMaxProductSamples = 360;
 export const kMaxChunk = 64 * 1024;
 export const kMaxTween = 16 * 1024;
 export const kMaxAssetBytes = 2 ** 30;
+export const kMaxCropBytes = 64 * 1024;
+export const kMaxPhotoBytes = 120 * 1024;
+export const kMaxVoiceBytes = 1275;
+export const kMaxMembers = 64;
 
 export const MessageType = Object.freeze({
   hello: 1, welcome: 2, error: 3, ping: 4, pong: 5, join: 6, leave: 7, snapshot: 8, 'style-change': 9, 'camera-pose': 10,
   'object-pose': 11, 'expression-code': 12, 'tween-data': 13, 'asset-announce': 14, 'asset-request': 15, 'asset-chunk': 16,
+  publish: 17, 'neutral-photo': 18, 'face-crop': 19, 'face-region': 20, 'voice-frame': 21, 'member-face': 22, roster: 23,
 });
-export const kMessageTypes = 16;
+export const kMessageTypes = 23;
+export const FaceSource = Object.freeze({ neutral: 0, camera: 1, voice: 2 });
 export const nameOf = (type) => Object.keys(MessageType).find((k) => MessageType[k] === type) ?? 'unknown';
 
 export const SessionKind = Object.freeze({ scene: 1, turntable: 2, conference: 3 });
 export const AssetKind = Object.freeze({ mesh: 1, image: 2, samples: 3, tween: 4, landmarks: 5, matte: 6 });
 export const ErrorCode = Object.freeze({
   'bad-version': 1, malformed: 2, 'no-session': 3, 'bad-token': 4, 'not-joined': 5, 'no-asset': 6, 'too-slow': 7,
-  'shutting-down': 8, refused: 9,
+  'shutting-down': 8, refused: 9, 'not-allowed': 10,
 });
 
 function check(ok, reason) {
@@ -63,7 +69,7 @@ function serialiseWelcome(s, m) {
 }
 
 function serialiseErrorMessage(s, m) {
-  m.code = enumeration(s, m.code ?? 9, 1, 9, 'error code', 2);
+  m.code = enumeration(s, m.code ?? 9, 1, 10, 'error code', 2);
   m.reason = s.text(m.reason ?? '', kMaxReason);
 }
 
@@ -207,10 +213,90 @@ function serialiseSnapshot(s, m) {
   }
 }
 
+function flag(s, v, what) {
+  const raw = s.u8(v ? 1 : 0);
+  if (s.constructor.reading) check(raw <= 1, `${what} is not 0 or 1`);
+  return raw === 1;
+}
+
+const int8 = (s, v) => {
+  const raw = s.u8(((v ?? 0) + 256) % 256);
+  return raw > 127 ? raw - 256 : raw;
+};
+
+function serialisePublish(s, m) {
+  m.camera = flag(s, m.camera, 'publish camera');
+  m.microphone = flag(s, m.microphone, 'publish microphone');
+}
+
+function serialiseNeutralPhoto(s, m) {
+  m.jpeg = s.blob(m.jpeg ?? new Uint8Array(), kMaxPhotoBytes);
+}
+
+function serialiseFaceCrop(s, m) {
+  m.time_ms = s.u32(m.time_ms ?? 0);
+  for (const f of ['frame_width', 'frame_height', 'x', 'y', 'width', 'height']) m[f] = s.u16(m[f] ?? 0);
+  m.jpeg = s.blob(m.jpeg ?? new Uint8Array(), kMaxCropBytes);
+  if (s.constructor.reading) {
+    check(m.frame_width >= 16 && m.frame_height >= 16 && m.frame_width <= 4096 && m.frame_height <= 4096, 'face crop: frame size outside 16..4096');
+    check(m.width >= 8 && m.height >= 8 && m.x + m.width <= m.frame_width && m.y + m.height <= m.frame_height, 'face crop: rectangle outside its frame');
+  }
+}
+
+function serialiseFaceRegion(s, m) {
+  m.found = flag(s, m.found, 'face region found');
+  for (const f of ['x', 'y', 'width', 'height']) m[f] = s.u16(m[f] ?? 0);
+}
+
+function serialiseVoiceFrame(s, m) {
+  m.member = s.u16(m.member ?? 0);
+  m.time_ms = s.u32(m.time_ms ?? 0);
+  m.opus = s.blob(m.opus ?? new Uint8Array(), kMaxVoiceBytes);
+  if (s.constructor.reading) check(m.opus.length > 0, 'empty voice frame');
+}
+
+function serialiseMemberFace(s, m) {
+  m.member = s.u16(m.member ?? 0);
+  m.time_ms = s.u32(m.time_ms ?? 0);
+  m.expression = { ...(m.expression ?? {}) };
+  serialiseExpressionCode(s, m.expression);
+  for (const f of ['yaw', 'pitch', 'roll']) m[f] = int8(s, m[f]);
+  m.source = enumeration(s, m.source ?? 0, 0, 2, 'face source', 1);
+}
+
+function serialiseCallMember(s, m) {
+  m.member = s.u16(m.member ?? 0);
+  m.name = s.text(m.name ?? '', kMaxName);
+  for (const f of ['camera', 'microphone', 'speaking']) m[f] = flag(s, m[f], `member ${f}`);
+  m.face_found = flag(s, m.face_found ?? true, 'member face found');
+  const assets = m.assets ?? [];
+  const n = s.count(assets.length, 2, 'member assets');
+  m.assets = [];
+  for (let i = 0; i < n; ++i) {
+    const a = { ...(assets[i] ?? {}) };
+    serialiseAssetAnnounce(s, a);
+    m.assets.push(a);
+  }
+  if (s.constructor.reading) check(m.member !== 0, 'member number 0');
+}
+
+function serialiseRoster(s, m) {
+  m.you = s.u16(m.you ?? 0);
+  const members = m.members ?? [];
+  const n = s.count(members.length, kMaxMembers, 'call members');
+  m.members = [];
+  for (let i = 0; i < n; ++i) {
+    const member = { ...(members[i] ?? {}) };
+    serialiseCallMember(s, member);
+    m.members.push(member);
+  }
+}
+
 // In MessageType order: index + 1 == type code.
 const serialisers = [serialiseHello, serialiseWelcome, serialiseErrorMessage, serialisePing, serialisePong, serialiseJoin, serialiseLeave,
                      serialiseSnapshot, serialiseStyleChange, serialiseCameraPose, serialiseObjectPose, serialiseExpressionCode,
-                     serialiseTweenData, serialiseAssetAnnounce, serialiseAssetRequest, serialiseAssetChunk];
+                     serialiseTweenData, serialiseAssetAnnounce, serialiseAssetRequest, serialiseAssetChunk, serialisePublish,
+                     serialiseNeutralPhoto, serialiseFaceCrop, serialiseFaceRegion, serialiseVoiceFrame, serialiseMemberFace, serialiseRoster];
 
 export const kHeaderBytes = 6;
 export const kMaxPayload = 128 * 1024;

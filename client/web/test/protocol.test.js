@@ -46,6 +46,19 @@ test('decoded fields are the C++ ones', () => {
   assert.deepEqual(s.product.directions[1], [1, 0, 0]);
   assert.deepEqual(byType['expression-code'].params, [-127, 0, 5, 127]);
   assert.equal(byType['tween-data'].data.length, 800);
+  // Calls.
+  assert.deepEqual([byType.publish.camera, byType.publish.microphone], [true, false]);
+  const crop = byType['face-crop'];
+  assert.deepEqual([crop.time_ms, crop.frame_width, crop.frame_height, crop.x, crop.y, crop.width, crop.height, crop.jpeg.length],
+                   [123456, 640, 480, 200, 100, 240, 260, 200]);
+  assert.deepEqual([byType['voice-frame'].member, byType['voice-frame'].time_ms, byType['voice-frame'].opus.length], [3, 123440, 40]);
+  const face = byType['member-face'];
+  assert.deepEqual([face.member, face.yaw, face.pitch, face.roll, face.source, face.expression.code], [3, -20, 5, 127, 1, 3]);
+  const roster = byType.roster;
+  assert.equal(roster.you, 2);
+  assert.deepEqual(roster.members.map((m) => [m.member, m.name, m.speaking, m.face_found, m.assets.length]),
+                   [[2, 'Ada', false, true, 0], [3, 'Grace', true, false, 2]]);
+  assert.equal(roster.members[1].assets[1].name, 'face.landmarks.json');
 });
 
 test('every truncation of every frame is refused with a ProtocolError', () => {
@@ -68,7 +81,7 @@ test('trailing bytes, lengths over the limit and unknown types are refused', () 
   new DataView(header.buffer).setUint16(4, 4, true);
   assert.throws(() => parseHeader(header), /exceeds the limit/);
   new DataView(header.buffer).setUint32(0, 8, true);
-  for (const type of [0, 17, 65535]) {
+  for (const type of [0, 24, 65535]) {
     new DataView(header.buffer).setUint16(4, type, true);
     assert.throws(() => parseHeader(header), /unknown message type/);
   }
@@ -91,6 +104,12 @@ test('values out of range are refused as the C++ reader refuses them', () => {
   refuse({ type: 'asset-request', length: 0 });
   refuse({ type: 'snapshot', session: 's', kind: 2, product: { width: 64, height: 64, directions: [[0, 0, 1]], cells: 0 } });
   refuse({ type: 'snapshot', session: 's', kind: 2, product: { width: 64, height: 64, directions: [[0, 0, 1], [0, 0, 0.5]], cells: 1 } });
+  const jpeg = new Uint8Array([0xff, 0xd8, 0xff, 0xe0, 1, 2]);
+  refuse({ type: 'face-crop', frame_width: 640, frame_height: 480, x: 600, y: 0, width: 64, height: 64, jpeg });
+  refuse({ type: 'voice-frame', opus: new Uint8Array() });
+  refuse({ type: 'member-face', source: 3 });
+  refuse({ type: 'roster', members: [{ member: 0, name: 'x' }] });
+  assert.throws(() => encode({ type: 'voice-frame', opus: new Uint8Array(1276) }), ProtocolError);
 });
 
 test('random bytes end in messages or a ProtocolError, never anything else', () => {

@@ -1,0 +1,265 @@
+#include "server/call/call.hpp"
+
+#include <algorithm>
+#include <deque>
+#include <tuple>
+
+#include "common/content_hash.hpp"
+#include "common/log.hpp"
+#include "protocol/framing.hpp"
+#include "server/connection.hpp"
+
+namespace inkwire::server {
+namespace {
+
+using protocol::Bytes;
+constexpr auto kSpeakingHold = std::chrono::milliseconds(400);  // silence before a speaker stops speaking
+constexpr auto kFaceLost = std::chrono::milliseconds(600);      // camera faces older than this: the voice moves the mouth
+constexpr auto kNoFaceAfter = std::chrono::seconds(3);          // crops without a face this long: "no face found"
+constexpr auto kVoiceMouthKeepalive = std::chrono::seconds(1);
+constexpr float kLevelDecayDb = 1.5f;                           // per packet, so a level falls ~75 dB a second
+
+// A token bucket: `rate` a second, a second's worth at once.
+struct Bucket {
+  double tokens = 0;
+  Call::Clock::time_point last{};
+  bool take(double rate, Call::Clock::time_point now) {
+    tokens = std::min(rate, tokens + rate * std::chrono::duration<double>(now - last).count());
+    last = now;
+    if (tokens < 1) return false;
+    tokens -= 1;
+    return true;
+  }
+};
+
+}  // namespace
+
+struct Call::Member {
+  std::weak_ptr<Connection> connection;
+  uint64_t connection_id = 0;
+  protocol::CallMember entry;  // what the roster says of it
+  std::map<protocol::Hash, Bytes> asset_bytes;
+  Bucket crops, voices;
+  std::deque<Clock::time_point> drops;  // in the last second
+  VoiceAnalysis voice;
+  float level_db = -100;
+  Clock::time_point last_voice{}, last_face{};
+  std::optional<Clock::time_point> faceless_since;  // crops have come without a face since then
+  bool faceless = false;                            // ... for longer than kNoFaceAfter
+  ExpressionState voice_mouth;
+  Clock::time_point voice_mouth_sent{};
+  uint32_t latest_voice_time = 0;
+};
+
+Call::Call(std::string session, CallOptions options, CallAnalyst& analyst, Drops& drops)
+    : session_(std::move(session)), options_(options), analyst_(analyst), drops_(drops) {}
+
+Call::~Call() {
+  for (const auto& [id, m] : members_) analyst_.forget({session_, m->entry.member});
+}
+
+Call::Member* Call::find(uint64_t connection) {
+  const auto it = members_.find(connection);
+  return it == members_.end() ? nullptr : it->second.get();
+}
+
+Call::Member* Call::find_member(uint16_t number) {
+  for (auto& [id, m] : members_)
+    if (m->entry.member == number) return m.get();
+  return nullptr;
+}
+
+void Call::join(const std::shared_ptr<Connection>& connection, const std::string& name) {
+  leave(connection->id());
+  auto m = std::make_unique<Member>();
+  m->connection = connection;
+  m->connection_id = connection->id();
+  // Numbers are not reused while the number space lasts, so a late message from one who left
+  // never lands on a newcomer.
+  while (next_number_ == 0 || find_member(next_number_)) ++next_number_;
+  m->entry.member = next_number_++;
+  m->entry.name = name.empty() ? "member " + std::to_string(m->entry.member) : name;
+  members_[connection->id()] = std::move(m);
+  send_roster();
+}
+
+void Call::leave(uint64_t connection) {
+  const auto it = members_.find(connection);
+  if (it == members_.end()) return;
+  analyst_.forget({session_, it->second->entry.member});
+  members_.erase(it);
+  send_roster();
+}
+
+bool Call::dropped(Member& m, const std::string& reason) {
+  ++drops_[reason];
+  const auto now = Clock::now();
+  m.drops.push_back(now);
+  while (!m.drops.empty() && now - m.drops.front() > std::chrono::seconds(1)) m.drops.pop_front();
+  // Sustained at twice the allowed rates on top of what was allowed: flooding.
+  if (double(m.drops.size()) <= 2 * (options_.crops_per_second + options_.voice_per_second)) return false;
+  log_warn("call-flood", {{"session", session_}, {"member", m.entry.member}, {"reason", reason}});
+  if (const auto c = m.connection.lock())
+    c->close_with(protocol::ErrorCode::Refused, "flooding the call: over " + std::to_string(m.drops.size()) + " dropped messages a second (" + reason + ")");
+  return true;
+}
+
+void Call::publish(uint64_t connection, const protocol::Publish& publish) {
+  Member* m = find(connection);
+  if (!m) return;
+  if (m->entry.camera == publish.camera && m->entry.microphone == publish.microphone) return;
+  m->entry.camera = publish.camera;
+  m->entry.microphone = publish.microphone;
+  if (!publish.camera) m->faceless_since.reset(), m->faceless = false, m->entry.face_found = true;
+  send_roster();
+}
+
+void Call::photo(uint64_t connection, Bytes jpeg) {
+  if (Member* m = find(connection)) analyst_.photo({session_, m->entry.member}, std::move(jpeg));
+}
+
+void Call::crop(uint64_t connection, protocol::FaceCrop crop) {
+  Member* m = find(connection);
+  if (!m) return;
+  const auto now = Clock::now();
+  if (!m->crops.take(options_.crops_per_second, now)) {
+    dropped(*m, "crop-too-frequent");
+    return;
+  }
+  if (crop.jpeg.size() > options_.max_crop_bytes) {
+    dropped(*m, "crop-too-large");
+    return;
+  }
+  if (crop.jpeg.size() < 4 || crop.jpeg[0] != 0xff || crop.jpeg[1] != 0xd8 || crop.jpeg[2] != 0xff) {
+    dropped(*m, "crop-not-jpeg");
+    return;
+  }
+  analyst_.crop({session_, m->entry.member}, std::move(crop));
+}
+
+void Call::voice(uint64_t connection, protocol::VoiceFrame frame) {
+  Member* m = find(connection);
+  if (!m) return;
+  const auto now = Clock::now();
+  if (!m->voices.take(options_.voice_per_second, now)) {
+    dropped(*m, "voice-too-frequent");
+    return;
+  }
+  if (frame.opus.size() > options_.max_voice_bytes) {
+    dropped(*m, "voice-too-large");
+    return;
+  }
+  std::string reason;
+  const auto reading = m->voice.read(frame.opus, &reason);
+  if (!reading) {
+    dropped(*m, "voice-not-opus");
+    return;
+  }
+  m->level_db = std::max(reading->level_db, m->level_db - kLevelDecayDb);
+  if (reading->level_db > VoiceAnalysis::kSilenceDb) m->last_voice = now;
+  m->latest_voice_time = frame.time_ms;
+  update_speakers(now);
+  // The sender's own number on what is relayed: a member speaks only as itself.
+  frame.member = m->entry.member;
+  if (m->entry.speaking) send_to_others(*m, frame);
+  // Without a face to read, the voice moves the mouth (SPEC F10).
+  const bool face_gone = !m->entry.camera || m->faceless || now - m->last_face > kFaceLost;
+  if (face_gone && (!(reading->mouth == m->voice_mouth) || now - m->voice_mouth_sent > kVoiceMouthKeepalive)) {
+    m->voice_mouth = reading->mouth;
+    m->voice_mouth_sent = now;
+    send_to_others(*m, protocol::MemberFace{.member = m->entry.member, .time_ms = frame.time_ms,
+                                            .expression = {.code = uint8_t(reading->mouth.expression), .intensity = reading->mouth.intensity},
+                                            .source = protocol::FaceSource::Voice});
+  }
+}
+
+void Call::update_speakers(Clock::time_point now) {
+  // The K loudest of those who spoke lately; the roster says who they are.
+  std::vector<Member*> talking;
+  for (auto& [id, m] : members_)
+    if (m->entry.microphone && now - m->last_voice < kSpeakingHold) talking.push_back(m.get());
+  std::sort(talking.begin(), talking.end(), [](const Member* a, const Member* b) { return a->level_db > b->level_db; });
+  if (talking.size() > size_t(options_.loudest)) talking.resize(size_t(options_.loudest));
+  bool changed = false;
+  for (auto& [id, m] : members_) {
+    const bool speaking = std::find(talking.begin(), talking.end(), m.get()) != talking.end();
+    changed |= speaking != m->entry.speaking;
+    m->entry.speaking = speaking;
+  }
+  if (changed) send_roster();
+}
+
+void Call::analysed(const PhotoAnalysed& result) {
+  Member* m = find_member(result.who.member);
+  if (!m) return;
+  const auto c = m->connection.lock();
+  if (!result.error.empty()) {
+    if (c) c->send(protocol::ErrorMessage{.code = protocol::ErrorCode::NotAllowed, .reason = result.error});
+    return;
+  }
+  m->asset_bytes.clear();
+  m->entry.assets.clear();
+  const std::string stem = "member-" + std::to_string(m->entry.member);
+  const Bytes landmarks(result.landmarks.begin(), result.landmarks.end());
+  for (const auto& [bytes, kind, name] : {std::tuple{&result.photo, protocol::AssetKind::Image, stem + ".jpg"},
+                                          std::tuple{&landmarks, protocol::AssetKind::Landmarks, stem + ".landmarks.json"}}) {
+    const protocol::Hash hash = content_hash(bytes->data(), bytes->size());
+    m->entry.assets.push_back({.hash = hash, .size = bytes->size(), .kind = kind, .name = name});
+    m->asset_bytes[hash] = *bytes;
+  }
+  send_roster();
+}
+
+void Call::analysed(const CropAnalysed& result) {
+  Member* m = find_member(result.who.member);
+  if (!m) return;
+  const auto now = Clock::now();
+  if (!result.error.empty()) {
+    dropped(*m, "crop-unreadable");
+    return;
+  }
+  if (const auto c = m->connection.lock()) c->send(result.region);
+  if (result.region.found) {
+    m->last_face = now;
+    m->faceless_since.reset();
+  } else if (!m->faceless_since) {
+    m->faceless_since = now;
+  }
+  m->faceless = m->faceless_since && now - *m->faceless_since > kNoFaceAfter;
+  if (m->entry.face_found == m->faceless) {
+    m->entry.face_found = !m->faceless;
+    send_roster();
+  }
+  if (result.face) send_to_others(*m, *result.face);
+}
+
+const Bytes* Call::asset(const protocol::Hash& hash, protocol::AssetAnnounce* announce) const {
+  for (const auto& [id, m] : members_)
+    if (const auto it = m->asset_bytes.find(hash); it != m->asset_bytes.end()) {
+      if (announce)
+        for (const auto& a : m->entry.assets)
+          if (a.hash == hash) *announce = a;
+      return &it->second;
+    }
+  return nullptr;
+}
+
+void Call::send_roster() {
+  protocol::Roster roster;
+  for (const auto& [id, m] : members_) roster.members.push_back(m->entry);
+  if (roster.members.size() > protocol::kMaxMembers) roster.members.resize(protocol::kMaxMembers);
+  for (const auto& [id, m] : members_)
+    if (const auto c = m->connection.lock()) {
+      roster.you = m->entry.member;
+      c->send(roster);
+    }
+}
+
+void Call::send_to_others(const Member& from, const protocol::Message& message) {
+  const auto frame = std::make_shared<const Bytes>(protocol::encode(message));
+  for (const auto& [id, m] : members_)
+    if (m.get() != &from)
+      if (const auto c = m->connection.lock()) c->send_frame(frame, protocol::type_of(message));
+}
+
+}  // namespace inkwire::server

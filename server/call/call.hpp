@@ -1,0 +1,78 @@
+#pragma once
+// A call (SPEC F7-F13): the members of one conference session who publish their own face and
+// voice, as the I/O thread keeps them. Each member has a number, a name, what it publishes, its
+// neutral photo and landmarks (in memory, as assets), its voice's level and mouth; crops go to
+// the analyst (call_analyst.hpp) and what it reads comes back as member-face messages; voice is
+// relayed as it came to everyone else while its sender is among the K loudest. Members only
+// ever publish as themselves: the member number on what is relayed is the sender's own.
+// What is dropped (too frequent, too large, not JPEG, not Opus) is counted by reason; a member
+// that keeps flooding is closed with the reason.
+#include <chrono>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "protocol/messages.hpp"
+#include "server/call/call_analyst.hpp"
+#include "server/call/voice_analysis.hpp"
+
+namespace inkwire::server {
+
+class Connection;
+
+struct CallOptions {
+  int loudest = 3;                // K: voices each member hears at once
+  double crops_per_second = 15;   // per publisher
+  double voice_per_second = 60;   // packets per publisher (20 ms packets are 50 a second)
+  size_t max_crop_bytes = 32 * 1024;
+  size_t max_voice_bytes = 400;
+};
+
+class Call {
+ public:
+  using Clock = std::chrono::steady_clock;
+  // Drops by reason, for /metrics (shared by every call of the server).
+  using Drops = std::map<std::string, uint64_t>;
+
+  Call(std::string session, CallOptions options, CallAnalyst& analyst, Drops& drops);
+  ~Call();
+
+  void join(const std::shared_ptr<Connection>& connection, const std::string& name);
+  void leave(uint64_t connection);
+
+  // From a member's connection.
+  void publish(uint64_t connection, const protocol::Publish& publish);
+  void photo(uint64_t connection, protocol::Bytes jpeg);
+  void crop(uint64_t connection, protocol::FaceCrop crop);
+  void voice(uint64_t connection, protocol::VoiceFrame frame);
+
+  // From the analyst, on the I/O thread.
+  void analysed(const PhotoAnalysed& result);
+  void analysed(const CropAnalysed& result);
+
+  // A member's photo or landmarks by hash, with its bytes: null unless a member holds it.
+  const protocol::Bytes* asset(const protocol::Hash& hash, protocol::AssetAnnounce* announce = nullptr) const;
+  size_t size() const { return members_.size(); }
+
+ private:
+  struct Member;
+  Member* find(uint64_t connection);
+  Member* find_member(uint16_t number);
+  // Counts a drop; true when the member has dropped so much in the last second that it floods
+  // (it is then closed with the reason).
+  bool dropped(Member& m, const std::string& reason);
+  void send_roster();
+  void send_to_others(const Member& from, const protocol::Message& message);
+  void update_speakers(Clock::time_point now);
+
+  std::string session_;
+  CallOptions options_;
+  CallAnalyst& analyst_;
+  Drops& drops_;
+  std::map<uint64_t, std::unique_ptr<Member>> members_;  // by connection id
+  uint16_t next_number_ = 1;
+};
+
+}  // namespace inkwire::server

@@ -1,0 +1,197 @@
+#include "server/call/call_analyst.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/common.hpp>
+
+#include "common/error.hpp"
+#include "common/face/landmarks_file.hpp"
+#include "common/image.hpp"
+#include "common/log.hpp"
+#include "server/face/expression_selector.hpp"
+#include "server/face/expression_stream.hpp"
+#include "server/face/face_analyzer.hpp"
+#include "server/face/face_features.hpp"
+#include "server/face/head_pose.hpp"
+
+namespace inkwire::server {
+namespace {
+
+constexpr int kMaxDecodedSide = 1024;  // a crop is ~160 px, a whole frame 320: anything bigger is refused
+constexpr float kRegionMargin = 1.8f;  // the next crop: the face's box grown this much about its centre
+constexpr float kPoseStep = 3;         // degrees a head must turn before it is sent again
+
+bool looks_like_jpeg(const protocol::Bytes& b) { return b.size() >= 4 && b[0] == 0xff && b[1] == 0xd8 && b[2] == 0xff; }
+
+Image decode_jpeg(const protocol::Bytes& jpeg, const char* what) {
+  if (!looks_like_jpeg(jpeg)) throw Error(std::string(what) + " is not a JPEG");
+  Image image = load_image_from_memory(jpeg, what);
+  if (image.width > kMaxDecodedSide || image.height > kMaxDecodedSide)
+    throw Error(std::string(what) + " is larger than " + std::to_string(kMaxDecodedSide) + " px");
+  return image;
+}
+
+int8_t degrees_byte(float degrees) { return int8_t(std::clamp(std::lround(degrees), -127L, 127L)); }
+
+}  // namespace
+
+struct CallAnalyst::Models {
+  FaceAnalyzer analyzer;
+};
+
+// What the analyst keeps of a member between crops.
+struct CallAnalyst::Member {
+  ExpressionSelector selector{ExpressionSelector::Options{.calibration_frames = 15}};
+  ExpressionStream stream;
+  std::optional<FaceLandmarks> neutral;  // pose reference: the neutral photo's, else the first face seen
+  HeadPose sent_pose;
+};
+
+CallAnalyst::CallAnalyst(std::function<void(Result)> done, std::string model)
+    : done_(std::move(done)), model_(std::move(model)), thread_([this] { run(); }) {}
+
+CallAnalyst::~CallAnalyst() {
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  wake_.notify_all();
+  thread_.join();
+}
+
+void CallAnalyst::photo(const MemberKey& who, protocol::Bytes jpeg) {
+  {
+    std::lock_guard lock(mutex_);
+    std::erase_if(photos_, [&](const auto& p) { return p.first == who; });  // a retake replaces one not yet looked at
+    photos_.emplace_back(who, std::move(jpeg));
+  }
+  wake_.notify_one();
+}
+
+void CallAnalyst::crop(const MemberKey& who, protocol::FaceCrop crop) {
+  {
+    std::lock_guard lock(mutex_);
+    crops_[who] = std::move(crop);
+    if (auto& member = members_[who]; !member) member = std::make_unique<Member>();
+  }
+  wake_.notify_one();
+}
+
+void CallAnalyst::forget(const MemberKey& who) {
+  std::lock_guard lock(mutex_);
+  crops_.erase(who);
+  std::erase_if(photos_, [&](const auto& p) { return p.first == who; });
+  members_.erase(who);
+}
+
+void CallAnalyst::run() {
+  for (;;) {
+    std::unique_lock lock(mutex_);
+    wake_.wait(lock, [&] { return stopping_ || !photos_.empty() || !crops_.empty(); });
+    if (stopping_) return;
+    std::optional<Result> result;
+    try {
+      if (!models_) {
+        lock.unlock();
+        FaceAnalyzerOptions options{.detect_every = 1, .detect_width = 0};
+        if (!model_.empty()) options.model = model_;
+        models_ = std::make_unique<Models>(Models{FaceAnalyzer(options)});
+        lock.lock();
+      }
+      if (!photos_.empty()) {
+        auto [who, jpeg] = std::move(photos_.front());
+        photos_.pop_front();
+        lock.unlock();
+        result = analyse_photo(who, std::move(jpeg));
+      } else if (!crops_.empty()) {
+        // Members take turns: the oldest waiting first would need times; any order keeps each one's newest.
+        auto node = crops_.extract(crops_.begin());
+        lock.unlock();
+        result = analyse_crop(node.key(), node.mapped());
+      }
+    } catch (const std::exception& e) {
+      // No model: every job says so (the server logs it once per member).
+      log(LogLevel::Error, "call-analysis-failed", {{"reason", e.what()}});
+      if (lock.owns_lock()) lock.unlock();
+      std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    }
+    if (result) done_(std::move(*result));
+  }
+}
+
+PhotoAnalysed CallAnalyst::analyse_photo(const MemberKey& who, protocol::Bytes jpeg) {
+  PhotoAnalysed out{.who = who, .error = {}, .photo = {}, .landmarks = {}};
+  try {
+    const Image photo = decode_jpeg(jpeg, "neutral photo");
+    const std::vector<FaceBox> faces = models_->analyzer.detect_in_photo(photo);
+    if (faces.empty()) throw Error("no face found in your photo");
+    const FaceBox& face = *std::max_element(faces.begin(), faces.end(), [](const FaceBox& a, const FaceBox& b) { return a.width() < b.width(); });
+    const FaceLandmarks landmarks = models_->analyzer.landmarks_in(photo, face);
+    auto member = std::make_unique<Member>();
+    member->selector.calibrate(measure_features(landmarks, &photo));
+    member->neutral = landmarks;
+    {
+      std::lock_guard lock(mutex_);
+      members_[who] = std::move(member);  // a retake calibrates anew (a member who left meanwhile is dropped by the server)
+    }
+    out.photo = std::move(jpeg);
+    out.landmarks = landmarks_to_json(landmarks);
+  } catch (const Error& e) {
+    out.error = e.what();
+  }
+  return out;
+}
+
+CropAnalysed CallAnalyst::analyse_crop(const MemberKey& who, const protocol::FaceCrop& crop) {
+  CropAnalysed out{.who = who, .time_ms = crop.time_ms, .error = {}, .region = {}, .face = {}};
+  try {
+    const Image image = decode_jpeg(crop.jpeg, "face crop");
+    const std::vector<FaceBox> faces = models_->analyzer.detect_in_photo(image);
+    std::optional<FaceLandmarks> found;
+    if (!faces.empty()) {
+      const FaceBox& face = *std::max_element(faces.begin(), faces.end(), [](const FaceBox& a, const FaceBox& b) { return a.width() < b.width(); });
+      found = models_->analyzer.landmarks_in(image, face);
+    }
+    // The member's calibration is read and changed under the lock: forget() may end it meanwhile.
+    std::lock_guard lock(mutex_);
+    const auto it = members_.find(who);
+    if (it == members_.end()) return out;  // left meanwhile
+    Member* member = it->second.get();
+    const ExpressionState state = member->selector.update(found ? std::optional(measure_features(*found, &image)) : std::nullopt);
+    if (!found) {
+      out.region = {.found = false};
+      return out;
+    }
+    // The landmarks in the publisher's frame: the crop shows crop.width x crop.height of it.
+    const float sx = float(crop.width) / float(image.width), sy = float(crop.height) / float(image.height);
+    FaceLandmarks in_frame = *found;
+    glm::vec2 lo(1e9f), hi(-1e9f);
+    for (glm::vec2& p : in_frame) {
+      p = glm::vec2(float(crop.x) + p.x * sx, float(crop.y) + p.y * sy);
+      lo = glm::min(lo, p), hi = glm::max(hi, p);
+    }
+    const glm::vec2 centre = (lo + hi) * 0.5f;
+    const float side = std::max(hi.x - lo.x, hi.y - lo.y) * kRegionMargin;
+    const float x0 = std::clamp(centre.x - side / 2, 0.0f, float(crop.frame_width - 8)), y0 = std::clamp(centre.y - side / 2, 0.0f, float(crop.frame_height - 8));
+    out.region = {.found = true, .x = uint16_t(x0), .y = uint16_t(y0),
+                  .width = uint16_t(std::clamp(side, 8.0f, float(crop.frame_width) - x0)),
+                  .height = uint16_t(std::clamp(side, 8.0f, float(crop.frame_height) - y0))};
+    if (!member->neutral) member->neutral = in_frame;
+    const HeadPose pose = head_pose(in_frame, *member->neutral);
+    const auto code = member->stream.next(state, crop.time_ms / 1000.0);
+    const bool turned = std::abs(pose.yaw - member->sent_pose.yaw) >= kPoseStep || std::abs(pose.pitch - member->sent_pose.pitch) >= kPoseStep ||
+                        std::abs(pose.roll - member->sent_pose.roll) >= kPoseStep;
+    if (code || turned) {
+      member->sent_pose = pose;
+      protocol::ExpressionCode expression = code.value_or(protocol::ExpressionCode{.code = uint8_t(state.expression), .intensity = state.intensity});
+      out.face = protocol::MemberFace{.member = who.member, .time_ms = crop.time_ms, .expression = expression, .yaw = degrees_byte(pose.yaw),
+                                      .pitch = degrees_byte(pose.pitch), .roll = degrees_byte(pose.roll), .source = protocol::FaceSource::Camera};
+    }
+  } catch (const Error& e) {
+    out.error = e.what();
+  }
+  return out;
+}
+
+}  // namespace inkwire::server

@@ -1,0 +1,79 @@
+#pragma once
+// Face analysis for calls (SPEC F8), on a thread of its own so the I/O thread keeps serving:
+// members' neutral photos (the face and its 68 landmarks) and their face crops (landmarks in
+// the publisher's frame, the expression against the member's neutral face, head pose). Each
+// member has one crop waiting at most: a newer crop replaces it (analysis keeps up with the
+// newest picture, never with a backlog). Results are handed to `done` on the analyst's thread;
+// the server posts them to its I/O thread. Camera pictures live in memory only.
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <variant>
+
+#include "protocol/messages.hpp"
+
+namespace inkwire::server {
+
+// Which member of which session a job is for.
+struct MemberKey {
+  std::string session;
+  uint16_t member = 0;
+  auto operator<=>(const MemberKey&) const = default;
+};
+
+struct PhotoAnalysed {
+  MemberKey who;
+  std::string error;        // empty when the face was found
+  protocol::Bytes photo;    // the JPEG as sent
+  std::string landmarks;    // its landmarks as JSON (common/face/landmarks_file.hpp)
+};
+
+struct CropAnalysed {
+  MemberKey who;
+  uint32_t time_ms = 0;
+  std::string error;                  // the crop could not be read (not a JPEG, too large)
+  protocol::FaceRegion region;        // where to crop next, for the publisher
+  std::optional<protocol::MemberFace> face;  // what to send the others, when it changed (or once a second)
+};
+
+class CallAnalyst {
+ public:
+  using Result = std::variant<PhotoAnalysed, CropAnalysed>;
+  // `model`: dlib's 68-point model, loaded on the analyst's thread when the first job comes.
+  explicit CallAnalyst(std::function<void(Result)> done, std::string model = "");
+  ~CallAnalyst();  // finishes the job in hand, drops the rest
+  CallAnalyst(const CallAnalyst&) = delete;
+  CallAnalyst& operator=(const CallAnalyst&) = delete;
+
+  void photo(const MemberKey& who, protocol::Bytes jpeg);
+  void crop(const MemberKey& who, protocol::FaceCrop crop);
+  // The member left: its waiting crop and its calibration go.
+  void forget(const MemberKey& who);
+
+ private:
+  struct Member;
+  void run();
+  PhotoAnalysed analyse_photo(const MemberKey& who, protocol::Bytes jpeg);
+  CropAnalysed analyse_crop(const MemberKey& who, const protocol::FaceCrop& crop);
+
+  std::function<void(Result)> done_;
+  std::string model_;
+  struct Models;
+  std::unique_ptr<Models> models_;  // on the analyst's thread only
+
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::deque<std::pair<MemberKey, protocol::Bytes>> photos_;
+  std::map<MemberKey, protocol::FaceCrop> crops_;  // the newest waiting crop per member
+  std::map<MemberKey, std::unique_ptr<Member>> members_;
+  bool stopping_ = false;
+  std::thread thread_;
+};
+
+}  // namespace inkwire::server

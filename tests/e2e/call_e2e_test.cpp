@@ -1,0 +1,151 @@
+// A call end to end on 127.0.0.1 (SPEC F7-F13): two members publish their own face and voice
+// to a real inkwire-server, a third listens. The publishers are SessionClients sending what a
+// member's client sends (a neutral photo, face crops as JPEG, Opus voice); the server analyses
+// the crops and relays the voice. Reads the Yale faces' development subjects from
+// ../shared/data/yalefaces when they are there, else libdlib's example photo with no change of
+// expression (then the expression check is skipped with a message).
+#include <cmath>
+#include <fstream>
+#include <thread>
+
+#include <gtest/gtest.h>
+#include <opus.h>
+
+#include "client/net/session_client.hpp"
+#include "common/image.hpp"
+#include "e2e_support.hpp"
+
+using namespace inkwire;
+using namespace inkwire::e2e;
+
+namespace {
+
+const fs::path kYale = fs::path(INKWIRE_SOURCE_DIR) / ".." / "shared" / "data" / "yalefaces";
+const fs::path kDlibPhoto = "/usr/share/doc/libdlib19.1/examples/faces/Tom_Cruise_avp_2014_4.jpg";
+const fs::path kFaceModel = "/usr/share/dlib/shape_predictor_68_face_landmarks.dat";
+
+protocol::Bytes jpeg_of(const Image& image, const fs::path& scratch) {
+  save_image(image, scratch, false);
+  std::ifstream in(scratch, std::ios::binary);
+  return protocol::Bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// `count` 20 ms Opus packets (12 kbit/s) of a voiced buzz, as a member's microphone sends them.
+std::vector<protocol::Bytes> voice_packets(int count) {
+  int error = 0;
+  OpusEncoder* encoder = opus_encoder_create(48000, 1, OPUS_APPLICATION_VOIP, &error);
+  opus_encoder_ctl(encoder, OPUS_SET_BITRATE(12000));
+  std::vector<protocol::Bytes> packets;
+  std::vector<float> pcm(960);
+  for (int k = 0; k < count; ++k) {
+    for (int i = 0; i < 960; ++i) {
+      const float t = float(k * 960 + i) / 48000.0f;
+      pcm[size_t(i)] = 0.3f * std::sin(2 * 3.14159265f * 180 * t) + 0.15f * std::sin(2 * 3.14159265f * 720 * t);
+    }
+    protocol::Bytes out(400);
+    out.resize(size_t(opus_encode_float(encoder, pcm.data(), 960, out.data(), opus_int32(out.size()))));
+    packets.push_back(std::move(out));
+  }
+  opus_encoder_destroy(encoder);
+  return packets;
+}
+
+const protocol::CallMember* named(const protocol::Roster& roster, const std::string& name) {
+  for (const auto& m : roster.members)
+    if (m.name == name) return &m;
+  return nullptr;
+}
+
+}  // namespace
+
+TEST(CallE2ETest, MembersAreSeenAndHeardAsThemselvesAndBadInputIsDroppedAndCounted) {
+  if (!fs::exists(kFaceModel) || !fs::exists(kDlibPhoto)) GTEST_SKIP() << "libdlib-data's model or libdlib-dev's example photo is missing";
+  const bool yale = fs::exists(kYale / "subject02_normal.png");
+  if (!yale) std::printf("../shared/data/yalefaces is absent: the photo of libdlib's examples stands in, and the smile is not checked\n");
+  const fs::path dir = output_dir("call");
+  ServerUnderTest server(dir, {{"http", "127.0.0.1:0"}, {"sessions", {{{"name", "call"}, {"kind", "conference"}}}}});
+  const Image neutral = yale ? load_image(kYale / "subject02_normal.png") : load_image(kDlibPhoto);
+  const Image happy = yale ? load_image(kYale / "subject02_happy.png") : neutral;
+
+  SessionClient ada(server.address(), "Ada"), grace(server.address(), "Grace"), listener(server.address(), "Listener");
+  for (SessionClient* c : {&ada, &grace, &listener}) c->join("call", "");
+  ada.send(protocol::Publish{.camera = true, .microphone = true});
+  grace.send(protocol::Publish{.camera = false, .microphone = true});
+  ada.send(protocol::NeutralPhoto{.jpeg = jpeg_of(neutral, dir / "neutral.jpg")});
+
+  // The roster lists all three, Ada's photo and landmarks among her assets, fetched by hash.
+  ASSERT_TRUE(eventually([&] {
+    const auto r = listener.roster();
+    return r.members.size() == 3 && named(r, "Ada") && named(r, "Ada")->assets.size() == 2;
+  })) << "roster of " << listener.roster().members.size();
+  const protocol::Roster roster = listener.roster();
+  const uint16_t ada_number = named(roster, "Ada")->member, grace_number = named(roster, "Grace")->member;
+  EXPECT_EQ(roster.you, named(roster, "Listener")->member);
+  EXPECT_TRUE(named(roster, "Ada")->camera);
+  EXPECT_FALSE(named(roster, "Grace")->camera);
+  AssetCache cache(dir / "cache");
+  const fs::path photo = listener.fetch_asset(named(roster, "Ada")->assets[0], cache);
+  EXPECT_EQ(load_image(photo).width, neutral.width);
+
+  // Ada's camera: neutral for a second, then smiling, 10 crops a second (whole frames: the
+  // server has not found her face yet, then around where it did). Both speak meanwhile.
+  const auto voice = voice_packets(100);
+  int sent_voice = 0;
+  for (int frame = 0; frame < 40; ++frame) {
+    const Image& shown = frame < 10 ? neutral : happy;
+    protocol::FaceCrop crop{.time_ms = uint32_t(frame * 100), .frame_width = uint16_t(shown.width), .frame_height = uint16_t(shown.height),
+                            .x = 0, .y = 0, .width = uint16_t(shown.width), .height = uint16_t(shown.height), .jpeg = {}};
+    if (const auto region = ada.face_region(); region && region->found) {
+      crop.x = region->x, crop.y = region->y, crop.width = region->width, crop.height = region->height;
+      crop.jpeg = jpeg_of(resized(cropped(shown, crop.x, crop.y, crop.width, crop.height), 160, 160), dir / "crop.jpg");
+    } else {
+      crop.jpeg = jpeg_of(shown, dir / "crop.jpg");
+    }
+    ada.send(crop);
+    for (int k = 0; k < 5 && sent_voice < int(voice.size()); ++k, ++sent_voice) {
+      ada.send(protocol::VoiceFrame{.member = 0, .time_ms = uint32_t(sent_voice * 20), .opus = voice[size_t(sent_voice)]});
+      grace.send(protocol::VoiceFrame{.member = 999, .time_ms = uint32_t(sent_voice * 20), .opus = voice[size_t(sent_voice)]});
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+  }
+  ASSERT_TRUE(ada.face_region() && ada.face_region()->found) << "the server never found Ada's face";
+  ASSERT_TRUE(eventually([&] { return listener.member_faces().count(ada_number); }));
+  const protocol::MemberFace ada_face = listener.member_faces().at(ada_number);
+  EXPECT_EQ(ada_face.source, protocol::FaceSource::Camera);
+  if (yale) EXPECT_EQ(expression_from_code(ada_face.expression.code), Expression::Smile) << "neutral then smile arrives as " << int(ada_face.expression.code);
+  // Grace has no camera: her voice moves her mouth.
+  ASSERT_TRUE(listener.member_faces().count(grace_number));
+  EXPECT_EQ(listener.member_faces().at(grace_number).source, protocol::FaceSource::Voice);
+  const int mouth = listener.member_faces().at(grace_number).expression.code;
+  EXPECT_TRUE(mouth >= int(Expression::VisemeClosed) && mouth <= int(Expression::VisemeRound)) << mouth;
+
+  // Every voice packet came through, stamped with its sender's own number (Grace said 999).
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  const auto heard = listener.take_voice();
+  int from_ada = 0, from_grace = 0;
+  for (const auto& v : heard) from_ada += v.member == ada_number, from_grace += v.member == grace_number;
+  EXPECT_GE(from_ada, sent_voice - 2);  // the first packets come before the server heard anyone speak
+  EXPECT_GE(from_grace, sent_voice - 2);
+  EXPECT_EQ(size_t(from_ada + from_grace), heard.size()) << "a packet under another member's number";
+  bool speaking = false;
+  for (const auto& m : listener.roster().members) speaking |= m.speaking;
+  EXPECT_TRUE(speaking);
+
+  // Bad input is dropped and counted; a member may not send session-wide expression codes; the
+  // listener is not disturbed.
+  ada.send(protocol::FaceCrop{.time_ms = 5000, .frame_width = 64, .frame_height = 64, .x = 0, .y = 0, .width = 64, .height = 64,
+                              .jpeg = protocol::Bytes{0x89, 'P', 'N', 'G', 0, 0}});
+  ada.send(protocol::VoiceFrame{.member = 0, .time_ms = 5000, .opus = protocol::Bytes(600, 0x11)});
+  ada.send(protocol::VoiceFrame{.member = 0, .time_ms = 5020, .opus = protocol::Bytes{0x03, 0x00}});
+  ada.send(protocol::ExpressionCode{.code = 4, .intensity = 255});
+  ASSERT_TRUE(eventually([&] { return ada.refusals() == 1; }));
+  EXPECT_NE(ada.refusal().find("only as themselves"), std::string::npos) << ada.refusal();
+  const std::string metrics = metrics_of(server);
+  for (const char* reason : {"crop-not-jpeg", "voice-too-large", "voice-not-opus"})
+    EXPECT_NE(metrics.find(std::string("inkwire_call_dropped_total{reason=\"") + reason + "\"} 1"), std::string::npos) << reason << "\n" << metrics;
+  EXPECT_TRUE(listener.connected() && ada.connected());
+
+  // Leaving takes the member out of everyone's roster.
+  grace.send(protocol::Leave{});
+  ASSERT_TRUE(eventually([&] { return listener.roster().members.size() == 2 && !named(listener.roster(), "Grace"); }));
+}
