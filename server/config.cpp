@@ -79,7 +79,7 @@ ServerConfig ServerConfig::embedded_default() {
   const fs::path cgal = INKWIRE_MESH_DIR;
   const fs::path truck = "/usr/share/assimp/models/glTF/CesiumMilkTruck/CesiumMilkTruck.gltf";
   auto session = [&](std::string name, SessionKind kind, const fs::path& model, std::string style) {
-    SessionConfig s{.name = std::move(name), .kind = kind, .token = "", .assets = {}, .style = std::move(style), .settings = {}, .face = {}, .product = {}};
+    SessionConfig s{.name = std::move(name), .kind = kind, .token = "", .editor_token = "", .assets = {}, .style = std::move(style), .settings = {}, .face = {}, .product = {}};
     if (!model.empty() && fs::exists(model)) s.assets.push_back({model, AssetKind::Mesh});
     if (model.empty() || !s.assets.empty()) c.sessions.push_back(std::move(s));
   };
@@ -87,7 +87,7 @@ ServerConfig ServerConfig::embedded_default() {
   session("sketchbook", SessionKind::Scene, cgal / "bull.off", "sketch-pencil");
   // The turntable's product: the textured truck rendered into 24 photos on the server.
   if (fs::exists(truck)) {
-    SessionConfig t{.name = "turntable", .kind = SessionKind::Turntable, .token = "", .assets = {}, .style = "tween", .settings = {},
+    SessionConfig t{.name = "turntable", .kind = SessionKind::Turntable, .token = "", .editor_token = "", .assets = {}, .style = "tween", .settings = {},
                     .face = {}, .product = ProductSource{}};
     t.product->mesh = truck;
     c.sessions.push_back(std::move(t));

@@ -153,7 +153,7 @@ protocol::Snapshot store_spin(server::AssetStore& store, const std::vector<Image
   for (auto& a : state.assets) a.kind = protocol::AssetKind::Image;
   state.kind = protocol::SessionKind::Scene;
   state.product = {};
-  store.save_session({.token = "", .state = state});
+  store.save_session({.token = "", .editor_token = "", .state = state});
   return state;
 }
 
@@ -261,7 +261,7 @@ std::vector<Result> run_turntable_suite(Harness& harness) {
     {
       server::AssetStore store(data);
       state = server::store_product(store, product, name);
-      store.save_session({.token = "", .state = state});
+      store.save_session({.token = "", .editor_token = "", .state = state});
       spin_state = store_spin(store, samples.images, "spin" + std::to_string(n));
     }
     server::AssetStore store(data);

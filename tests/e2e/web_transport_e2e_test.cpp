@@ -59,6 +59,8 @@ class WebSocket {
   }
   void send(const protocol::Message& m) { send_raw(0x82, protocol::encode(m)); }
 
+  // The status code of the server's Close frame (0: none came).
+  int close_code() const { return close_code_; }
   // The next protocol message, or nothing when the server closed the connection.
   std::optional<protocol::Message> receive() {
     std::error_code ec;
@@ -82,8 +84,13 @@ class WebSocket {
       at = 10;
     }
     if (!need(at + size)) return std::nullopt;
+    const uint8_t opcode = uint8_t(buffer_[0]) & 0x0f;
     const protocol::Bytes frame(buffer_.begin() + long(at), buffer_.begin() + long(at + size));
     buffer_.erase(0, at + size);
+    if (opcode == 0x8) {  // Close: the server's last word, with the code that says why
+      close_code_ = frame.size() >= 2 ? frame[0] << 8 | frame[1] : 0;
+      return std::nullopt;
+    }
     const auto header = protocol::parse_header(frame.data());
     return protocol::decode(header.type, frame.data() + protocol::kHeaderBytes, frame.size() - protocol::kHeaderBytes);
   }
@@ -101,6 +108,7 @@ class WebSocket {
   asio::io_context io_;
   tcp::socket socket_;
   std::string buffer_, head_;
+  int close_code_ = 0;
 };
 
 }  // namespace
@@ -183,6 +191,7 @@ TEST_F(WebTransportE2ETest, ForeignOriginsTextMessagesOversizedMessagesAndSlowHe
   std::string reason;
   EXPECT_TRUE(text.closed_after_error(&reason));
   EXPECT_NE(reason.find("text WebSocket message"), std::string::npos) << reason;
+  EXPECT_EQ(text.close_code(), 1002) << "a protocol error";
   EXPECT_TRUE(still_served(2));
 
   // Fragments that add up past one frame's limit: cut off before the rest is read.
@@ -195,6 +204,7 @@ TEST_F(WebTransportE2ETest, ForeignOriginsTextMessagesOversizedMessagesAndSlowHe
   big.send_raw(0x00, fragment);  // continuation past 128 KiB
   EXPECT_TRUE(big.closed_after_error(&reason));
   EXPECT_NE(reason.find("over the frame limit"), std::string::npos) << reason;
+  EXPECT_EQ(big.close_code(), 1009) << "a message too big";
   EXPECT_TRUE(still_served(3));
 
   // Half a request head, then nothing: cut off after the head timeout (1 s here).

@@ -53,9 +53,10 @@ for _ in range(100):
         break
     time.sleep(0.1)
 first.stop()
-server = Server(BIN, OUT, data, {"sessions": [{"name": "meeting", "kind": "conference"}], "http": "127.0.0.1:0"})
+# The director is the call's editor: only an editor may set the session's expression.
+server = Server(BIN, OUT, data, {"sessions": [{"name": "meeting", "kind": "conference", "editor_token": "d1rector"}], "http": "127.0.0.1:0"})
 director = socket.create_connection(("127.0.0.1", server.tcp))
-director.sendall(frame(1, struct.pack("<IH", 0x574B4E49, 2) + text("director")) + frame(6, text("meeting") + text("")))
+director.sendall(frame(1, struct.pack("<IH", 0x574B4E49, 3) + text("director")) + frame(6, text("meeting") + text("d1rector")))
 driver = None
 element = "document.querySelector('inkwire-conference')"
 

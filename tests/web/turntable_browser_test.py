@@ -33,7 +33,7 @@ check = checks.check
 os.makedirs(OUT, exist_ok=True)
 data = os.path.join(OUT, "data")
 shutil.rmtree(data, ignore_errors=True)
-subprocess.run([f"{BIN}/inkwire-server", "add-product", "duck", "--mesh", DUCK, "--size", str(SIZE), "--data", data],
+subprocess.run([f"{BIN}/inkwire-server", "add-product", "duck", "--mesh", DUCK, "--size", str(SIZE), "--data", data, "--editor-token", "sh0p-0wner"],
                check=True, stdout=subprocess.DEVNULL)
 server = Server(BIN, OUT, data, {"sessions": [], "http": "127.0.0.1:0"})
 tcp, http = server.tcp, server.http
@@ -42,7 +42,7 @@ try:
     driver = chromium(OUT, 400, 400)
     driver.get(f"http://127.0.0.1:{http}/")
     driver.execute_script(f"""
-      document.body.innerHTML = '<inkwire-turntable session="duck" auto-rotate="off" style="width:{SIZE}px;height:{SIZE}px"></inkwire-turntable>';
+      document.body.innerHTML = '<inkwire-turntable session="duck" token="sh0p-0wner" auto-rotate="off" style="width:{SIZE}px;height:{SIZE}px"></inkwire-turntable>';
       import('/inkwire.js');""")
     start = time.time()
     while time.time() - start < 60 and not driver.execute_script("return document.querySelector('inkwire-turntable').hasAttribute('loaded')"):

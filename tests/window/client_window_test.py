@@ -66,9 +66,10 @@ checks = Checks()
 config = {"sessions": [{"name": "look", "kind": "scene", "style": "comic",
                         "assets": [{"path": os.path.abspath(MESH), "kind": "mesh"}]}]}
 DUCK = "/usr/share/assimp/models/Collada/duck.dae"
+EDITOR = "sh0p-0wner"  # the product's editor token: only its editors present
 if os.path.exists(DUCK):  # a product for presenter mode, made as a shop owner would
     subprocess.run([f"{BIN}/inkwire-server", "add-product", "duck", "--mesh", DUCK, "--samples", "12", "--size", "128",
-                    "--data", os.path.join(OUT, "data")], check=True, stdout=subprocess.DEVNULL)
+                    "--data", os.path.join(OUT, "data"), "--editor-token", EDITOR], check=True, stdout=subprocess.DEVNULL)
 server = Server(BIN, OUT, os.path.join(OUT, "data"), config)
 frame_log = os.path.join(OUT, "frames.jsonl")
 env = dict(os.environ, XDG_CONFIG_HOME=os.path.join(OUT, "config"))  # the panel's first-run state
@@ -121,7 +122,7 @@ try:
         client.terminate()
         client.wait(timeout=10)
         product_log = os.path.join(OUT, "product.jsonl")
-        client = subprocess.Popen([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{server.tcp}", "--session", "duck",
+        client = subprocess.Popen([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{server.tcp}", "--session", "duck", "--token", EDITOR,
                                    "--size", f"{WIDTH}x{HEIGHT}", "--cache", os.path.join(OUT, "cache"), "--frame-log", product_log],
                                   stderr=client_log, env=env)
         wait_for(lambda: os.path.exists(product_log) and any(line["product"]["samples_loaded"] == 12 for line in log_lines(product_log)),
@@ -145,7 +146,7 @@ try:
                      f"P presents the window's view: a client that follows shows {followed:.1f} degrees, the window {window_azimuth():.1f}")
         key("p", "f")  # stop presenting, follow
         time.sleep(0.5)
-        presented = headless("presenter", "--frames", "5", "--fps", "10", "--view", "200", "--present")
+        presented = headless("presenter", "--frames", "5", "--fps", "10", "--view", "200", "--present", "--token", EDITOR)
         end = time.time() + 10
         while time.time() < end and abs(on_the_circle(window_azimuth() - presented)) >= 0.01:
             time.sleep(0.2)
