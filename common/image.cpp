@@ -50,6 +50,31 @@ Image load_image(const std::filesystem::path& file) {
   return read_all(*in, file.string());
 }
 
+std::vector<uint8_t> encode_image(const Image& image, const std::string& format, int quality, int first_channel, int channels) {
+  if (image.width <= 0 || image.height <= 0 || image.pixels.size() != size_t(image.width) * size_t(image.height) * 4)
+    throw Error("encode_image: empty or inconsistent image");
+  if ((channels != 1 && channels != 3) || first_channel < 0 || first_channel + channels > 4) throw Error("encode_image: bad channels");
+  const cv::Mat rgba(image.height, image.width, CV_8UC4, const_cast<uint8_t*>(image.pixels.data()));
+  cv::Mat pixels;
+  if (channels == 3) {
+    cv::cvtColor(rgba, pixels, cv::COLOR_RGBA2BGR);
+  } else {
+    pixels.create(image.height, image.width, CV_8UC1);
+    cv::extractChannel(rgba, pixels, first_channel);
+  }
+  std::vector<int> parameters;
+  if (format == "jpg") parameters = {cv::IMWRITE_JPEG_QUALITY, std::clamp(quality, 1, 100)};
+  std::vector<uint8_t> out;
+  bool ok = false;
+  try {
+    ok = cv::imencode("." + format, pixels, out, parameters);
+  } catch (const cv::Exception& e) {
+    throw Error(std::string("cannot encode ") + format + ": " + e.what());
+  }
+  if (!ok) throw Error("cannot encode " + format);
+  return out;
+}
+
 Image load_image_from_memory(std::span<const uint8_t> encoded, const std::string& name) {
   // OpenCV decodes from memory by the bytes' magic number (PNG, JPEG, BMP, ...); OpenImageIO's
   // memory readers do not work for every format in the packaged build.

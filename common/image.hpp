@@ -33,6 +33,11 @@ inline constexpr int kMaxImageSide = 16384;
 Image load_image(const std::filesystem::path& file);
 Image load_image_from_memory(std::span<const uint8_t> encoded, const std::string& name_for_errors);
 
+// Encodes in memory, never through a file: "jpg" (colour, at `quality` 1..100) or "png";
+// `channels` 3 is the colour, 1 the channel `first_channel` alone as grey (a matte from alpha).
+// Throws inkwire::Error when the encoder fails.
+std::vector<uint8_t> encode_image(const Image& image, const std::string& format, int quality = 90, int first_channel = 0, int channels = 3);
+
 // Writes PNG (or any format OpenImageIO knows by extension). `keep_alpha` false drops alpha.
 void save_image(const Image& image, const std::filesystem::path& file, bool keep_alpha = true);
 

@@ -211,8 +211,19 @@ void Server::start() {
                    secure_then(std::move(socket), tls_, handshake, [this](ByteStream stream) { adopt(std::make_unique<TcpTransport>(std::move(stream))); });
                  }), asio::detached);
   asio::co_spawn(io_, persist_loop(), asio::detached);
+  asio::co_spawn(io_, call_loop(), asio::detached);
   if (http_) http_->start();
   relay_->start();
+}
+
+asio::awaitable<void> Server::call_loop() {
+  asio::steady_timer timer(io_);
+  while (!stopping_) {
+    timer.expires_after(std::chrono::milliseconds(200));
+    co_await timer.async_wait(no_throw);
+    for (auto& [name, session] : sessions_)
+      if (Call* call = session->call()) call->tick();
+  }
 }
 
 asio::awaitable<void> Server::persist_loop() {

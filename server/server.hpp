@@ -93,6 +93,7 @@ class Server {
   void ready_product(Session& session);
   void start_face_feeds();
   asio::awaitable<void> persist_loop();
+  asio::awaitable<void> call_loop();  // calls' speakers fall silent on time
 
   asio::io_context& io_;
   ServerConfig config_;

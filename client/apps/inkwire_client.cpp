@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "client/call/publisher.hpp"
 #include "client/gl/context.hpp"
 #include "client/viewer/session_view.hpp"
 #include "client/viewer/viewer.hpp"
@@ -44,6 +45,14 @@ int main(int argc, char** argv) {
   app.add_option("--frame-log", o.frame_log, "write one JSON line per frame drawn (frame, revision, style, time; the window adds its panel's place)");
   app.add_option("--msaa", o.msaa, "samples per pixel for antialiased edges (1 = off)")->check(CLI::Range(1, 16));
   app.add_option("--gl", o.gl, "headless GL backend: osmesa, egl or auto");
+  PublisherOptions call;
+  app.add_option("--camera", call.camera, "calls: publish this member's face from camera:N, a video file or a folder of images");
+  app.add_option("--microphone", call.microphone, "calls: publish this member's voice from 'default' (the sound input) or a WAV file");
+  app.add_option("--photo", call.photo, "calls: this member's neutral photo (default: the camera's first picture)");
+  app.add_option("--voice-bitrate", call.voice_bitrate, "calls: Opus bits a second (default 8000)")->check(CLI::Range(6000, 12000));
+  app.add_option("--voice-frame-ms", call.voice_frame_ms, "calls: milliseconds of voice per packet: 20, 40 (default) or 60")
+      ->check(CLI::IsMember({20, 40, 60}));
+  app.add_option("--audio-out", o.audio_out, "calls, headless: write the sound heard to this WAV file (an .mp4 --out gets it too)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -72,6 +81,13 @@ int main(int argc, char** argv) {
     if (!headless && !window_system_available()) {
       if (o.frames == 0 || o.out.empty()) throw Error("no display: run with --headless --frames N --out PATH");
       headless = true;
+    }
+    // A call member publishes its own face and voice (SPEC F7); without sources it listens.
+    std::unique_ptr<Publisher> publisher;
+    if (!call.camera.empty() || !call.microphone.empty() || !call.photo.empty()) {
+      if (joined.kind != protocol::SessionKind::Conference) throw Error("--camera, --microphone and --photo are for calls (conference sessions)");
+      publisher = std::make_unique<Publisher>(client, call);
+      o.publisher = publisher.get();
     }
     return headless ? run_headless(client, cache, o) : run_window(client, cache, o);
   } catch (const std::exception& e) {

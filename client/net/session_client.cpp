@@ -117,13 +117,15 @@ void SessionClient::on_message(Message message) {
     ++updates_;
   } else if (const auto* face = std::get_if<MemberFace>(&message)) {
     member_faces_[face->member] = *face;
+    if (face_queue_.size() >= 1000) face_queue_.pop_front();
+    face_queue_.push_back(*face);
     ++updates_;
   } else if (const auto* region = std::get_if<FaceRegion>(&message)) {
     face_region_ = *region;
   } else if (auto* voice = std::get_if<VoiceFrame>(&message)) {
     constexpr size_t kKept = 500;  // ten seconds of 20 ms packets
     if (voice_.size() >= kKept) voice_.pop_front();
-    voice_.push_back(std::move(*voice));
+    voice_.push_back({std::move(*voice), std::chrono::steady_clock::now()});
   } else if (const auto* refused = std::get_if<ErrorMessage>(&message); refused && refused->code == ErrorCode::NotAllowed) {
     // A change this member may not make: the session's own value follows it; nothing else stops.
     refusal_ = refused->reason;
@@ -228,7 +230,12 @@ std::optional<FaceRegion> SessionClient::face_region() const {
   return face_region_;
 }
 
-std::deque<VoiceFrame> SessionClient::take_voice() {
+std::deque<MemberFace> SessionClient::take_member_faces() {
+  std::lock_guard lock(mutex_);
+  return std::exchange(face_queue_, {});
+}
+
+std::deque<SessionClient::ReceivedVoice> SessionClient::take_voice() {
   std::lock_guard lock(mutex_);
   return std::exchange(voice_, {});
 }

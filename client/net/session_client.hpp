@@ -67,7 +67,13 @@ class SessionClient {
   protocol::Roster roster() const;
   std::map<uint16_t, protocol::MemberFace> member_faces() const;
   std::optional<protocol::FaceRegion> face_region() const;
-  std::deque<protocol::VoiceFrame> take_voice();
+  struct ReceivedVoice {
+    protocol::VoiceFrame frame;
+    std::chrono::steady_clock::time_point arrived;
+  };
+  std::deque<ReceivedVoice> take_voice();
+  // Every member-face received since the last take, in order (a few seconds' worth at most).
+  std::deque<protocol::MemberFace> take_member_faces();
 
   uint64_t bytes_sent() const { return bytes_sent_; }
   uint64_t bytes_received() const { return bytes_received_; }
@@ -95,7 +101,8 @@ class SessionClient {
   protocol::Roster roster_;
   std::map<uint16_t, protocol::MemberFace> member_faces_;
   std::optional<protocol::FaceRegion> face_region_;
-  std::deque<protocol::VoiceFrame> voice_;
+  std::deque<ReceivedVoice> voice_;
+  std::deque<protocol::MemberFace> face_queue_;
   uint64_t updates_ = 0;
   bool connected_ = true;
   std::string last_error_, refusal_;

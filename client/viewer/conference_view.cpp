@@ -35,6 +35,9 @@ void ConferenceView::set_style(const std::string& renderer, const std::vector<st
 }
 
 void ConferenceView::draw(glm::ivec2 viewport, double time_seconds) {
+  // The viewport may be a tile of a larger picture (a call's grid): the face goes inside it.
+  glm::ivec4 origin;
+  gl::glGetIntegerv(GL_VIEWPORT, &origin.x);
   if (pending_) {
     face_.set_expression(*pending_, time_seconds);
     pending_.reset();
@@ -42,7 +45,7 @@ void ConferenceView::draw(glm::ivec2 viewport, double time_seconds) {
   face_.render(time_seconds);
   const float scale = std::min(float(viewport.x) / float(face_.width()), float(viewport.y) / float(face_.height()));
   const glm::ivec2 size(std::lround(float(face_.width()) * scale), std::lround(float(face_.height()) * scale));
-  const glm::ivec4 rect((viewport.x - size.x) / 2, (viewport.y - size.y) / 2, size.x, size.y);
+  const glm::ivec4 rect(origin.x + (viewport.x - size.x) / 2, origin.y + (viewport.y - size.y) / 2, size.x, size.y);
   if (!painter_) {
     face_.composite(glm::vec4(rect));
     return;

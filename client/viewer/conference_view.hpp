@@ -28,7 +28,7 @@ class ConferenceView {
   // Throws inkwire::Error for painterly settings the painter does not take (the previous look
   // is kept).
   void set_style(const std::string& renderer, const std::vector<std::string>& settings);
-  // Into the bound framebuffer, centred, as large as fits.
+  // Into the bound framebuffer's current viewport (`viewport` its size), centred, as large as fits.
   void draw(glm::ivec2 viewport, double time_seconds);
 
   ExpressionState expression() const { return face_.expression(); }

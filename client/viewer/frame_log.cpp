@@ -12,6 +12,17 @@ nlohmann::json frame_log_line(SessionSync& sync, const SessionClient& client, lo
                        {"cells_loaded", t->cells_loaded()}, {"bytes_sent", client.bytes_sent()},
                        {"bytes_received", client.bytes_received()}};
   if (client.refusals() > 0) line["refused"] = {{"count", client.refusals()}, {"reason", client.refusal()}};
+  // A call's members as the page's element exposes them (CONTRACTS.md): name, speaking, expression.
+  if (const CallGrid& call = sync.view().call(); !call.empty()) {
+    nlohmann::json members = nlohmann::json::array();
+    for (const CallGrid::Tile& t : call.tiles()) {
+      if (t.member == 0) continue;
+      const auto shown = call.expression(t.member);
+      members.push_back({{"name", t.name}, {"speaking", t.speaking}, {"expression", name_of(shown ? shown->expression : Expression::Neutral)},
+                         {"you", t.you}, {"camera", t.camera}, {"microphone", t.microphone}, {"face_found", t.face_found}});
+    }
+    line["members"] = members;
+  }
   if (const auto expression = sync.view().expression())
     line["expression"] = {{"name", name_of(expression->expression)}, {"intensity", expression->intensity}};
   return line;

@@ -10,9 +10,36 @@
 #include "client/viewer/frame_log.hpp"
 #include "client/viewer/session_sync.hpp"
 #include "client/viewer/viewer.hpp"
+#include "client/call/audio_file.hpp"
+#include "client/call/call_captions.hpp"
 #include "common/error.hpp"
 
 namespace inkwire {
+namespace {
+
+// A call's sound: to --audio-out, and into an .mp4 recording beside its pictures (ffmpeg copies
+// the video and adds the sound as AAC).
+void save_call_sound(const ViewerOptions& o, const std::vector<float>& sound, const CallAudio& audio) {
+  const bool mux = o.out.ends_with(".mp4");
+  if (o.audio_out.empty() && !mux) return;
+  const std::filesystem::path wav = o.audio_out.empty() ? std::filesystem::path(o.out + ".sound.wav") : std::filesystem::path(o.audio_out);
+  write_wav_mono(wav, sound);
+  std::cerr << "inkwire-client: " << audio.played() << " voice packets heard, " << audio.late() << " too late; sound in " << wav << "\n";
+  if (mux) {
+    const std::string muxed = o.out + ".muxed.mp4";
+    const auto quoted = [](std::string s) {
+      for (size_t at = 0; (at = s.find('\'', at)) != std::string::npos; at += 4) s.replace(at, 1, "'\\''");
+      return "'" + s + "'";
+    };
+    const std::string command = "ffmpeg -loglevel error -y -i " + quoted(o.out) + " -i " + quoted(wav.string()) +
+                                " -c:v copy -c:a aac -b:a 48k -shortest " + quoted(muxed);
+    if (std::system(command.c_str()) != 0) throw Error("ffmpeg could not add the call's sound to " + o.out);
+    std::filesystem::rename(muxed, o.out);
+  }
+  if (o.audio_out.empty()) std::filesystem::remove(wav);
+}
+
+}  // namespace
 
 int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& o) {
   if (o.frames <= 0) throw Error("--headless needs --frames N (1..100000)");
@@ -36,7 +63,15 @@ int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& 
     if (!changed) client.wait_for_update(client.updates(), std::chrono::milliseconds(sync.fetching() ? 2 : 50));
   }
   auto tick = std::chrono::steady_clock::now();
+  // A call's sound, frame by frame on the same clock as the pictures.
+  sync.audio().take(tick);
+  std::vector<float> sound;
+  const auto hear_until = [&](std::chrono::steady_clock::time_point until) {
+    const std::vector<float> heard = sync.audio().take(until);  // only what is due by now: late packets are late
+    sound.insert(sound.end(), heard.begin(), heard.end());
+  };
   for (int i = 0; i < o.frames; ++i) {
+    hear_until(tick);
     sync.poll();
     // A product's view is this visitor's own: a full turn over the frames, or, following, the
     // newest view a presenter sent; presenting, each frame's view goes to the session.
@@ -51,12 +86,16 @@ int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& 
     if (o.present && sync.view().turntable() && client.refusals() == 0) client.send(view.pose(uint32_t(i + 1)));
     canvas.bind();
     sync.view().draw(o.size, double(i) / o.fps, i);
-    writer.write(canvas.read());
+    Image picture = canvas.read();
+    if (!sync.view().call().empty()) draw_call_captions(picture, sync.view().call().tiles());
+    writer.write(picture);
     if (log) log << frame_log_line(sync, client, i).dump() << "\n" << std::flush;
     tick += period;
     std::this_thread::sleep_until(tick);
   }
+  hear_until(tick);
   writer.close();
+  if (!sync.view().call().empty()) save_call_sound(o, sound, sync.audio());
   // Frames of a blank backdrop are not a recording of the session: say why and fail.
   if (!sync.view().content_error().empty()) throw Error(sync.view().content_error() + " (the frames written show none of it)");
   if (!sync.view().error().empty()) std::cerr << "inkwire-client: " << sync.view().error() << "\n";

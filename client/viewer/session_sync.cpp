@@ -39,12 +39,45 @@ bool SessionSync::poll() {
     if (TurntableView* t = view_.turntable()) t->add_cells(client_.tween_cells());
     changed = true;
   }
+  if (state_.kind == protocol::SessionKind::Conference) changed |= poll_call();
   if (TurntableView* t = view_.turntable()) {
     changed |= take_photo(*t);
     if (!photo_.valid()) {
       const int next = t->next_sample(view_.orbit());
       if (next >= 0) fetch_photo(next);
     }
+  }
+  return changed;
+}
+
+bool SessionSync::poll_call() {
+  bool changed = false;
+  const protocol::Roster roster = client_.roster();
+  if (!(roster == roster_)) {
+    roster_ = roster;
+    for (const protocol::CallMember& m : roster_.members) {
+      if (m.assets.size() != 2) continue;
+      std::vector<std::filesystem::path> files;
+      for (const protocol::AssetAnnounce& a : m.assets) files.push_back(client_.fetch_asset(a, cache_));  // small, once
+      member_files_[m.member] = files;
+    }
+    view_.update_call(roster_, member_files_);
+    changed = true;
+  }
+  for (const auto& voice : client_.take_voice()) audio_.add(voice.frame, voice.arrived);
+  for (protocol::MemberFace& face : client_.take_member_faces()) faces_waiting_.push_back(face);
+  // A face comes when the sound of its moment plays (its member's clock mapped as the voice's),
+  // so the mouth moves with the voice; a member never heard is shown at once.
+  const auto now = std::chrono::steady_clock::now();
+  for (auto it = faces_waiting_.begin(); it != faces_waiting_.end();) {
+    const auto due = audio_.local_time(it->member, it->time_ms);
+    if (due && *due > now) {
+      ++it;
+      continue;
+    }
+    view_.set_member_face(*it);
+    it = faces_waiting_.erase(it);
+    changed = true;
   }
   return changed;
 }

@@ -83,7 +83,8 @@ bool SessionView::update_face(const protocol::Snapshot& state, const std::vector
   face_.reset();
   content_error_.clear();
   if (photo.empty() || landmarks.empty()) {
-    content_error_ = "the conference has no speaker yet (no photo and landmarks assets)";
+    // A call's members show themselves; without them and without a speaker there is nothing.
+    if (call_.empty()) content_error_ = "the conference has no speaker yet (no photo and landmarks assets)";
   } else {
     try {
       face_.emplace(photo, landmarks);
@@ -121,6 +122,7 @@ void SessionView::update_style(const protocol::Snapshot& state, bool new_content
   try {
     style_params(state.style.renderer, state.style.settings);
     if (face_) face_->set_style(state.style.renderer, state.style.settings);
+    if (!call_.empty()) call_.set_style(state.style.renderer, state.style.settings);
     if (shows_object) {
       auto renderer = make_renderer(state.style.renderer, state.style.settings);
       if (object_) renderer->prepare(*object_);
@@ -144,6 +146,12 @@ void SessionView::update_style(const protocol::Snapshot& state, bool new_content
   }
 }
 
+void SessionView::update_call(const protocol::Roster& roster, const std::map<uint16_t, std::vector<std::filesystem::path>>& files) {
+  call_.update(roster, files);
+  call_.set_style(state_.style.renderer, state_.style.settings);
+  if (!call_.empty() && !face_) content_error_.clear();
+}
+
 std::optional<ExpressionState> SessionView::expression() const {
   if (!face_) return std::nullopt;
   return face_->expression();
@@ -152,7 +160,8 @@ std::optional<ExpressionState> SessionView::expression() const {
 void SessionView::draw(glm::ivec2 viewport, double time_seconds, long frame) {
   if (!backdrop_) backdrop_.emplace(BackdropSpec::parse("paper"));
   backdrop_->draw();
-  if (face_) face_->draw(viewport, time_seconds);
+  if (!call_.empty()) call_.draw(viewport, time_seconds, face_ ? &*face_ : nullptr);
+  else if (face_) face_->draw(viewport, time_seconds);
   if (turntable_) turntable_->draw(viewport, orbit_);
   if (!object_ || !renderer_) return;
   FrameState f;

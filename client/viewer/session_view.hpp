@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "client/call/call_grid.hpp"
 #include "client/render/backdrop.hpp"
 #include "client/render/renderer.hpp"
 #include "client/render/scene_object.hpp"
@@ -45,6 +46,12 @@ class SessionView {
   // The expression shown, in conference sessions.
   std::optional<ExpressionState> expression() const;
 
+  // A call (a conference whose members publish themselves): the roster with its members'
+  // cached photo and landmarks files, and each member's face as it is due.
+  void update_call(const protocol::Roster& roster, const std::map<uint16_t, std::vector<std::filesystem::path>>& files);
+  void set_member_face(const protocol::MemberFace& face) { call_.set_face(face); }
+  const CallGrid& call() const { return call_; }
+
   // A turntable session's product and this visitor's own view of it (null in other sessions).
   TurntableView* turntable() { return turntable_ ? &*turntable_ : nullptr; }
   TurntableOrbit& orbit() { return orbit_; }
@@ -59,6 +66,7 @@ class SessionView {
   std::optional<SceneObject> object_;
   std::filesystem::path mesh_file_;
   std::optional<ConferenceView> face_;
+  CallGrid call_;
   std::optional<TurntableView> turntable_;
   protocol::Product product_;
   std::vector<protocol::AssetAnnounce> product_assets_;

@@ -11,6 +11,8 @@
 
 namespace inkwire {
 
+class Publisher;
+
 struct ViewerOptions {
   glm::ivec2 size{640, 480};
   int frames = 0;            // headless: frames to render
@@ -26,6 +28,9 @@ struct ViewerOptions {
   // Presenter mode, off by default: this client's view of a product goes to the session as
   // object poses (present), or this client shows the view a presenter sends (follow).
   bool present = false, follow = false;
+  // Calls: headless, the sound heard is written here (WAV) and, with an .mp4 --out, muxed into it.
+  std::string audio_out;
+  Publisher* publisher = nullptr;  // what this member publishes of itself (window keys mute and camera off)
 };
 
 int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& options);

@@ -16,6 +16,8 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 
+#include "client/call/call_captions.hpp"
+#include "client/call/publisher.hpp"
 #include "client/gl/context.hpp"
 #include "client/render/styles.hpp"
 #include "client/viewer/frame_log.hpp"
@@ -105,6 +107,11 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
     const double now = glfwGetTime(), dt = std::min(now - last_time, 0.1);
     last_time = now;
     bool dirty = sync.poll();
+    if (o.publisher && (input.toggle_mute || input.toggle_camera)) {
+      if (input.toggle_mute) o.publisher->set_muted(!o.publisher->muted());
+      if (input.toggle_camera) o.publisher->set_camera_off(!o.publisher->camera_off());
+      dirty = true;
+    }
     if (client.refusals() != refusals) {
       // Refused: the session's value came back; stop presenting what nobody will see.
       refusals = client.refusals();
@@ -167,6 +174,8 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
       redraw_hz = style_redraw_hz(sync.state().style.renderer);
     } catch (const Error&) {
     }
+    // A call changes as its members speak and move: drawn at the faces' rate.
+    if (!sync.view().call().empty()) redraw_hz = std::max(redraw_hz, 30.0);
     if (redraw_hz > 0.0 && now >= next_animation) dirty = true, next_animation = std::max(next_animation + 1.0 / redraw_hz, now);
     if (!dirty && settle == 0) {
       double wait = kIdlePollSeconds;
@@ -198,6 +207,19 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
       ImGui::TextWrapped("%s, revision %u", sync.state().session.c_str(), sync.view().revision());
       ImGui::TextWrapped("sent %llu B, received %llu B", (unsigned long long)client.bytes_sent(), (unsigned long long)client.bytes_received());
       ImGui::Separator();
+      if (!sync.view().call().empty()) {
+        // A call: every member's tile, its name and state under it; this member's keys.
+        for (const CallGrid::Tile& t : sync.view().call().tiles()) {
+          const float to_window = float(window_w) / float(std::max(size.x, 1));
+          ImGui::GetForegroundDrawList()->AddText(ImVec2(float(t.rect.x) * to_window, float(t.rect.y + t.rect.w + 3) * to_window),
+                                                  t.speaking ? IM_COL32(90, 230, 120, 255) : IM_COL32(235, 235, 235, 255), caption_of(t).c_str());
+        }
+        if (o.publisher)
+          ImGui::TextWrapped("M: %s. C: %s. Microphone %.0f dB.", o.publisher->muted() ? "unmute" : "mute",
+                             o.publisher->camera_off() ? "camera on" : "camera off", o.publisher->level_db());
+        else
+          ImGui::TextWrapped("Listening: join with --camera and --microphone to be seen and heard.");
+      }
       if (product) {
         // Photos arrive nearest the view first; the view tweens wherever a pair is complete.
         char label[64];
@@ -207,7 +229,7 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
         ImGui::TextWrapped("P: %s this view to the session. F: %s the presenter's view.", present ? "stop presenting" : "present",
                            follow ? "stop following" : "follow");
       } else {
-        ImGui::TextWrapped("Drag to orbit, wheel to zoom, Tab / Shift-Tab: style, arrows: view.");
+        if (sync.view().call().empty()) ImGui::TextWrapped("Drag to orbit, wheel to zoom, Tab / Shift-Tab: style, arrows: view.");
         if (auto change = panel.draw(sync.state().style)) client.send(*change);
       }
       if (!sync.view().error().empty()) ImGui::TextColored(ImVec4(0.9f, 0.3f, 0.3f, 1), "%s", sync.view().error().c_str());

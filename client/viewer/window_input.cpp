@@ -52,6 +52,8 @@ void on_key(GLFWwindow* w, int key, int, int action, int mods) {
     case GLFW_KEY_DOWN: --in.view_step_y; break;
     case GLFW_KEY_P: in.toggle_present = !in.toggle_present; break;
     case GLFW_KEY_F: in.toggle_follow = !in.toggle_follow; break;
+    case GLFW_KEY_M: in.toggle_mute = !in.toggle_mute; break;
+    case GLFW_KEY_C: in.toggle_camera = !in.toggle_camera; break;
     default: break;
   }
 }

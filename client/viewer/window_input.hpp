@@ -38,6 +38,8 @@ struct WindowInput {
   int view_step_y = 0;       // Up +1, Down -1
   bool toggle_present = false;  // P
   bool toggle_follow = false;   // F
+  bool toggle_mute = false;     // M, in a call
+  bool toggle_camera = false;   // C, in a call
   long events = 0;           // every input or window event so far: a change means redraw
 
   // Installs the callbacks; call before ImGui's GLFW backend, which chains to them.
@@ -45,7 +47,7 @@ struct WindowInput {
   // Key presses taken since the last call, then forgotten.
   void clear_steps() {
     style_step = view_step_x = view_step_y = 0;
-    toggle_present = toggle_follow = false;
+    toggle_present = toggle_follow = toggle_mute = toggle_camera = false;
   }
 };
 

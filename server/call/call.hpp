@@ -48,6 +48,9 @@ class Call {
   void crop(uint64_t connection, protocol::FaceCrop crop);
   void voice(uint64_t connection, protocol::VoiceFrame frame);
 
+  // A few times a second: speakers who fell silent stop speaking.
+  void tick() { update_speakers(Clock::now()); }
+
   // From the analyst, on the I/O thread.
   void analysed(const PhotoAnalysed& result);
   void analysed(const CropAnalysed& result);

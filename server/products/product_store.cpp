@@ -6,9 +6,7 @@
 #include <fstream>
 #include <iterator>
 
-#include <unistd.h>
 
-#include <OpenImageIO/imageio.h>
 
 #include "common/content_hash.hpp"
 #include "common/error.hpp"
@@ -23,34 +21,6 @@ using protocol::Bytes;
 namespace {
 
 constexpr int kJpegQuality = 90;
-
-// Encodes `channels` of an RGBA image (3: colour, 1: alpha alone) as `format`. Through a
-// temporary file: OpenImageIO's JPEG writer here cannot write to memory.
-Bytes encode_image(const Image& image, const char* format, int first_channel, int channels, int quality = 0) {
-  static int counter = 0;
-  const fs::path file = fs::temp_directory_path() / ("inkwire-encode-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + "." + format);
-  struct Remove {
-    fs::path path;
-    ~Remove() {
-      std::error_code ec;
-      fs::remove(path, ec);
-    }
-  } remove{file};
-  auto output = OIIO::ImageOutput::create(file.string());
-  if (!output) throw Error(std::string("cannot write ") + format + ": " + OIIO::geterror());
-  OIIO::ImageSpec spec(image.width, image.height, channels, OIIO::TypeDesc::UINT8);
-  if (quality > 0) {
-    std::string compression = "jpeg:";  // appended, not "jpeg:" + ...: GCC 12 warns falsely on that
-    compression += std::to_string(quality);
-    spec.attribute("Compression", compression);
-  }
-  if (!output->open(file.string(), spec)) throw Error("cannot write " + file.string() + ": " + output->geterror());
-  const OIIO::stride_t xstride = 4, ystride = OIIO::stride_t(image.width) * 4;
-  if (!output->write_image(OIIO::TypeDesc::UINT8, image.pixels.data() + first_channel, xstride, ystride) || !output->close())
-    throw Error("cannot write " + file.string() + ": " + output->geterror());
-  std::ifstream in(file, std::ios::binary);
-  return Bytes(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
 
 std::string hash_of_file(const fs::path& file) { return to_hex(content_hash_of_file(file)); }
 
@@ -100,12 +70,11 @@ protocol::Snapshot store_product(AssetStore& store, const Product& product, cons
     std::snprintf(name, sizeof name, "sample-%03zu.jpg", i);
     // As a shop shows a photo: on white, which is also what compresses best; clients bleed the
     // object's colour past the outline themselves (matte_sample()).
-    state.assets.push_back(store.add_bytes(encode_image(product.matted ? over_colour(image, {255, 255, 255}, false) : image, "jpg", 0, 3,
-                                                        kJpegQuality),
+    state.assets.push_back(store.add_bytes(encode_image(product.matted ? over_colour(image, {255, 255, 255}, false) : image, "jpg", kJpegQuality),
                                            AssetKind::Samples, name));
     if (product.matted) {
       std::snprintf(name, sizeof name, "matte-%03zu.png", i);
-      mattes.push_back(store.add_bytes(encode_image(image, "png", 3, 1), AssetKind::Matte, name));
+      mattes.push_back(store.add_bytes(encode_image(image, "png", 0, 3, 1), AssetKind::Matte, name));
     }
   }
   state.assets.insert(state.assets.end(), mattes.begin(), mattes.end());

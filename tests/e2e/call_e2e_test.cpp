@@ -123,7 +123,7 @@ TEST(CallE2ETest, MembersAreSeenAndHeardAsThemselvesAndBadInputIsDroppedAndCount
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   const auto heard = listener.take_voice();
   int from_ada = 0, from_grace = 0;
-  for (const auto& v : heard) from_ada += v.member == ada_number, from_grace += v.member == grace_number;
+  for (const auto& [v, arrived] : heard) from_ada += v.member == ada_number, from_grace += v.member == grace_number;
   EXPECT_GE(from_ada, sent_voice - 2);  // the first packets come before the server heard anyone speak
   EXPECT_GE(from_grace, sent_voice - 2);
   EXPECT_EQ(size_t(from_ada + from_grace), heard.size()) << "a packet under another member's number";

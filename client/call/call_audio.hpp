@@ -1,0 +1,49 @@
+#pragma once
+// What a call member hears (SPEC F9): every member's Opus packets decoded and mixed on this
+// member's own clock, each member's clock mapped to it by the first packet's arrival plus a
+// jitter delay, so packets that come early or bunched play at their time, and a packet later
+// than the delay is dropped (counted), never played late. The same mapping tells when a face
+// code stamped on a member's clock is due, so mouths move with the sound. Single-threaded.
+#include <chrono>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "client/call/voice_codec.hpp"
+#include "protocol/messages.hpp"
+
+namespace inkwire {
+
+class CallAudio {
+ public:
+  using Clock = std::chrono::steady_clock;
+  explicit CallAudio(Clock::time_point start, int jitter_ms = 80) : start_(start), jitter_ms_(jitter_ms) {}
+
+  void add(const protocol::VoiceFrame& frame, Clock::time_point arrived);
+  // The mixed sound from where the last call ended up to `until` (this member's clock).
+  std::vector<float> take(Clock::time_point until);
+  // When `member`'s moment `time_ms` plays here; nothing before its first packet.
+  std::optional<Clock::time_point> local_time(uint16_t member, uint32_t time_ms) const;
+
+  uint64_t late() const { return late_; }        // packets dropped for coming after their time
+  uint64_t played() const { return played_; }    // packets mixed in
+
+ private:
+  struct Member {
+    VoiceDecoder decoder;
+    double offset_ms = 0;            // local ms (since start_) - member ms, from the first packet
+    std::optional<uint32_t> next_ms; // where the member's next packet should start, for concealing gaps
+  };
+  int64_t sample_at(const Member& m, uint32_t time_ms) const;
+
+  Clock::time_point start_;
+  int jitter_ms_;
+  std::map<uint16_t, std::unique_ptr<Member>> members_;
+  int64_t mixed_until_ = 0;    // samples since start_ handed out by take()
+  std::vector<float> ahead_;   // mixed samples from mixed_until_ on
+  uint64_t late_ = 0, played_ = 0;
+};
+
+}  // namespace inkwire

@@ -1,0 +1,50 @@
+#pragma once
+// A call as its members see it (SPEC F11): a grid of tiles, one per member with a neutral
+// photo (and the session's own speaker, when a server-side face source feeds it), each face
+// drawn from the codes alone (ConferenceView: the photo deformed to the expression, painted in
+// a painterly session), the active speakers framed in colour. Names and states are laid over
+// the tiles by whoever shows the grid (tiles() says where), as text is theirs to draw.
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+#include "client/viewer/conference_view.hpp"
+#include "protocol/messages.hpp"
+
+namespace inkwire {
+
+class CallGrid {
+ public:
+  struct Tile {
+    uint16_t member = 0;  // 0: the session's own speaker
+    std::string name;
+    bool speaking = false, camera = false, microphone = false, face_found = true, you = false, has_face = false;
+    glm::ivec4 rect{0};  // x, y from the top-left, width, height, in viewport pixels
+  };
+
+  // The roster and the cached photo and landmarks files of its members (by member number);
+  // members whose files are not there yet get a tile without a face.
+  void update(const protocol::Roster& roster, const std::map<uint16_t, std::vector<std::filesystem::path>>& files);
+  void set_style(const std::string& renderer, const std::vector<std::string>& settings);
+  void set_face(const protocol::MemberFace& face);
+  // Into the bound framebuffer; `speaker`: the session's own speaker as a tile of its own.
+  void draw(glm::ivec2 viewport, double time_seconds, ConferenceView* speaker);
+  const std::vector<Tile>& tiles() const { return tiles_; }
+  // The expression a member's tile shows.
+  std::optional<ExpressionState> expression(uint16_t member) const;
+  bool empty() const { return roster_.members.empty(); }
+
+ private:
+  protocol::Roster roster_;
+  std::map<uint16_t, std::unique_ptr<ConferenceView>> views_;
+  std::map<uint16_t, std::vector<std::filesystem::path>> files_;
+  std::string renderer_ = "default";
+  std::vector<std::string> settings_;
+  std::vector<Tile> tiles_;
+};
+
+}  // namespace inkwire

@@ -1,0 +1,70 @@
+#pragma once
+// What a call member sends of itself (SPEC F7-F9), from its own camera and microphone: the
+// neutral photo once (given, or the camera's first frame), face crops around where the server
+// last found the face (about 160 px, JPEG, at most 15 a second; the whole frame scaled to 320 px
+// until it is found), and Opus voice, both stamped on one clock. Camera and microphone are read
+// on threads of their own, recorded sources (video, image folder, WAV) in real time as a device
+// would deliver them; at their end the member stops publishing them. Muted sends no voice,
+// camera off no crops. Camera pictures stay in memory.
+#include <atomic>
+#include <chrono>
+#include <string>
+#include <thread>
+
+#include "client/net/session_client.hpp"
+#include "common/image.hpp"
+#include "common/video_source.hpp"
+
+namespace inkwire {
+
+struct PublisherOptions {
+  std::string camera;      // VideoSource spec (camera:N, a video, a folder of images); empty: none
+  std::string microphone;  // "default" (the system's input through PortAudio) or a WAV file; empty: none
+  std::string photo;       // the neutral photo; empty: the camera's first frame
+  int voice_bitrate = 8000;
+  int voice_frame_ms = 40;
+  double max_fps = 15;
+};
+
+class Publisher {
+ public:
+  // Opens the sources (throws inkwire::Error with the reason: no such camera, no microphone, a
+  // file that is no video or WAV) and sends what this member publishes and its neutral photo.
+  Publisher(SessionClient& client, PublisherOptions options);
+  ~Publisher();  // stops both threads
+  Publisher(const Publisher&) = delete;
+  Publisher& operator=(const Publisher&) = delete;
+
+  void set_muted(bool muted);
+  void set_camera_off(bool off);
+  bool muted() const { return muted_; }
+  bool camera_off() const { return camera_off_; }
+  bool has_camera() const { return !options_.camera.empty(); }
+  bool has_microphone() const { return !options_.microphone.empty(); }
+  uint64_t crops_sent() const { return crops_; }
+  uint64_t voice_sent() const { return voices_; }
+  uint64_t bytes_sent() const { return bytes_; }
+  // The microphone's level over the latest packet, dB below full scale (a level meter).
+  float level_db() const { return level_db_; }
+  // Milliseconds on the publisher's clock (what crops and voice are stamped with).
+  uint32_t now_ms() const;
+
+ private:
+  struct Microphone;
+  void announce();
+  void run_camera(Image first);
+  void run_microphone();
+  void send_crop(const Image& frame);
+
+  SessionClient& client_;
+  PublisherOptions options_;
+  std::chrono::steady_clock::time_point start_;
+  std::atomic<bool> stopping_{false}, muted_{false}, camera_off_{false}, camera_live_{false}, microphone_live_{false};
+  std::atomic<uint64_t> crops_{0}, voices_{0}, bytes_{0};
+  std::atomic<float> level_db_{-100};
+  std::unique_ptr<VideoSource> camera_source_;
+  std::unique_ptr<Microphone> microphone_source_;
+  std::thread camera_, microphone_;
+};
+
+}  // namespace inkwire
