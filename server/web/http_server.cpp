@@ -242,6 +242,17 @@ asio::awaitable<void> HttpServer::serve(ByteStream accepted) {
                             element_page("inkwire-conference", session->name(), request.header("host"), "Put this conference on your page", server_.tls() != nullptr)));
     co_return;
   }
+  if (path.rfind("/call/", 0) == 0) {
+    // The join link of a call: any conference session.
+    const auto session = server_.find_session(path.substr(6));
+    if (!session || !session->call()) {
+      co_await reply(response(404, "Not Found", "text/plain", "no call " + path.substr(6) + "\n"));
+      co_return;
+    }
+    co_await reply(response(200, "OK", "text/html; charset=utf-8",
+                            element_page("inkwire-call", session->name(), request.header("host"), "Put this call on your page", server_.tls() != nullptr)));
+    co_return;
+  }
   if (path == "/face/expression_templates.json") {
     co_await reply(response(200, "OK", content_type(path), std::string(face_template_files().at("expression_templates.json"))));
     co_return;
@@ -254,6 +265,7 @@ asio::awaitable<void> HttpServer::serve(ByteStream accepted) {
       const bool conference = session->state().kind == protocol::SessionKind::Conference;
       const std::string link = product ? "/turntable/" : conference ? "/conference/" : "";
       body += "<li>" + (!link.empty() ? "<a href=\"" + link + html_escape(name) + "\">" + html_escape(name) + "</a>" : html_escape(name)) +
+              (conference ? " (<a href=\"/call/" + html_escape(name) + "\">join the call</a>)" : "") +
               " (" + protocol::to_string(session->state().kind) + ", " + std::to_string(session->members()) + " members)</li>";
     }
     co_await reply(response(200, "OK", "text/html; charset=utf-8", body + "</ul>\n"));

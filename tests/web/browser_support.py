@@ -17,11 +17,14 @@ for _tool in ("/usr/bin/chromium", "/usr/bin/chromedriver"):
         skip(f"{_tool} is missing (packages chromium and chromium-driver)")
 
 
-def chromium(out, width, height):
+def chromium(out, width, height, extra=()):
+    """Headless Chromium; `extra` flags add to this machine's (e.g. fake camera and microphone)."""
     options = webdriver.ChromeOptions()
     for a in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run", "--disable-background-networking",
               "--disable-component-update", "--disable-sync", "--force-device-scale-factor=1", f"--window-size={width},{height}",
               f"--user-data-dir={os.path.join(out, 'profile')}", "--use-angle=swiftshader", "--enable-unsafe-swiftshader"):
+        options.add_argument(a)
+    for a in extra:
         options.add_argument(a)
     options.binary_location = "/usr/bin/chromium"
     return webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
