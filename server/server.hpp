@@ -33,6 +33,7 @@ struct ServerCounters {
   uint64_t joins_refused = 0;        // wrong token
   uint64_t changes_refused = 0;      // changes a member had no authority to make (authority.hpp)
   std::map<std::string, uint64_t> call_drops;  // call messages dropped, by reason (call/call.hpp)
+  Call::Analysis call_analysis;                // face crops analysed, and the time it took
 };
 
 class Server {

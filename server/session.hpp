@@ -53,8 +53,8 @@ class Session {
 
   // A conference session's call (its members' own faces and voices); null in other sessions.
   Call* call() { return call_.get(); }
-  void start_call(CallOptions options, CallAnalyst& analyst, Call::Drops& drops) {
-    call_ = std::make_unique<Call>(name(), options, analyst, drops);
+  void start_call(CallOptions options, CallAnalyst& analyst, Call::Drops& drops, Call::Analysis& analysis) {
+    call_ = std::make_unique<Call>(name(), options, analyst, drops, analysis);
   }
 
   // Set by apply(); cleared by whoever persists the state.

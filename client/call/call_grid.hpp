@@ -4,6 +4,7 @@
 // drawn from the codes alone (ConferenceView: the photo deformed to the expression, painted in
 // a painterly session), the active speakers framed in colour. Names and states are laid over
 // the tiles by whoever shows the grid (tiles() says where), as text is theirs to draw.
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -36,7 +37,12 @@ class CallGrid {
   const std::vector<Tile>& tiles() const { return tiles_; }
   // The expression a member's tile shows.
   std::optional<ExpressionState> expression(uint16_t member) const;
-  bool empty() const { return roster_.members.empty(); }
+  // Whether there is a call to show: some member publishes or has a photo. A conference whose
+  // members only watch the session's own speaker shows that speaker alone, as before calls.
+  bool empty() const {
+    return std::none_of(roster_.members.begin(), roster_.members.end(),
+                        [](const protocol::CallMember& m) { return m.camera || m.microphone || !m.assets.empty(); });
+  }
 
  private:
   protocol::Roster roster_;

@@ -51,8 +51,8 @@ struct Call::Member {
   uint32_t latest_voice_time = 0;
 };
 
-Call::Call(std::string session, CallOptions options, CallAnalyst& analyst, Drops& drops)
-    : session_(std::move(session)), options_(options), analyst_(analyst), drops_(drops) {}
+Call::Call(std::string session, CallOptions options, CallAnalyst& analyst, Drops& drops, Analysis& analysis)
+    : session_(std::move(session)), options_(options), analyst_(analyst), drops_(drops), analysis_(analysis) {}
 
 Call::~Call() {
   for (const auto& [id, m] : members_) analyst_.forget({session_, m->entry.member});
@@ -167,7 +167,7 @@ void Call::voice(uint64_t connection, protocol::VoiceFrame frame) {
   if (face_gone && (!(reading->mouth == m->voice_mouth) || now - m->voice_mouth_sent > kVoiceMouthKeepalive)) {
     m->voice_mouth = reading->mouth;
     m->voice_mouth_sent = now;
-    send_to_others(*m, protocol::MemberFace{.member = m->entry.member, .time_ms = frame.time_ms,
+    send_to_all(protocol::MemberFace{.member = m->entry.member, .time_ms = frame.time_ms,
                                             .expression = {.code = uint8_t(reading->mouth.expression), .intensity = reading->mouth.intensity},
                                             .source = protocol::FaceSource::Voice});
   }
@@ -218,6 +218,8 @@ void Call::analysed(const CropAnalysed& result) {
     dropped(*m, "crop-unreadable");
     return;
   }
+  ++analysis_.crops;
+  analysis_.seconds += result.analysis_ms / 1000.0;
   if (const auto c = m->connection.lock()) c->send(result.region);
   if (result.region.found) {
     m->last_face = now;
@@ -230,7 +232,8 @@ void Call::analysed(const CropAnalysed& result) {
     m->entry.face_found = !m->faceless;
     send_roster();
   }
-  if (result.face) send_to_others(*m, *result.face);
+  // Everyone, the member too: its own tile shows what the others see of it.
+  if (result.face) send_to_all(*result.face);
 }
 
 const Bytes* Call::asset(const protocol::Hash& hash, protocol::AssetAnnounce* announce) const {
@@ -253,6 +256,12 @@ void Call::send_roster() {
       roster.you = m->entry.member;
       c->send(roster);
     }
+}
+
+void Call::send_to_all(const protocol::Message& message) {
+  const auto frame = std::make_shared<const Bytes>(protocol::encode(message));
+  for (const auto& [id, m] : members_)
+    if (const auto c = m->connection.lock()) c->send_frame(frame, protocol::type_of(message));
 }
 
 void Call::send_to_others(const Member& from, const protocol::Message& message) {

@@ -35,8 +35,13 @@ class Call {
   using Clock = std::chrono::steady_clock;
   // Drops by reason, for /metrics (shared by every call of the server).
   using Drops = std::map<std::string, uint64_t>;
+  // Crops analysed and the analyst's time on them, for /metrics (server CPU per publisher).
+  struct Analysis {
+    uint64_t crops = 0;
+    double seconds = 0;
+  };
 
-  Call(std::string session, CallOptions options, CallAnalyst& analyst, Drops& drops);
+  Call(std::string session, CallOptions options, CallAnalyst& analyst, Drops& drops, Analysis& analysis);
   ~Call();
 
   void join(const std::shared_ptr<Connection>& connection, const std::string& name);
@@ -68,12 +73,14 @@ class Call {
   bool dropped(Member& m, const std::string& reason);
   void send_roster();
   void send_to_others(const Member& from, const protocol::Message& message);
+  void send_to_all(const protocol::Message& message);
   void update_speakers(Clock::time_point now);
 
   std::string session_;
   CallOptions options_;
   CallAnalyst& analyst_;
   Drops& drops_;
+  Analysis& analysis_;
   std::map<uint64_t, std::unique_ptr<Member>> members_;  // by connection id
   uint16_t next_number_ = 1;
 };

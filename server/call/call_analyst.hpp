@@ -37,6 +37,7 @@ struct PhotoAnalysed {
 struct CropAnalysed {
   MemberKey who;
   uint32_t time_ms = 0;
+  double analysis_ms = 0;             // decoding and finding the face took this long (server CPU per publisher)
   std::string error;                  // the crop could not be read (not a JPEG, too large)
   protocol::FaceRegion region;        // where to crop next, for the publisher
   std::optional<protocol::MemberFace> face;  // what to send the others, when it changed (or once a second)

@@ -112,7 +112,9 @@ TEST(CallE2ETest, MembersAreSeenAndHeardAsThemselvesAndBadInputIsDroppedAndCount
   ASSERT_TRUE(eventually([&] { return listener.member_faces().count(ada_number); }));
   const protocol::MemberFace ada_face = listener.member_faces().at(ada_number);
   EXPECT_EQ(ada_face.source, protocol::FaceSource::Camera);
-  if (yale) EXPECT_EQ(expression_from_code(ada_face.expression.code), Expression::Smile) << "neutral then smile arrives as " << int(ada_face.expression.code);
+  if (yale) {
+    EXPECT_EQ(expression_from_code(ada_face.expression.code), Expression::Smile) << "neutral then smile arrives as " << int(ada_face.expression.code);
+  }
   // Grace has no camera: her voice moves her mouth.
   ASSERT_TRUE(listener.member_faces().count(grace_number));
   EXPECT_EQ(listener.member_faces().at(grace_number).source, protocol::FaceSource::Voice);

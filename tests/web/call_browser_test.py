@@ -1,0 +1,193 @@
+#!/usr/bin/env python3
+"""A call in real headless browsers (SPEC F7-F11, W4): two Chromium members with fake cameras
+and microphones (Debian's chromium, chromium-driver, python3-selenium) and one native
+inkwire-client member, all on a real inkwire-server on 127.0.0.1.
+
+Each member's camera is a clip made from real face photos that turn from neutral to a smile:
+the Yale faces' development subjects from ../shared/data/yalefaces when they are there, else
+two of libdlib's example photos (whose expression does not change: the smile checks are then
+skipped with a message). The browsers' microphones speak sentences made by espeak-ng.
+Checks: everyone joins and sees everyone; a browser member's smile arrives as a smile at the
+other browser and at the native member (its frame log); what one browser hears of the other
+follows the other's speech (their loudness envelopes correlate after alignment); mute stops the
+voice packets, camera off stops the crops, leave removes the tile.
+  call_browser_test.py BIN_DIR OUT_DIR
+Skips with a message without chromium, chromedriver, selenium, espeak-ng or the dlib photos."""
+import array
+import json
+import os
+import shutil
+import subprocess
+import sys
+import time
+import wave
+
+sys.path.insert(0, os.path.dirname(__file__))
+from browser_support import Checks, Server, chromium, skip  # skips without the browser
+
+BIN, OUT = sys.argv[1], sys.argv[2]
+YALE = os.path.join(os.path.dirname(__file__), "..", "..", "..", "shared", "data", "yalefaces")
+DLIB = "/usr/share/doc/libdlib19.1/examples/faces"
+if not shutil.which("espeak-ng"):
+    skip("espeak-ng is missing (scripts/setup.sh installs it)")
+if not os.path.exists(os.path.join(DLIB, "2008_001322.jpg")):
+    skip(f"libdlib-dev's example photos are missing ({DLIB})")
+shutil.rmtree(OUT, ignore_errors=True)
+os.makedirs(OUT)
+checks = Checks()
+yale = os.path.exists(os.path.join(YALE, "subject02_normal.png"))
+if not yale:
+    print("../shared/data/yalefaces is absent: libdlib's photos stand in and the smiles are not checked")
+
+
+def face_clip(name, neutral, smile, seconds=(3, 9)):
+    """A folder of frames and a y4m of them at 15 fps: `neutral` for seconds[0], then `smile`."""
+    folder = os.path.join(OUT, name)
+    os.makedirs(folder)
+    frame = 0
+    for photo, count in ((neutral, seconds[0] * 15), (smile, seconds[1] * 15)):
+        for _ in range(count):
+            os.symlink(photo, os.path.join(folder, f"{frame:04d}{os.path.splitext(photo)[1]}"))
+            frame += 1
+    y4m = os.path.join(OUT, f"{name}.y4m")
+    subprocess.run(["ffmpeg", "-v", "error", "-y", "-framerate", "15", "-i", os.path.join(folder, "%04d" + os.path.splitext(neutral)[1]),
+                    "-vf", "scale=320:240:force_original_aspect_ratio=decrease,pad=320:240:(ow-iw)/2:(oh-ih)/2,format=yuv420p", y4m], check=True)
+    return folder, y4m
+
+
+def speech(name, text, voice):
+    path = os.path.join(OUT, f"{name}.wav")
+    subprocess.run(["espeak-ng", "-v", voice, "-s", "150", "-w", path, text], check=True)
+    return path
+
+
+def samples_of(path):
+    with wave.open(path) as w:
+        data = array.array("h", w.readframes(w.getnframes()))
+        return [x / 32768 for x in data[::w.getnchannels()]], w.getframerate()
+
+
+def envelope(samples, rate, ms=20):
+    step = int(rate * ms / 1000)
+    return [sum(abs(x) for x in samples[i:i + step]) / step for i in range(0, len(samples) - step, step)]
+
+
+def best_correlation(a, b, max_lag=150):
+    """The largest Pearson correlation of envelope `a` against `b` shifted by up to max_lag steps."""
+    best = -1.0
+    for lag in range(-max_lag, max_lag + 1):
+        pairs = [(a[i], b[i + lag]) for i in range(len(a)) if 0 <= i + lag < len(b)]
+        if len(pairs) < 50:
+            continue
+        n = len(pairs)
+        ma, mb = sum(p[0] for p in pairs) / n, sum(p[1] for p in pairs) / n
+        cov = sum((p[0] - ma) * (p[1] - mb) for p in pairs)
+        va, vb = sum((p[0] - ma) ** 2 for p in pairs), sum((p[1] - mb) ** 2 for p in pairs)
+        if va > 0 and vb > 0:
+            best = max(best, cov / (va * vb) ** 0.5)
+    return best
+
+
+if yale:
+    faces = {n: (os.path.abspath(os.path.join(YALE, f"subject{s}_normal.png")), os.path.abspath(os.path.join(YALE, f"subject{s}_happy.png")))
+             for n, s in (("ada", "02"), ("bea", "05"), ("nat", "07"))}
+else:
+    faces = {n: (os.path.join(DLIB, f), os.path.join(DLIB, f)) for n, f in (("ada", "2008_001322.jpg"), ("bea", "2008_002079.jpg"), ("nat", "2009_004587.jpg"))}
+clips = {n: face_clip(n, *faces[n]) for n in faces}
+words = {"ada": speech("ada", "Hello everybody. Can you all hear me? The weather is lovely today.", "en"),
+         "bea": speech("bea", "Yes I can hear you. Shall we meet at the station at noon tomorrow?", "en+f3")}
+
+server = Server(BIN, OUT, os.path.join(OUT, "data"), {"http": "127.0.0.1:0", "sessions": [{"name": "call", "kind": "conference"}]})
+element = "document.querySelector('inkwire-call')"
+drivers = {}
+native = None
+try:
+    for name in ("ada", "bea"):
+        driver = chromium(os.path.join(OUT, f"profile-{name}"), 640, 520,
+                          ["--use-fake-ui-for-media-stream", "--use-fake-device-for-media-stream", f"--use-file-for-fake-video-capture={clips[name][1]}",
+                           f"--use-file-for-fake-audio-capture={words[name]}", "--autoplay-policy=no-user-gesture-required"])
+        driver.get(f"http://127.0.0.1:{server.http}/call/call")
+        drivers[name] = driver
+    ada, bea = drivers["ada"], drivers["bea"]
+    # The native member publishes its camera only; it records what it sees and hears.
+    native = subprocess.Popen([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{server.tcp}", "--session", "call", "--name", "Nat",
+                               "--camera", clips["nat"][0], "--headless", "--frames", "420", "--fps", "15", "--size", "480x240",
+                               "--out", os.path.join(OUT, "nat.mp4"), "--audio-out", os.path.join(OUT, "nat-heard.wav"),
+                               "--frame-log", os.path.join(OUT, "nat.jsonl"), "--cache", os.path.join(OUT, "cache-nat")],
+                              stderr=open(os.path.join(OUT, "nat.log"), "w"))
+    for name, driver in drivers.items():
+        end = time.time() + 10
+        while time.time() < end and not driver.execute_script(f"return {element}.preview.videoWidth > 0"):
+            time.sleep(0.1)
+        level = driver.execute_script(f"return {element}.level.value")
+        checks.check(driver.execute_script(f"return {element}.preview.videoWidth") == 320, f"{name}: the camera's preview shows before joining")
+        driver.execute_script(f"const e = {element}; e.nameInput.value = '{name.capitalize()}'; e.join();")
+    end = time.time() + 20
+    names = lambda d: sorted(m["name"] for m in d.execute_script(f"return {element}.members"))
+    while time.time() < end and not (names(ada) == ["Ada", "Bea", "Nat"] and names(bea) == ["Ada", "Bea", "Nat"]):
+        time.sleep(0.2)
+    checks.check(all(d.execute_script(f"return {element}.hasAttribute('joined')") for d in drivers.values()), "both browsers are in the call ('joined')")
+    checks.check(names(ada) == ["Ada", "Bea", "Nat"] and names(bea) == ["Ada", "Bea", "Nat"], f"everyone sees everyone: {names(ada)}, {names(bea)}")
+    checks.check(level > -60, f"the microphone's level meter moved before joining ({level:.1f} dB)")
+
+    # Smiles arrive as smiles (the clips smile from their fourth second on).
+    seen = {}
+    end = time.time() + 15
+    while time.time() < end:
+        for viewer, driver in drivers.items():
+            for m in driver.execute_script(f"return {element}.members"):
+                seen.setdefault((viewer, m["name"]), set()).add(m["expression"])
+        time.sleep(0.2)
+    print("expressions seen:", {f"{v} sees {n}": sorted(e) for (v, n), e in seen.items()})
+    if yale:
+        checks.check("smile" in seen.get(("ada", "Bea"), set()) or "laugh" in seen.get(("ada", "Bea"), set()), "Bea's neutral then smile arrives at Ada as a smile")
+        checks.check("smile" in seen.get(("bea", "Ada"), set()) or "laugh" in seen.get(("bea", "Ada"), set()), "Ada's smile arrives at Bea")
+        checks.check("smile" in seen.get(("ada", "Nat"), set()) or "laugh" in seen.get(("ada", "Nat"), set()), "the native member's smile arrives in the browser")
+
+    # What Ada heard of Bea follows Bea's speech.
+    heard = ada.execute_script(f"const r = {element}.player.recording(); return Array.from(r.samples.filter((_, i) => i % 3 == 0))")
+    sent, rate = samples_of(words["bea"])
+    correlation = best_correlation(envelope(heard, 16000), envelope(sent, rate))
+    checks.check(len(heard) > 16000 and correlation > 0.5,
+                 f"Ada hears Bea: {len(heard) / 16000:.1f} s of sound whose loudness follows Bea's speech (correlation {correlation:.2f} > 0.5)")
+
+    # Mute stops voice packets; camera off stops crops; leave removes the tile.
+    bea.execute_script(f"{element}.setMuted(true); {element}.setCameraOff(true);")
+    time.sleep(0.5)
+    voice0, crops0 = bea.execute_script(f"return [{element}.voiceSent, {element}.camera.sent]")
+    time.sleep(2)
+    voice1, crops1 = bea.execute_script(f"return [{element}.voiceSent, {element}.camera.sent]")
+    checks.check(voice1 == voice0, f"muted, Bea sends no voice ({voice1 - voice0} packets in 2 s)")
+    checks.check(crops1 == crops0, f"camera off, Bea sends no crops ({crops1 - crops0} in 2 s)")
+    bea_entry = [m for m in ada.execute_script(f"return {element}.roster.members") if m["name"] == "Bea"]
+    checks.check(bool(bea_entry) and not bea_entry[0]["microphone"] and not bea_entry[0]["camera"], "Ada sees Bea muted with her camera off")
+    bea.execute_script(f"{element}.leave()")
+    end = time.time() + 5
+    while time.time() < end and "Bea" in names(ada):
+        time.sleep(0.1)
+    checks.check(names(ada) == ["Ada", "Nat"], f"Bea left: her tile is gone ({names(ada)})")
+    ada.save_screenshot(os.path.join(OUT, "ada-after-bea-left.png"))
+    import urllib.request
+    metrics = urllib.request.urlopen(f"http://127.0.0.1:{server.http}/metrics").read().decode()
+    figures = {line.split()[0]: float(line.split()[1]) for line in metrics.splitlines() if line.startswith("inkwire_call_")}
+    crops = figures.get("inkwire_call_crops_analysed_total", 0)
+    if crops:
+        print(f"the server analysed {crops:.0f} crops at {1000 * figures['inkwire_call_analysis_seconds_total'] / crops:.1f} ms each")
+finally:
+    for d in drivers.values():
+        d.quit()
+    if native:
+        native.wait(timeout=60)
+    server.stop()
+
+log = [json.loads(line) for line in open(os.path.join(OUT, "nat.jsonl"))]
+nat_saw = {m["name"]: set() for line in log for m in line.get("members", [])}
+for line in log:
+    for m in line.get("members", []):
+        nat_saw[m["name"]].add(m["expression"])
+print("the native member saw:", {n: sorted(e) for n, e in nat_saw.items()})
+if yale:
+    checks.check(bool({"smile", "laugh"} & nat_saw.get("Ada", set())), "the native member's frame log shows Ada's smile")
+checks.check(native.returncode == 0 and os.path.getsize(os.path.join(OUT, "nat-heard.wav")) > 100000,
+             "the native member recorded the call with its sound")
+checks.finish()
