@@ -129,7 +129,7 @@ void Server::create_sessions() {
     });
   });
   for (auto& [name, session] : sessions_)
-    if (session->state().kind == protocol::SessionKind::Conference) session->start_call(config_.call, *call_analyst_, counters_.call_drops, counters_.call_analysis);
+    if (session->state().kind == protocol::SessionKind::Conference) session->start_call(config_.call, *call_analyst_, counters_.call_drops, counters_.call);
 }
 
 // A product is checked (every file against its hash) and its tween data readied once.
@@ -156,7 +156,7 @@ std::shared_ptr<Session> Server::add_session(StoredSession stored) {
   }
   auto session = std::make_shared<Session>(std::move(stored));
   ready_product(*session);
-  if (session->state().kind == protocol::SessionKind::Conference) session->start_call(config_.call, *call_analyst_, counters_.call_drops, counters_.call_analysis);
+  if (session->state().kind == protocol::SessionKind::Conference) session->start_call(config_.call, *call_analyst_, counters_.call_drops, counters_.call);
   sessions_[name] = session;
   log_info("session-added", {{"session", name}, {"kind", protocol::to_string(session->state().kind)}, {"assets", session->state().assets.size()}});
   return session;
@@ -321,7 +321,6 @@ void Server::stop() {
   persist_timer_.cancel();
   relay_->stop();
   face_feeds_.clear();  // joins their threads; codes they posted are applied or dropped with the context
-  call_analyst_.reset();
   for (auto& [name, session] : sessions_) persist(*session);
   // Copy: closing connections forget themselves.
   auto open = connections_;

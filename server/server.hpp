@@ -33,7 +33,7 @@ struct ServerCounters {
   uint64_t joins_refused = 0;        // wrong token
   uint64_t changes_refused = 0;      // changes a member had no authority to make (authority.hpp)
   std::map<std::string, uint64_t> call_drops;  // call messages dropped, by reason (call/call.hpp)
-  Call::Analysis call_analysis;                // face crops analysed, and the time it took
+  Call::Counters call;                         // face crops analysed, the time it took, voice relayed
 };
 
 class Server {
@@ -102,6 +102,9 @@ class Server {
   std::optional<AssetStore> store_;  // opened once the ports are bound
   asio::ip::tcp::acceptor acceptor_;
   asio::steady_timer persist_timer_;
+  // The calls' face analysis, on a thread of its own: declared before the sessions, whose calls
+  // tell it of members leaving until the last of them is gone.
+  std::unique_ptr<CallAnalyst> call_analyst_;
   std::map<std::string, std::shared_ptr<Session>> sessions_;
   std::map<const Connection*, std::shared_ptr<Connection>> connections_;
   size_t places_ = 0;
@@ -112,7 +115,6 @@ class Server {
   };
   std::map<std::string, JoinFailures> join_failures_;
   std::vector<std::unique_ptr<FaceFeed>> face_feeds_;
-  std::unique_ptr<CallAnalyst> call_analyst_;  // the calls' face analysis, on a thread of its own
   std::unique_ptr<HttpServer> http_;
   std::unique_ptr<Relay> relay_;
   ServerCounters counters_;

@@ -21,8 +21,11 @@ struct PublisherOptions {
   std::string camera;      // VideoSource spec (camera:N, a video, a folder of images); empty: none
   std::string microphone;  // "default" (the system's input through PortAudio) or a WAV file; empty: none
   std::string photo;       // the neutral photo; empty: the camera's first frame
-  int voice_bitrate = 8000;
-  int voice_frame_ms = 40;
+  // 12 kbit/s: below it speech recognition of what came through falls well behind the
+  // original's; 60 ms packets: the framing costs 2.4 kbit/s instead of 3.6 at 40 ms
+  // (docs/benchmarks.md, calls).
+  int voice_bitrate = 12000;
+  int voice_frame_ms = 60;
   double max_fps = 15;
 };
 
@@ -46,8 +49,9 @@ class Publisher {
   uint64_t bytes_sent() const { return bytes_; }
   // The microphone's level over the latest packet, dB below full scale (a level meter).
   float level_db() const { return level_db_; }
-  // Milliseconds on the publisher's clock (what crops and voice are stamped with).
+  // Milliseconds on the publisher's clock (what crops and voice are stamped with), and when it began.
   uint32_t now_ms() const;
+  std::chrono::steady_clock::time_point clock_start() const { return start_; }
 
  private:
   struct Microphone;

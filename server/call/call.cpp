@@ -51,8 +51,8 @@ struct Call::Member {
   uint32_t latest_voice_time = 0;
 };
 
-Call::Call(std::string session, CallOptions options, CallAnalyst& analyst, Drops& drops, Analysis& analysis)
-    : session_(std::move(session)), options_(options), analyst_(analyst), drops_(drops), analysis_(analysis) {}
+Call::Call(std::string session, CallOptions options, CallAnalyst& analyst, Drops& drops, Counters& counters)
+    : session_(std::move(session)), options_(options), analyst_(analyst), drops_(drops), counters_(counters) {}
 
 Call::~Call() {
   for (const auto& [id, m] : members_) analyst_.forget({session_, m->entry.member});
@@ -161,7 +161,7 @@ void Call::voice(uint64_t connection, protocol::VoiceFrame frame) {
   update_speakers(now);
   // The sender's own number on what is relayed: a member speaks only as itself.
   frame.member = m->entry.member;
-  if (m->entry.speaking) send_to_others(*m, frame);
+  if (m->entry.speaking) counters_.voice_relayed += send_to_others(*m, frame);
   // Without a face to read, the voice moves the mouth (SPEC F10).
   const bool face_gone = !m->entry.camera || m->faceless || now - m->last_face > kFaceLost;
   if (face_gone && (!(reading->mouth == m->voice_mouth) || now - m->voice_mouth_sent > kVoiceMouthKeepalive)) {
@@ -218,8 +218,8 @@ void Call::analysed(const CropAnalysed& result) {
     dropped(*m, "crop-unreadable");
     return;
   }
-  ++analysis_.crops;
-  analysis_.seconds += result.analysis_ms / 1000.0;
+  ++counters_.crops;
+  counters_.seconds += result.analysis_ms / 1000.0;
   if (const auto c = m->connection.lock()) c->send(result.region);
   if (result.region.found) {
     m->last_face = now;
@@ -264,11 +264,13 @@ void Call::send_to_all(const protocol::Message& message) {
     if (const auto c = m->connection.lock()) c->send_frame(frame, protocol::type_of(message));
 }
 
-void Call::send_to_others(const Member& from, const protocol::Message& message) {
+size_t Call::send_to_others(const Member& from, const protocol::Message& message) {
   const auto frame = std::make_shared<const Bytes>(protocol::encode(message));
+  size_t sent = 0;
   for (const auto& [id, m] : members_)
     if (m.get() != &from)
-      if (const auto c = m->connection.lock()) c->send_frame(frame, protocol::type_of(message));
+      if (const auto c = m->connection.lock()) c->send_frame(frame, protocol::type_of(message)), ++sent;
+  return sent;
 }
 
 }  // namespace inkwire::server

@@ -35,13 +35,15 @@ class Call {
   using Clock = std::chrono::steady_clock;
   // Drops by reason, for /metrics (shared by every call of the server).
   using Drops = std::map<std::string, uint64_t>;
-  // Crops analysed and the analyst's time on them, for /metrics (server CPU per publisher).
-  struct Analysis {
+  // For /metrics and the benchmark: crops analysed and the analyst's time on them (server CPU
+  // per publisher), voice packets relayed (one per receiver).
+  struct Counters {
     uint64_t crops = 0;
     double seconds = 0;
+    uint64_t voice_relayed = 0;
   };
 
-  Call(std::string session, CallOptions options, CallAnalyst& analyst, Drops& drops, Analysis& analysis);
+  Call(std::string session, CallOptions options, CallAnalyst& analyst, Drops& drops, Counters& counters);
   ~Call();
 
   void join(const std::shared_ptr<Connection>& connection, const std::string& name);
@@ -72,7 +74,7 @@ class Call {
   // (it is then closed with the reason).
   bool dropped(Member& m, const std::string& reason);
   void send_roster();
-  void send_to_others(const Member& from, const protocol::Message& message);
+  size_t send_to_others(const Member& from, const protocol::Message& message);  // how many it went to
   void send_to_all(const protocol::Message& message);
   void update_speakers(Clock::time_point now);
 
@@ -80,7 +82,7 @@ class Call {
   CallOptions options_;
   CallAnalyst& analyst_;
   Drops& drops_;
-  Analysis& analysis_;
+  Counters& counters_;
   std::map<uint64_t, std::unique_ptr<Member>> members_;  // by connection id
   uint16_t next_number_ = 1;
 };

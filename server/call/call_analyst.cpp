@@ -21,7 +21,7 @@ namespace {
 constexpr int kMaxDecodedSide = 1024;  // a crop is ~160 px, a whole frame 320: anything bigger is refused
 constexpr int kDetectSide = 200;       // crops are looked at this large (see analyse_crop)
 constexpr float kRegionMargin = 1.8f;  // the next crop: the face's box grown this much about its centre
-constexpr float kPoseStep = 3;         // degrees a head must turn before it is sent again
+constexpr float kPoseStep = 8;         // degrees a head must turn before it is sent again
 constexpr int kDetectEvery = 2;        // crops: the detector checks the face is still there; between, it is tracked
 
 bool looks_like_jpeg(const protocol::Bytes& b) { return b.size() >= 4 && b[0] == 0xff && b[1] == 0xd8 && b[2] == 0xff; }

@@ -56,8 +56,9 @@ std::string metrics_text(Server& server) {
   m.one("inkwire_changes_refused_total", "counter", "Changes refused: the member had no authority to make them.", c.changes_refused);
   m.metric("inkwire_call_dropped_total", "counter", "Call messages dropped (too frequent, too large, not JPEG, not Opus), by reason.");
   for (const auto& [reason, count] : c.call_drops) m.sample("inkwire_call_dropped_total", count, "reason=\"" + metric_label(reason) + "\"");
-  m.one("inkwire_call_crops_analysed_total", "counter", "Call members' face crops analysed.", c.call_analysis.crops);
-  m.one("inkwire_call_analysis_seconds_total", "counter", "Time the call analyst spent on face crops.", c.call_analysis.seconds);
+  m.one("inkwire_call_crops_analysed_total", "counter", "Call members' face crops analysed.", c.call.crops);
+  m.one("inkwire_call_analysis_seconds_total", "counter", "Time the call analyst spent on face crops.", c.call.seconds);
+  m.one("inkwire_call_voice_relayed_total", "counter", "Voice packets relayed to call members (one per receiver).", c.call.voice_relayed);
   const RelayStatus r = server.relay().status();
   if (r.broker) {
     m.one("inkwire_broker_up", "gauge", "1 while the broker is reachable; 0 while this instance serves its own members only.", int(r.connected));

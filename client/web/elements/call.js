@@ -138,7 +138,8 @@ export class InkwireCall extends SessionElement {
 
   sendVoice(bytes) {
     if (!this.session || !this.hasAttribute('joined') || this.muted) return;
-    this.session.send({ type: 'voice-frame', member: 0, time_ms: Math.max(0, this.now() - 40), opus: bytes });
+    // Stamped with when its first sample was heard: a packet is sent once its frame has ended.
+    this.session.send({ type: 'voice-frame', member: 0, time_ms: Math.max(0, this.now() - this.voice.frameMs), opus: bytes });
     this.voiceSent = (this.voiceSent ?? 0) + 1;
   }
 
