@@ -12,14 +12,17 @@
 # session while a director client changes its style and camera, a turntable session, and a
 # conference whose client rebuilds the speaker's face from expression codes; products turned by
 # customers: turntable.mp4, duck-product.mp4 from a folder of photos, temple-product.mp4 from the
-# real temple photos when ../shared/data is there).
+# real temple photos when ../shared/data is there), OUT_DIR/call/call.mp4 (a call between two
+# members' own faces and voices, recorded with its sound by a listener).
 set -euo pipefail
+say() { echo "demo: $*"; }
 here=$(cd "$(dirname "$0")/.." && pwd)
 out=$(realpath -m "${1:-$here/demo-output}")
 "$here/scripts/setup.sh"
 
 bin="$here/build/bin"
 meshes="$here/build/packaged-data/data/meshes"
+say "rendering every packaged model in every style (contact-sheet.png, styles/)"
 # Packaged models: a textured duck (assimp-testmodels) and a closed cow (libcgal-demo).
 models=("duck:/usr/share/assimp/models/Collada/duck.dae" "cow:$meshes/cow.off")
 mapfile -t styles < <("$bin/inkwire-render" --style list | awk '/^[^ ]/ {print $1}')
@@ -43,6 +46,7 @@ rows=$(( (count + columns - 1) / columns ))
 for ((i = count; i < columns * rows; ++i)); do tiles+=(--pattern constant:color=0.96,0.94,0.9,1 400x320 4); done
 oiiotool "${tiles[@]}" --mosaic:pad=4 "${columns}x${rows}" --ch R,G,B -o "$out/contact-sheet.png"
 
+say "the comic shade-map library (shade-maps.png)"
 # Every shipped comic shade map, on the textured duck.
 mapfile -t shade_maps < <("$bin/inkwire-render" --style list | awk '$1 == "shade_map" {sub(/,$/, "", $3); print $3}' | head -1 | tr '|' '\n')
 maps=()
@@ -54,6 +58,7 @@ for map in "${shade_maps[@]}"; do
 done
 oiiotool "${maps[@]}" --mosaic:pad=2 "4x$(( (${#shade_maps[@]} + 3) / 4 ))" --ch R,G,B -o "$out/shade-maps.png"
 
+say "every shipped painting style (paintings.png) and a turntable video per style"
 # Every shipped painting style, on the textured duck.
 paintings=()
 for file in "$here"/client/render/painterly/styles/*.json; do
@@ -73,11 +78,13 @@ for style in "${styles[@]}"; do
     --frames 96 --out "$out/turntable-$style.mp4"
 done
 
+say "painting a recorded video frame by frame (painted-video.mp4)"
 # Video painting: the duck's default turntable as a recorded video, painted over itself frame by frame.
 "$bin/inkwire-render" --mesh /usr/share/assimp/models/Collada/duck.dae --style default --view 35,15,1.2 --size 480x360 \
   --frames 72 --out "$out/duck-turntable.mp4"
 "$bin/inkwire-render" --video "$out/duck-turntable.mp4" --style painterly --out "$out/painted-video.mp4"
 
+say "tweening between sample images: methods, orbits, a face morph, restored frames (tween/)"
 # Super-realistic tweening: a textured product photographed (rendered) every 15 degrees; every
 # view in between synthesised by warping the two nearest samples along their control points.
 truck=/usr/share/assimp/models/glTF/CesiumMilkTruck/CesiumMilkTruck.gltf
@@ -112,6 +119,7 @@ fi
 "$bin/inkwire-tween" restore --input "$out/turntable-comic.mp4" --keep-every 3 --out "$out/tween/restored-turntable.mp4" \
   --sheet "$out/tween/restored-turntable.png" --json "$out/tween/restored-turntable.json" > /dev/null
 
+say "a speaker's face sent as expression codes and rebuilt (conference/)"
 # Low-bandwidth conferencing: the speaker's frames are analysed (dlib landmarks -> expression
 # code), only the codes cross the wire, and the receiver deforms the neutral photo by them.
 # Packaged photos hold no face video, so the speaker is synthesised from one packaged photo;
@@ -132,6 +140,7 @@ if [[ -d "$yale" ]]; then
     --out "$out/conference/yale-subject11.mp4" --json "$out/conference/yale-subject11.json" > /dev/null
 fi
 
+say "starting a server; a viewer follows a session while a director changes its style (network/)"
 # Over the network: a real server with the embedded default's sessions plus a conference whose
 # speaker is the synthesised clip above, a viewer recording the shared "demo" session, and a
 # director client that changes the session's style and camera once a second. The viewer draws
@@ -144,7 +153,8 @@ cat > "$out/network/server.json" <<EOF
   { "name": "sketchbook", "kind": "scene", "style": "sketch-pencil", "assets": [ { "path": "$meshes/bull.off" } ] },
   { "name": "turntable", "kind": "turntable", "style": "tween", "product": { "mesh": "$truck", "samples": 24, "size": 512 } },
   { "name": "conference", "kind": "conference",
-    "face": { "source": "$out/conference/packaged-speaker-input.mp4", "loop": true } } ] }
+    "face": { "source": "$out/conference/packaged-speaker-input.mp4", "loop": true } },
+  { "name": "call", "kind": "conference" } ] }
 EOF
 # A shop owner's product: studio photos of the duck turning on a turntable in front of white, every
 # 15 degrees (the view's azimuth falls as the object turns: --step -15), put on the server with one
@@ -182,6 +192,7 @@ for style in comic-extended sketch-pencil hatching painterly hatching+sketch-cha
     --out "$out/network/director-$style.png" 2>> "$out/network/director.log"
 done
 wait $viewer_pid
+say "customers turn products put on the server from photos (network/*-product.mp4)"
 # Products: each visitor turns the product on their own (nothing is sent while they do); every
 # view between the photos is synthesised by the client. The first visit shows what arrives first.
 "${client[@]}" --session turntable --name customer --view 0 --frames 96 --fps 24 --size 640x480 --wait-for-product \
@@ -192,6 +203,7 @@ if [[ -d "$here/../shared/data/templeRing" ]]; then
   "${client[@]}" --session temple --name customer --view 0 --frames 120 --fps 24 --size 384x512 --wait-for-product \
     --out "$out/network/temple-product.mp4" 2>> "$out/network/viewer.log"
 fi
+say "the product and conference pages in headless Chromium (web/)"
 # A customer's browser: the session index, the duck's product page, a drag of the element, and
 # the conference's page.
 /usr/bin/python3 "$here/scripts/web_demo.py" "$http_port" duck conference "$out/web"
@@ -201,9 +213,31 @@ fi
   --out "$out/network/conference.mp4" 2>> "$out/network/viewer.log"
 "${client[@]}" --session conference --name painter --style painterly --set style=impressionist --frames 45 --fps 15 \
   --size 360x480 --out "$out/network/conference-painted.mp4" 2>> "$out/network/viewer.log"
+# A call: two members publish their own face (a camera clip made from a real photo each) and
+# voice (sentences spoken by espeak-ng) from native clients; a third only listens and records the
+# grid with its sound. Only face crops go up; expression codes and Opus voice come down.
+say "recording a call between two members and a listener (demo-output/call/call.mp4, with sound)"
+mkdir -p "$out/call"
+"$bin/inkwire-conference" --speaker /usr/share/doc/libdlib19.1/examples/faces/2009_004587.jpg \
+  --script neutral:1.5,smile@220:2,neutral:1,surprise:1.5,smile:2,neutral:2 --fps 15 \
+  --out "$out/call/bea-reconstruction.mp4" --input-out "$out/call/bea-camera.mp4" > /dev/null
+espeak-ng -s 140 -w "$out/call/ada.wav" "Hello Bea. Can you hear me? The new turntable pages are live, and the shop looks lovely."
+espeak-ng -v en+f3 -s 140 -w "$out/call/bea.wav" "Yes, I hear you well. Let us show the customers on Monday."
+"${client[@]}" --session call --name Listener --frames 210 --fps 15 --size 720x300 --out "$out/call/call.mp4" \
+  --audio-out "$out/call/call.wav" --frame-log "$out/call/listener.jsonl" 2> "$out/call/listener.log" &
+listener_pid=$!
+sleep 1
+"${client[@]}" --session call --name Ada --camera "$out/conference/packaged-speaker-input.mp4" --microphone "$out/call/ada.wav" \
+  --frames 180 --fps 15 --size 320x240 --out "$out/call/ada-view.mp4" 2> "$out/call/ada.log" &
+ada_pid=$!
+sleep 6
+"${client[@]}" --session call --name Bea --camera "$out/call/bea-camera.mp4" --microphone "$out/call/bea.wav" \
+  --frames 90 --fps 15 --size 320x240 --out "$out/call/bea-view.mp4" 2> "$out/call/bea.log"
+wait $ada_pid $listener_pid
 kill -TERM $server_pid && wait $server_pid || true
 trap - EXIT
 
+say "two server instances sharing a session through Redis (network/instances/)"
 # Two server instances sharing their sessions through Redis (deploy/README.md): instance a
 # defines the session, instance b takes it (mesh included) from the broker; a viewer on b records
 # while a director on a changes the style.
@@ -240,4 +274,4 @@ kill -TERM "$a_pid" "$b_pid" && wait "$a_pid" "$b_pid" || true
 kill "$broker_pid" && wait "$broker_pid" || true
 trap - EXIT
 
-echo "demo: wrote $out/contact-sheet.png, $out/shade-maps.png, $out/paintings.png, $out/styles/, $out/turntable-*.mp4, $out/painted-video.mp4, $out/tween-methods.png, $out/tween/, $out/conference/ (input | reconstruction | painted, with bytes sent in the .json) and $out/network/ (viewer.mp4: a shared session followed over the network; turntable.mp4 and duck-product.mp4: products turned by a customer, every in-between view synthesised; $out/web/: the product and the conference in a browser; conference.mp4 and conference-painted.mp4: a speaker's face rebuilt from expression codes; instances/viewer-on-b.mp4: a session shared by two server instances through Redis)"
+echo "demo: wrote $out/contact-sheet.png, $out/shade-maps.png, $out/paintings.png, $out/styles/, $out/turntable-*.mp4, $out/painted-video.mp4, $out/tween-methods.png, $out/tween/, $out/conference/ (input | reconstruction | painted, with bytes sent in the .json) and $out/network/ (viewer.mp4: a shared session followed over the network; turntable.mp4 and duck-product.mp4: products turned by a customer, every in-between view synthesised; $out/web/: the product and the conference in a browser; conference.mp4 and conference-painted.mp4: a speaker's face rebuilt from expression codes; instances/viewer-on-b.mp4: a session shared by two server instances through Redis) and $out/call/call.mp4 (a call between two members, with its sound)"

@@ -66,6 +66,7 @@ int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& 
   // A call's sound, frame by frame on the same clock as the pictures.
   sync.audio().take(tick);
   std::vector<float> sound;
+  bool call_seen = false;  // a call was shown at some frame: its sound is kept, even if all have left
   const auto hear_until = [&](std::chrono::steady_clock::time_point until) {
     const std::vector<float> heard = sync.audio().take(until);  // only what is due by now: late packets are late
     sound.insert(sound.end(), heard.begin(), heard.end());
@@ -87,7 +88,9 @@ int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& 
     canvas.bind();
     sync.view().draw(o.size, double(i) / o.fps, i);
     Image picture = canvas.read();
-    if (!sync.view().call().empty()) draw_call_captions(picture, sync.view().call().tiles());
+    const bool in_call = !sync.view().call().empty();
+    call_seen |= in_call;
+    if (in_call) draw_call_captions(picture, sync.view().call().tiles());
     writer.write(picture);
     if (log) log << frame_log_line(sync, client, i).dump() << "\n" << std::flush;
     tick += period;
@@ -95,7 +98,7 @@ int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& 
   }
   hear_until(tick);
   writer.close();
-  if (!sync.view().call().empty()) save_call_sound(o, sound, sync.audio());
+  if (call_seen || sync.audio().played() > 0) save_call_sound(o, sound, sync.audio());
   // Frames of a blank backdrop are not a recording of the session: say why and fail.
   if (!sync.view().content_error().empty()) throw Error(sync.view().content_error() + " (the frames written show none of it)");
   if (!sync.view().error().empty()) std::cerr << "inkwire-client: " << sync.view().error() << "\n";
