@@ -44,6 +44,9 @@ frames = {f["type"]: bytes.fromhex(f["hex"]) for f in json.load(open("tests/gold
 for t in ("style-change", "camera-pose", "object-pose", "expression-code"):
     open(f"fuzz-corpus/fuzz_broker/event-{t}", "wb").write(b"\x01" + b"17 1764000000000000 3 1:a4:cows" + frames[t])
 open("fuzz-corpus/fuzz_broker/definition", "wb").write(b"\x00" + b"71:sha256:" + b"0" * 64 + b"0:" + frames["snapshot"])
+for t in ("voice-frame", "member-face", "roster"):
+    open(f"fuzz-corpus/fuzz_broker/call-{t}", "wb").write(b"\x02" + b"M3:one4:call" + frames[t])
+open("fuzz-corpus/fuzz_broker/call-photo", "wb").write(b"\x02" + b"P3:one4:call3 4:\xff\xd8\xff\xe02:{}")
 PY
 fi
 

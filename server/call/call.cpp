@@ -8,6 +8,7 @@
 #include "common/log.hpp"
 #include "protocol/framing.hpp"
 #include "server/connection.hpp"
+#include "server/relay/relay.hpp"
 
 namespace inkwire::server {
 namespace {
@@ -51,8 +52,8 @@ struct Call::Member {
   uint32_t latest_voice_time = 0;
 };
 
-Call::Call(std::string session, CallOptions options, CallAnalyst& analyst, Drops& drops, Counters& counters)
-    : session_(std::move(session)), options_(options), analyst_(analyst), drops_(drops), counters_(counters) {}
+Call::Call(std::string session, CallOptions options, CallAnalyst& analyst, Drops& drops, Counters& counters, Relay& relay, std::string origin)
+    : session_(std::move(session)), options_(options), analyst_(analyst), drops_(drops), counters_(counters), relay_(relay), origin_(std::move(origin)) {}
 
 Call::~Call() {
   for (const auto& [id, m] : members_) analyst_.forget({session_, m->entry.member});
@@ -69,18 +70,26 @@ Call::Member* Call::find_member(uint16_t number) {
   return nullptr;
 }
 
+uint16_t Call::take_number() {
+  // Numbers are not reused while the number space lasts, so a late message from one who left
+  // never lands on a newcomer.
+  const auto taken = [&](uint16_t n) {
+    return find_member(n) || std::any_of(remotes_.begin(), remotes_.end(), [&](const auto& r) { return r.second.entry.member == n; });
+  };
+  while (next_number_ == 0 || taken(next_number_)) ++next_number_;
+  return next_number_++;
+}
+
 void Call::join(const std::shared_ptr<Connection>& connection, const std::string& name) {
   leave(connection->id());
   auto m = std::make_unique<Member>();
   m->connection = connection;
   m->connection_id = connection->id();
-  // Numbers are not reused while the number space lasts, so a late message from one who left
-  // never lands on a newcomer.
-  while (next_number_ == 0 || find_member(next_number_)) ++next_number_;
-  m->entry.member = next_number_++;
+  m->entry.member = take_number();
   m->entry.name = name.empty() ? "member " + std::to_string(m->entry.member) : name;
   members_[connection->id()] = std::move(m);
   send_roster();
+  share_roster();
 }
 
 void Call::leave(uint64_t connection) {
@@ -89,6 +98,7 @@ void Call::leave(uint64_t connection) {
   analyst_.forget({session_, it->second->entry.member});
   members_.erase(it);
   send_roster();
+  share_roster();
 }
 
 bool Call::dropped(Member& m, const std::string& reason) {
@@ -112,6 +122,7 @@ void Call::publish(uint64_t connection, const protocol::Publish& publish) {
   m->entry.microphone = publish.microphone;
   if (!publish.camera) m->faceless_since.reset(), m->faceless = false, m->entry.face_found = true;
   send_roster();
+  share_roster();
 }
 
 void Call::photo(uint64_t connection, Bytes jpeg) {
@@ -161,15 +172,20 @@ void Call::voice(uint64_t connection, protocol::VoiceFrame frame) {
   update_speakers(now);
   // The sender's own number on what is relayed: a member speaks only as itself.
   frame.member = m->entry.member;
-  if (m->entry.speaking) counters_.voice_relayed += send_to_others(*m, frame);
+  if (m->entry.speaking) {
+    counters_.voice_relayed += send_to_others(*m, frame);
+    relay_.share_call({.origin = origin_, .session = session_, .message = frame});
+  }
   // Without a face to read, the voice moves the mouth (SPEC F10).
   const bool face_gone = !m->entry.camera || m->faceless || now - m->last_face > kFaceLost;
   if (face_gone && (!(reading->mouth == m->voice_mouth) || now - m->voice_mouth_sent > kVoiceMouthKeepalive)) {
     m->voice_mouth = reading->mouth;
     m->voice_mouth_sent = now;
-    send_to_all(protocol::MemberFace{.member = m->entry.member, .time_ms = frame.time_ms,
-                                            .expression = {.code = uint8_t(reading->mouth.expression), .intensity = reading->mouth.intensity},
-                                            .source = protocol::FaceSource::Voice});
+    const protocol::MemberFace face{.member = m->entry.member, .time_ms = frame.time_ms,
+                                    .expression = {.code = uint8_t(reading->mouth.expression), .intensity = reading->mouth.intensity},
+                                    .source = protocol::FaceSource::Voice};
+    send_to_all(face);
+    relay_.share_call({.origin = origin_, .session = session_, .message = face});
   }
 }
 
@@ -207,6 +223,7 @@ void Call::analysed(const PhotoAnalysed& result) {
     m->entry.assets.push_back({.hash = hash, .size = bytes->size(), .kind = kind, .name = name});
     m->asset_bytes[hash] = *bytes;
   }
+  relay_.share_call({.origin = origin_, .session = session_, .photo_member = m->entry.member, .photo = result.photo, .landmarks = result.landmarks});
   send_roster();
 }
 
@@ -233,23 +250,112 @@ void Call::analysed(const CropAnalysed& result) {
     send_roster();
   }
   // Everyone, the member too: its own tile shows what the others see of it.
-  if (result.face) send_to_all(*result.face);
+  if (result.face) {
+    send_to_all(*result.face);
+    relay_.share_call({.origin = origin_, .session = session_, .message = *result.face});
+  }
 }
 
 const Bytes* Call::asset(const protocol::Hash& hash, protocol::AssetAnnounce* announce) const {
+  const auto found = [&](const protocol::CallMember& entry, const std::map<protocol::Hash, Bytes>& bytes) -> const Bytes* {
+    const auto it = bytes.find(hash);
+    if (it == bytes.end()) return nullptr;
+    if (announce)
+      for (const auto& a : entry.assets)
+        if (a.hash == hash) *announce = a;
+    return &it->second;
+  };
   for (const auto& [id, m] : members_)
-    if (const auto it = m->asset_bytes.find(hash); it != m->asset_bytes.end()) {
-      if (announce)
-        for (const auto& a : m->entry.assets)
-          if (a.hash == hash) *announce = a;
-      return &it->second;
-    }
+    if (const Bytes* b = found(m->entry, m->asset_bytes)) return b;
+  for (const auto& [key, r] : remotes_)
+    if (const Bytes* b = found(r.entry, r.asset_bytes)) return b;
   return nullptr;
+}
+
+void Call::tick() {
+  const auto now = Clock::now();
+  update_speakers(now);
+  if (now - roster_shared_ > std::chrono::seconds(2)) share_roster();
+  const size_t before = remotes_.size();
+  std::erase_if(remotes_, [&](const auto& r) { return now - r.second.heard > std::chrono::seconds(6); });
+  if (remotes_.size() != before) send_roster();
+}
+
+void Call::share_roster() {
+  roster_shared_ = Clock::now();
+  protocol::Roster own;
+  for (const auto& [id, m] : members_) own.members.push_back(m->entry);
+  if (own.members.size() > protocol::kMaxMembers) own.members.resize(protocol::kMaxMembers);
+  relay_.share_call({.origin = origin_, .session = session_, .message = own});
+}
+
+Call::Remote* Call::remote_member(const std::string& origin, uint16_t number, bool create) {
+  const auto key = std::pair(origin, number);
+  if (const auto it = remotes_.find(key); it != remotes_.end()) return &it->second;
+  if (!create) return nullptr;
+  Remote& r = remotes_[key];
+  r.entry.member = take_number();
+  r.heard = Clock::now();
+  return &r;
+}
+
+void Call::remote(const CallShare& share) {
+  const auto now = Clock::now();
+  if (share.photo_member) {
+    Remote* r = remote_member(share.origin, share.photo_member, true);
+    r->asset_bytes.clear();
+    r->entry.assets.clear();
+    const std::string stem = "member-" + std::to_string(r->entry.member);
+    const Bytes landmarks(share.landmarks.begin(), share.landmarks.end());
+    for (const auto& [bytes, kind, name] : {std::tuple{&share.photo, protocol::AssetKind::Image, stem + ".jpg"},
+                                            std::tuple{&landmarks, protocol::AssetKind::Landmarks, stem + ".landmarks.json"}}) {
+      const protocol::Hash hash = content_hash(bytes->data(), bytes->size());
+      r->entry.assets.push_back({.hash = hash, .size = bytes->size(), .kind = kind, .name = name});
+      r->asset_bytes[hash] = *bytes;
+    }
+    send_roster();
+    return;
+  }
+  if (!share.message) return;
+  if (const auto* roster = std::get_if<protocol::Roster>(&*share.message)) {
+    // The origin's members as they are now: new ones join, gone ones leave.
+    std::erase_if(remotes_, [&](const auto& r) {
+      return r.first.first == share.origin &&
+             std::none_of(roster->members.begin(), roster->members.end(), [&](const auto& m) { return m.member == r.first.second; });
+    });
+    for (const protocol::CallMember& m : roster->members) {
+      Remote* r = remote_member(share.origin, m.member, true);
+      const uint16_t local = r->entry.member;
+      std::vector<protocol::AssetAnnounce> assets = std::move(r->entry.assets);  // its photo comes on its own
+      r->entry = m;
+      r->entry.member = local;
+      r->entry.assets = std::move(assets);
+      r->heard = now;
+    }
+    send_roster();
+    return;
+  }
+  protocol::Message message = *share.message;
+  uint16_t* member = std::visit([](auto& m) -> uint16_t* {
+    if constexpr (requires { m.member; }) return &m.member;
+    return nullptr;
+  }, message);
+  Remote* r = member ? remote_member(share.origin, *member, false) : nullptr;
+  if (!r) return;  // not in a roster heard yet: its next roster brings it
+  *member = r->entry.member;
+  r->heard = now;
+  const auto frame = std::make_shared<const Bytes>(protocol::encode(message));
+  for (const auto& [id, m] : members_)
+    if (const auto c = m->connection.lock()) {
+      c->send_frame(frame, protocol::type_of(message));
+      if (protocol::type_of(message) == protocol::MessageType::VoiceFrame) ++counters_.voice_relayed;
+    }
 }
 
 void Call::send_roster() {
   protocol::Roster roster;
   for (const auto& [id, m] : members_) roster.members.push_back(m->entry);
+  for (const auto& [key, r] : remotes_) roster.members.push_back(r.entry);
   if (roster.members.size() > protocol::kMaxMembers) roster.members.resize(protocol::kMaxMembers);
   for (const auto& [id, m] : members_)
     if (const auto c = m->connection.lock()) {

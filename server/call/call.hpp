@@ -6,7 +6,10 @@
 // relayed as it came to everyone else while its sender is among the K loudest. Members only
 // ever publish as themselves: the member number on what is relayed is the sender's own.
 // What is dropped (too frequent, too large, not JPEG, not Opus) is counted by reason; a member
-// that keeps flooding is closed with the reason.
+// that keeps flooding is closed with the reason. With several instances (a broker), what the
+// members here publish is shared through the relay, and the members of other instances join the
+// roster under numbers of this instance's own: their voice and faces come to the members here
+// as any member's (each instance relays its own K loudest).
 #include <chrono>
 #include <cstdint>
 #include <map>
@@ -21,6 +24,8 @@
 namespace inkwire::server {
 
 class Connection;
+class Relay;
+struct CallShare;
 
 struct CallOptions {
   int loudest = 3;                // K: voices each member hears at once
@@ -43,7 +48,8 @@ class Call {
     uint64_t voice_relayed = 0;
   };
 
-  Call(std::string session, CallOptions options, CallAnalyst& analyst, Drops& drops, Counters& counters);
+  // `origin`: this instance's name, on what it shares through `relay`.
+  Call(std::string session, CallOptions options, CallAnalyst& analyst, Drops& drops, Counters& counters, Relay& relay, std::string origin);
   ~Call();
 
   void join(const std::shared_ptr<Connection>& connection, const std::string& name);
@@ -55,8 +61,11 @@ class Call {
   void crop(uint64_t connection, protocol::FaceCrop crop);
   void voice(uint64_t connection, protocol::VoiceFrame frame);
 
-  // A few times a second: speakers who fell silent stop speaking.
-  void tick() { update_speakers(Clock::now()); }
+  // A few times a second: speakers who fell silent stop speaking; other instances hear this
+  // one's roster again, and members of instances not heard from lately leave.
+  void tick();
+  // What another instance's members publish (through the broker).
+  void remote(const CallShare& share);
 
   // From the analyst, on the I/O thread.
   void analysed(const PhotoAnalysed& result);
@@ -85,6 +94,20 @@ class Call {
   Counters& counters_;
   std::map<uint64_t, std::unique_ptr<Member>> members_;  // by connection id
   uint16_t next_number_ = 1;
+  uint16_t take_number();
+  void share_roster();
+
+  // Members of other instances: their entry under a number of this instance, their photo's bytes.
+  struct Remote {
+    protocol::CallMember entry;
+    std::map<protocol::Hash, protocol::Bytes> asset_bytes;
+    Clock::time_point heard;
+  };
+  std::map<std::pair<std::string, uint16_t>, Remote> remotes_;  // by (origin, the origin's number)
+  Remote* remote_member(const std::string& origin, uint16_t number, bool create);
+  Relay& relay_;
+  std::string origin_;
+  Clock::time_point roster_shared_{};
 };
 
 }  // namespace inkwire::server

@@ -29,9 +29,48 @@ struct Reader {
     return out;
   }
   protocol::Message frame() { return protocol::decode_frame(reinterpret_cast<const uint8_t*>(rest.data()), rest.size()); }
+  std::string bytes(size_t max, const char* what) {
+    const uint64_t n = number(':', what);
+    if (n > rest.size() || n > max) throw ProtocolError(std::string("broker text: ") + what + " longer than what is left or allowed");
+    std::string out(rest.substr(0, n));
+    rest.remove_prefix(n);
+    return out;
+  }
 };
 
 }  // namespace
+
+std::string call_share(const CallShare& share) {
+  std::string out = (share.message ? "M" : "P") + counted(share.origin) + counted(share.session);
+  if (share.message) {
+    const protocol::Bytes frame = protocol::encode(*share.message);
+    return out + std::string(frame.begin(), frame.end());
+  }
+  return out + std::to_string(share.photo_member) + " " + counted(std::string(share.photo.begin(), share.photo.end())) + counted(share.landmarks);
+}
+
+CallShare parse_call_share(std::string_view text) {
+  if (text.empty() || (text[0] != 'M' && text[0] != 'P')) throw ProtocolError("broker text: not a call share");
+  Reader r{text.substr(1)};
+  CallShare share;
+  share.origin = r.name("origin");
+  share.session = r.name("session");
+  if (text[0] == 'M') {
+    share.message = r.frame();
+    const auto type = protocol::type_of(*share.message);
+    if (type != protocol::MessageType::VoiceFrame && type != protocol::MessageType::MemberFace && type != protocol::MessageType::Roster)
+      throw ProtocolError(std::string("broker text: a call does not share a ") + protocol::name_of(type));
+    return share;
+  }
+  const uint64_t member = r.number(' ', "member");
+  if (member == 0 || member > 65535) throw ProtocolError("broker text: member number outside 1..65535");
+  share.photo_member = uint16_t(member);
+  const std::string photo = r.bytes(protocol::kMaxPhotoBytes, "photo");
+  share.photo.assign(photo.begin(), photo.end());
+  share.landmarks = r.bytes(64 * 1024, "landmarks");
+  if (!r.rest.empty()) throw ProtocolError("broker text: bytes after a call's photo");
+  return share;
+}
 
 std::string state_field(const protocol::Message& change) {
   switch (protocol::type_of(change)) {

@@ -6,6 +6,7 @@
 // (tests/fuzz/fuzz_broker.cpp).
 #include <cstdint>
 #include <string>
+#include <optional>
 #include <string_view>
 
 #include "protocol/messages.hpp"
@@ -32,6 +33,21 @@ BrokerEvent parse_event(std::string_view payload);
 std::string session_definition(const StoredSession& stored);
 // Throws protocol::ProtocolError naming what is wrong.
 StoredSession parse_session_definition(std::string_view text);
+
+// A call's traffic between instances (SPEC F12): what an instance's own members publish, for
+// the members on other instances. `message` is a voice-frame or member-face of one of the
+// origin's members (by the origin's member number), or a roster of the origin's own members; a
+// member's neutral photo travels with its landmarks' JSON (photo_member non-zero).
+struct CallShare {
+  std::string origin, session;
+  std::optional<protocol::Message> message;
+  uint16_t photo_member = 0;
+  protocol::Bytes photo;
+  std::string landmarks;
+};
+std::string call_share(const CallShare& share);
+// Throws protocol::ProtocolError naming what is wrong.
+CallShare parse_call_share(std::string_view text);
 
 // Which field of a session's state `change` is ("style", "camera", "object", "expression").
 // Throws protocol::ProtocolError for a message that is no session state.

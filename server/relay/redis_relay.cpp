@@ -21,6 +21,7 @@ using namespace std::chrono_literals;
 
 constexpr std::string_view kEvents = "inkwire:events";      // changes, published by kPublish
 constexpr std::string_view kNotices = "inkwire:notices";    // a session was shared: its name
+constexpr std::string_view kCalls = "inkwire:calls";        // calls' voice, faces, rosters and photos (broker_formats.hpp)
 constexpr std::string_view kSessions = "inkwire:sessions";  // hash: name -> definition
 constexpr uint64_t kMaxSharedAsset = 64 << 20;              // larger assets need a shared data folder
 
@@ -134,7 +135,7 @@ void RedisRelay::connect() {
   subscriptions_ = 0;
   const auto up = [this] {
     if (++connections_up_ < 2) return;
-    if (!events_.subscribe({kEvents, kNotices}, [this](const redisReply* r) { on_subscription(r); }))
+    if (!events_.subscribe({kEvents, kNotices, kCalls}, [this](const redisReply* r) { on_subscription(r); }))
       lost("cannot subscribe");
   };
   // A broker with a password hears it first on each connection.
@@ -177,12 +178,31 @@ void RedisRelay::on_subscription(const redisReply* r) {
   if (!r || r->type != REDIS_REPLY_ARRAY || r->elements < 3) return;  // null: `lost` follows
   const std::string_view kind = text_of(r->element[0]), channel = text_of(r->element[1]);
   if (kind == "subscribe") {
-    if (++subscriptions_ == 2) ready();
+    if (++subscriptions_ == 3) ready();
     return;
   }
   if (kind != "message") return;
   if (channel == kEvents) on_event(text_of(r->element[2]));
   else if (channel == kNotices) discover();
+  else if (channel == kCalls) on_call(text_of(r->element[2]));
+}
+
+// Calls are live traffic, not state: published as they happen and lost while the broker is away
+// (each instance's own members still hear one another).
+void RedisRelay::share_call(const CallShare& share) {
+  if (!ready_) return;
+  const std::string text = call_share(share);
+  commands_.command({"PUBLISH", kCalls, text}, [](const redisReply*) {});
+}
+
+void RedisRelay::on_call(std::string_view payload) {
+  try {
+    CallShare share = parse_call_share(payload);
+    if (share.origin == server_.config().name) return;  // its own
+    if (const auto session = server_.find_session(share.session); session && session->call()) session->call()->remote(share);
+  } catch (const protocol::ProtocolError& e) {
+    log_warn("broker-call-garbled", {{"reason", e.what()}});
+  }
 }
 
 void RedisRelay::ready() {

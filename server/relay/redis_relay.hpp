@@ -45,6 +45,7 @@ class RedisRelay final : public Relay {
   void stop() override;
   void publish(Session& session, const protocol::Message& change, uint64_t sender) override;
   RelayStatus status() const override;
+  void share_call(const CallShare& share) override;
 
  private:
   using Event = BrokerEvent;
@@ -65,6 +66,7 @@ class RedisRelay final : public Relay {
   void send_change(const std::string& session, const std::string& field, const protocol::Bytes& frame, uint64_t sender, bool by_digest = true);
   void keep_unsent(const std::string& session, const std::string& field, const protocol::Bytes& frame, uint64_t sender);
   void on_event(std::string_view payload);
+  void on_call(std::string_view payload);
   void apply_in_order(Session& session, SessionSync& sync, Event event);
   void resync(const std::string& session);
   void share(const Session& session);

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "protocol/messages.hpp"
+#include "server/relay/broker_formats.hpp"
 
 namespace inkwire::server {
 
@@ -37,6 +38,8 @@ class Relay {
   // every instance, in the same order everywhere.
   virtual void publish(Session& session, const protocol::Message& change, uint64_t sender) = 0;
   virtual RelayStatus status() const = 0;
+  // A call's traffic for the members on other instances (call/call.hpp); nothing to do alone.
+  virtual void share_call(const CallShare& share) { (void)share; }
 };
 
 // The relay a config asks for: local without "broker", Redis for "redis://HOST:PORT".

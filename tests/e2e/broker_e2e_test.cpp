@@ -223,3 +223,53 @@ TEST_F(BrokerE2ETest, ABrokerWithAPasswordServesInstancesThatKnowItAndRefusesOth
   SessionClient a(one.address(), "a");
   EXPECT_NO_THROW(a.join("cows", ""));
 }
+
+// A call across instances (SPEC F12): a member publishing on instance one is in the roster of a
+// listener on instance two (its photo fetched from instance two), and its face codes and voice
+// reach that listener under instance two's number for it.
+TEST_F(BrokerE2ETest, AMemberPublishingOnOneInstanceIsSeenAndHeardOnTheOther) {
+  const fs::path photo_file = "/usr/share/doc/libdlib19.1/examples/faces/Tom_Cruise_avp_2014_4.jpg";
+  if (!fs::exists(photo_file)) GTEST_SKIP() << "libdlib-dev's example photo is missing";
+  const fs::path dir = output_dir("broker-call");
+  with_instance_folders(dir);
+  BrokerUnderTest broker(dir);
+  ServerUnderTest one(dir / "one", instance_config("one", broker, {{{"name", "call"}, {"kind", "conference"}}}));
+  ServerUnderTest two(dir / "two", instance_config("two", broker, nlohmann::json::array()));
+  ASSERT_TRUE(eventually([&] { return count_events(two, "session-added") == 1; })) << two.process().output();
+
+  SessionClient listener(two.address(), "Listener"), ada(one.address(), "Ada");
+  listener.join("call", "");
+  ada.join("call", "");
+  const Image photo = load_image(photo_file);
+  ada.send(protocol::Publish{.camera = true, .microphone = true});
+  ada.send(protocol::NeutralPhoto{.jpeg = encode_image(photo, "jpg", 90)});
+  ASSERT_TRUE(eventually([&] {
+    const protocol::CallMember* m = named(listener.roster(), "Ada");
+    return m && m->assets.size() == 2 && m->camera;
+  })) << "instance two's roster: " << listener.roster().members.size() << " members";
+  const protocol::CallMember remote = *named(listener.roster(), "Ada");
+  AssetCache cache(dir / "cache");
+  EXPECT_EQ(load_image(listener.fetch_asset(remote.assets[0], cache)).width, photo.width) << "the photo, served by instance two";
+
+  const auto voice = voice_packets(60);
+  for (int k = 0; k < 60; ++k) {
+    if (k % 5 == 0) {
+      const Image shown = photo.width > 320 ? resized(photo, 320, photo.height * 320 / photo.width) : photo;
+      ada.send(protocol::FaceCrop{.time_ms = uint32_t(k * 20), .frame_width = uint16_t(shown.width), .frame_height = uint16_t(shown.height),
+                                  .x = 0, .y = 0, .width = uint16_t(shown.width), .height = uint16_t(shown.height), .jpeg = encode_image(shown, "jpg", 80)});
+    }
+    ada.send(protocol::VoiceFrame{.member = 0, .time_ms = uint32_t(k * 20), .opus = voice[size_t(k)]});
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  ASSERT_TRUE(eventually([&] { return listener.member_faces().count(remote.member) > 0; })) << "no face of Ada reached instance two";
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  size_t heard = 0;
+  for (const auto& [v, arrived] : listener.take_voice()) {
+    EXPECT_EQ(v.member, remote.member) << "a voice packet under another number";
+    ++heard;
+  }
+  EXPECT_GE(heard, 55u) << "of 60 voice packets sent on instance one";
+
+  ada.send(protocol::Leave{});
+  EXPECT_TRUE(eventually([&] { return !named(listener.roster(), "Ada"); })) << "Ada left instance one but stays in instance two's roster";
+}

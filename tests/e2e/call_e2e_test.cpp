@@ -9,7 +9,6 @@
 #include <thread>
 
 #include <gtest/gtest.h>
-#include <opus.h>
 
 #include "client/net/session_client.hpp"
 #include "common/image.hpp"
@@ -24,37 +23,7 @@ const fs::path kYale = fs::path(INKWIRE_SOURCE_DIR) / ".." / "shared" / "data" /
 const fs::path kDlibPhoto = "/usr/share/doc/libdlib19.1/examples/faces/Tom_Cruise_avp_2014_4.jpg";
 const fs::path kFaceModel = "/usr/share/dlib/shape_predictor_68_face_landmarks.dat";
 
-protocol::Bytes jpeg_of(const Image& image, const fs::path& scratch) {
-  save_image(image, scratch, false);
-  std::ifstream in(scratch, std::ios::binary);
-  return protocol::Bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
-
-// `count` 20 ms Opus packets (12 kbit/s) of a voiced buzz, as a member's microphone sends them.
-std::vector<protocol::Bytes> voice_packets(int count) {
-  int error = 0;
-  OpusEncoder* encoder = opus_encoder_create(48000, 1, OPUS_APPLICATION_VOIP, &error);
-  opus_encoder_ctl(encoder, OPUS_SET_BITRATE(12000));
-  std::vector<protocol::Bytes> packets;
-  std::vector<float> pcm(960);
-  for (int k = 0; k < count; ++k) {
-    for (int i = 0; i < 960; ++i) {
-      const float t = float(k * 960 + i) / 48000.0f;
-      pcm[size_t(i)] = 0.3f * std::sin(2 * 3.14159265f * 180 * t) + 0.15f * std::sin(2 * 3.14159265f * 720 * t);
-    }
-    protocol::Bytes out(400);
-    out.resize(size_t(opus_encode_float(encoder, pcm.data(), 960, out.data(), opus_int32(out.size()))));
-    packets.push_back(std::move(out));
-  }
-  opus_encoder_destroy(encoder);
-  return packets;
-}
-
-const protocol::CallMember* named(const protocol::Roster& roster, const std::string& name) {
-  for (const auto& m : roster.members)
-    if (m.name == name) return &m;
-  return nullptr;
-}
+protocol::Bytes jpeg_of(const Image& image, const fs::path&) { return encode_image(image, "jpg", 90); }
 
 }  // namespace
 

@@ -2,6 +2,7 @@
 // What end-to-end tests share: a real inkwire-server on a free port with a given config,
 // headless inkwire-client processes and their frame logs, image comparison.
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -13,8 +14,11 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <opus.h>
+
 #include "common/image.hpp"
 #include "process.hpp"
+#include "protocol/messages.hpp"
 
 namespace inkwire::e2e {
 
@@ -104,6 +108,33 @@ inline std::unique_ptr<Process> headless_client(const ServerUnderTest& server, c
                                "--out", (dir / (name + "-%04d.png")).string(), "--frame-log", (dir / (name + ".jsonl")).string(),
                                "--name", name},
       dir / (name + ".log"));
+}
+
+// Calls: `count` 20 ms Opus packets (12 kbit/s) of a voiced buzz, as a member's microphone sends them.
+inline std::vector<protocol::Bytes> voice_packets(int count) {
+  int error = 0;
+  OpusEncoder* encoder = opus_encoder_create(48000, 1, OPUS_APPLICATION_VOIP, &error);
+  opus_encoder_ctl(encoder, OPUS_SET_BITRATE(12000));
+  std::vector<protocol::Bytes> packets;
+  std::vector<float> pcm(960);
+  for (int k = 0; k < count; ++k) {
+    for (int i = 0; i < 960; ++i) {
+      const float t = float(k * 960 + i) / 48000.0f;
+      pcm[size_t(i)] = 0.3f * std::sin(2 * 3.14159265f * 180 * t) + 0.15f * std::sin(2 * 3.14159265f * 720 * t);
+    }
+    protocol::Bytes out(400);
+    out.resize(size_t(opus_encode_float(encoder, pcm.data(), 960, out.data(), opus_int32(out.size()))));
+    packets.push_back(std::move(out));
+  }
+  opus_encoder_destroy(encoder);
+  return packets;
+}
+
+// A call member of a roster by name, or null.
+inline const protocol::CallMember* named(const protocol::Roster& roster, const std::string& name) {
+  for (const auto& m : roster.members)
+    if (m.name == name) return &m;
+  return nullptr;
 }
 
 inline fs::path client_frame(const fs::path& dir, const std::string& name, int frame) {

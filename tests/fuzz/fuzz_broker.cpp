@@ -1,6 +1,7 @@
 // libFuzzer target: what an instance reads back from the broker (docs/deploy.md): a published
-// change (first byte odd) or a session's definition (even). Must end in a value that writes back
-// to the same text's meaning, or protocol::ProtocolError; never a crash.
+// change (first byte 1 mod 3), a session's definition (0 mod 3) or a call's share (2 mod 3). Must
+// end in a value that writes back to the same text's meaning, or protocol::ProtocolError; never
+// a crash.
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -20,7 +21,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size < 1) return 0;
   const std::string_view text(reinterpret_cast<const char*>(data + 1), size - 1);
   try {
-    if (data[0] & 1) {
+    if (data[0] % 3 == 2) {
+      const server::CallShare s = server::parse_call_share(text);
+      const server::CallShare back = server::parse_call_share(server::call_share(s));
+      if (back.origin != s.origin || back.session != s.session || back.message != s.message || back.photo_member != s.photo_member ||
+          back.photo != s.photo || back.landmarks != s.landmarks)
+        __builtin_trap();
+    } else if (data[0] % 3 == 1) {
       const server::BrokerEvent e = server::parse_event(text);
       const std::string again = std::to_string(e.revision) + " " + server::event_header(e.published_us, e.sender, e.origin, e.session) +
                                 text_of(protocol::encode(e.change));

@@ -63,3 +63,25 @@ TEST(BrokerFormatsTest, AnythingElseIsRefusedWithAReason) {
   EXPECT_NE(refusal(published(7, "a", "cows", protocol::Ping{})).find("not session state"), std::string::npos);
   EXPECT_THROW(parse_session_definition("3:abc" + text_of(protocol::encode(protocol::Ping{}))), protocol::ProtocolError);
 }
+
+// A call's traffic between instances: a voice frame, a face, a roster and a photo come back as
+// they went; a message a call does not share and a truncated photo are refused.
+TEST(BrokerFormatsTest, ACallsShareComesBackAsItWentAndOtherMessagesAreRefused) {
+  const std::vector<CallShare> shares = {
+      {.origin = "one", .session = "call", .message = protocol::VoiceFrame{.member = 3, .time_ms = 120, .opus = protocol::Bytes(40, 7)}},
+      {.origin = "one", .session = "call", .message = protocol::MemberFace{.member = 3, .time_ms = 140, .yaw = -9}},
+      {.origin = "one", .session = "call", .message = protocol::Roster{.you = 0, .members = {protocol::CallMember{.member = 3, .name = "Ada"}}}},
+      {.origin = "one", .session = "call", .photo_member = 3, .photo = protocol::Bytes(5000, 0xd8), .landmarks = "{\"points\": []}"}};
+  for (const CallShare& s : shares) {
+    const CallShare back = parse_call_share(call_share(s));
+    EXPECT_EQ(back.origin, s.origin);
+    EXPECT_EQ(back.session, s.session);
+    EXPECT_EQ(back.message, s.message);
+    EXPECT_EQ(back.photo_member, s.photo_member);
+    EXPECT_EQ(back.photo, s.photo);
+    EXPECT_EQ(back.landmarks, s.landmarks);
+  }
+  EXPECT_THROW(parse_call_share(call_share({.origin = "one", .session = "call", .message = protocol::StyleChange{}})), protocol::ProtocolError);
+  const std::string photo = call_share(shares[3]);
+  for (size_t cut : {size_t(1), size_t(10), photo.size() / 2, photo.size() - 1}) EXPECT_THROW(parse_call_share(photo.substr(0, cut)), protocol::ProtocolError) << cut;
+}
