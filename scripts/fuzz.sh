@@ -70,10 +70,16 @@ echo "|---|---|---|---|---|---|---|---|"
 for t in "${targets[@]}"; do
   log="fuzz-out/$t.log"
   runs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | awk '{print $2}' | tail -1 || true)
-  done_line=$(grep -E '^#[0-9]+[[:space:]]+DONE' "$log" | tail -1)
+  done_line=$(grep -E '^#[0-9]+[[:space:]]+DONE' "$log" | tail -1 || true)  # none when it crashed
   cov=$(sed -n 's/.*cov: \([0-9]*\).*/\1/p' <<< "$done_line")
   ft=$(sed -n 's/.* ft: \([0-9]*\).*/\1/p' <<< "$done_line")
   corp=$(sed -n 's/.* corp: \([0-9]*\)\/.*/\1/p' <<< "$done_line")
   crashes=$(find fuzz-out -name "$t-crash-*" -o -name "$t-leak-*" -o -name "$t-oom-*" -o -name "$t-timeout-*" | wc -l)
   echo "| $t | $seconds | ${runs:-?} | $(( ${runs:-0} / seconds )) | ${cov:-?} | ${ft:-?} | ${corp:-?} | $crashes |"
 done
+# A finding fails the run (scripts/test.sh runs every target briefly): the input is in fuzz-out/.
+found=$(find fuzz-out -name '*-crash-*' -o -name '*-leak-*' -o -name '*-oom-*' -o -name '*-timeout-*' | sort)
+if [ -n "$found" ]; then
+  echo "fuzz: findings (replay with build-fuzz/bin/TARGET FILE):" $found >&2
+  exit 1
+fi

@@ -33,6 +33,21 @@ struct Bucket {
   }
 };
 
+// A member's neutral photo and landmarks become its assets: listed in its roster entry by hash,
+// their bytes kept beside it to be served.
+void set_photo(protocol::CallMember& entry, std::map<protocol::Hash, Bytes>& asset_bytes, const Bytes& photo, const std::string& landmarks_json) {
+  asset_bytes.clear();
+  entry.assets.clear();
+  const std::string stem = "member-" + std::to_string(entry.member);
+  const Bytes landmarks(landmarks_json.begin(), landmarks_json.end());
+  for (const auto& [bytes, kind, name] : {std::tuple{&photo, protocol::AssetKind::Image, stem + ".jpg"},
+                                          std::tuple{&landmarks, protocol::AssetKind::Landmarks, stem + ".landmarks.json"}}) {
+    const protocol::Hash hash = content_hash(bytes->data(), bytes->size());
+    entry.assets.push_back({.hash = hash, .size = bytes->size(), .kind = kind, .name = name});
+    asset_bytes[hash] = *bytes;
+  }
+}
+
 }  // namespace
 
 struct Call::Member {
@@ -213,16 +228,7 @@ void Call::analysed(const PhotoAnalysed& result) {
     if (c) c->send(protocol::ErrorMessage{.code = protocol::ErrorCode::NotAllowed, .reason = result.error});
     return;
   }
-  m->asset_bytes.clear();
-  m->entry.assets.clear();
-  const std::string stem = "member-" + std::to_string(m->entry.member);
-  const Bytes landmarks(result.landmarks.begin(), result.landmarks.end());
-  for (const auto& [bytes, kind, name] : {std::tuple{&result.photo, protocol::AssetKind::Image, stem + ".jpg"},
-                                          std::tuple{&landmarks, protocol::AssetKind::Landmarks, stem + ".landmarks.json"}}) {
-    const protocol::Hash hash = content_hash(bytes->data(), bytes->size());
-    m->entry.assets.push_back({.hash = hash, .size = bytes->size(), .kind = kind, .name = name});
-    m->asset_bytes[hash] = *bytes;
-  }
+  set_photo(m->entry, m->asset_bytes, result.photo, result.landmarks);
   relay_.share_call({.origin = origin_, .session = session_, .photo_member = m->entry.member, .photo = result.photo, .landmarks = result.landmarks});
   send_roster();
 }
@@ -303,16 +309,7 @@ void Call::remote(const CallShare& share) {
   const auto now = Clock::now();
   if (share.photo_member) {
     Remote* r = remote_member(share.origin, share.photo_member, true);
-    r->asset_bytes.clear();
-    r->entry.assets.clear();
-    const std::string stem = "member-" + std::to_string(r->entry.member);
-    const Bytes landmarks(share.landmarks.begin(), share.landmarks.end());
-    for (const auto& [bytes, kind, name] : {std::tuple{&share.photo, protocol::AssetKind::Image, stem + ".jpg"},
-                                            std::tuple{&landmarks, protocol::AssetKind::Landmarks, stem + ".landmarks.json"}}) {
-      const protocol::Hash hash = content_hash(bytes->data(), bytes->size());
-      r->entry.assets.push_back({.hash = hash, .size = bytes->size(), .kind = kind, .name = name});
-      r->asset_bytes[hash] = *bytes;
-    }
+    set_photo(r->entry, r->asset_bytes, share.photo, share.landmarks);
     send_roster();
     return;
   }

@@ -60,8 +60,14 @@ std::optional<VoiceReading> VoiceAnalysis::read(std::span<const uint8_t> packet,
   const int decoded = opus_decode_float(decoder_, packet.data(), opus_int32(packet.size()), pcm_.data(), kMaxSamples, 0);
   if (decoded <= 0) return refuse(std::string("voice frame does not decode: ") + opus_strerror(decoded));
   last_ = decoded;
+  // Opus may decode past full scale (a hostile packet far past it): the level is of what a
+  // sound card would play, clipped, so nobody is "louder than loud" (found by fuzz_voice).
   double sum = 0;
-  for (int i = 0; i < decoded; ++i) sum += double(pcm_[size_t(i)]) * pcm_[size_t(i)];
+  for (int i = 0; i < decoded; ++i) {
+    float& s = pcm_[size_t(i)];
+    s = std::isfinite(s) ? std::clamp(s, -1.0f, 1.0f) : 0.0f;
+    sum += double(s) * s;
+  }
   const float rms = float(std::sqrt(sum / decoded));
   VoiceReading reading{.samples = decoded, .level_db = 20.0f * std::log10(std::max(rms, 1e-5f)), .mouth = {}};
   reading.mouth = mouth_of(this->samples(), reading.level_db);

@@ -106,3 +106,13 @@ TEST(CallVoiceTest, HeadPoseIsZeroForTheNeutralFaceAndFollowsATurnedNose) {
   for (int i = 42; i < 48; ++i) tilted[size_t(i)].y += 60;  // the right eye 45 degrees down
   EXPECT_NEAR(head_pose(tilted, neutral).roll, 45.0f, 0.5f);
 }
+
+// Found by fuzz_voice (2026-11-25): the 6-byte packet below decodes past full scale, and its
+// level read as more than 0 dB. Levels are of the clipped sound now.
+TEST(CallVoiceTest, APacketDecodingPastFullScaleReadsAtMostFullScale) {
+  VoiceAnalysis voice;
+  const auto reading = voice.read(std::vector<uint8_t>{0xd0, 0x2e, 0x2f, 0x29, 0xd0, 0x74});
+  ASSERT_TRUE(reading);
+  EXPECT_LE(reading->level_db, 0.0f);
+  for (float s : voice.samples()) EXPECT_LE(std::abs(s), 1.0f);
+}
