@@ -266,7 +266,10 @@ template <class Stream>
 void serialise(Stream& s, MemberFace& m) {
   s.u16(m.member);
   s.u32(m.time_ms);
-  serialise(s, m.expression);
+  // The code and its intensity only: a call's faces come several times a second, and the
+  // sequence and parameters of the session-wide code say nothing here (time_ms orders them).
+  s.u8(m.expression.code);
+  s.u8(m.expression.intensity);
   for (int8_t* v : {&m.yaw, &m.pitch, &m.roll}) {
     auto raw = uint8_t(*v);
     s.u8(raw);

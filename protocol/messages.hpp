@@ -253,8 +253,9 @@ struct VoiceFrame {
   Bytes opus;
 };
 
-// What a member's face shows (S->C): the expression code (as ExpressionCode), the head's yaw,
-// pitch and roll in degrees, and where it came from.
+// What a member's face shows (S->C): the expression code and intensity (of `expression`, whose
+// sequence and params do not travel: 0 when read), the head's yaw, pitch and roll in degrees,
+// and where it came from. 18 bytes framed.
 enum class FaceSource : uint8_t { Neutral = 0, Camera = 1, Voice = 2 };
 struct MemberFace {
   static constexpr MessageType type = MessageType::MemberFace;

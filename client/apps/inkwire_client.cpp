@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
   app.add_option("--camera", call.camera, "calls: publish this member's face from camera:N, a video file or a folder of images");
   app.add_option("--microphone", call.microphone, "calls: publish this member's voice from 'default' (the sound input) or a WAV file");
   app.add_option("--photo", call.photo, "calls: this member's neutral photo (default: the camera's first picture)");
-  app.add_option("--voice-bitrate", call.voice_bitrate, "calls: Opus bits a second (default 12000)")->check(CLI::Range(6000, 12000));
+  app.add_option("--voice-bitrate", call.voice_bitrate, "calls: Opus bits a second (default 10000)")->check(CLI::Range(6000, 12000));
   app.add_option("--voice-frame-ms", call.voice_frame_ms, "calls: milliseconds of voice per packet: 20, 40 or 60 (default)")
       ->check(CLI::IsMember({20, 40, 60}));
   app.add_option("--audio-out", o.audio_out, "calls, headless: write the sound heard to this WAV file (an .mp4 --out gets it too)");

@@ -21,10 +21,10 @@ struct PublisherOptions {
   std::string camera;      // VideoSource spec (camera:N, a video, a folder of images); empty: none
   std::string microphone;  // "default" (the system's input through PortAudio) or a WAV file; empty: none
   std::string photo;       // the neutral photo; empty: the camera's first frame
-  // 12 kbit/s: below it speech recognition of what came through falls well behind the
-  // original's; 60 ms packets: the framing costs 2.4 kbit/s instead of 3.6 at 40 ms
-  // (docs/benchmarks.md, calls).
-  int voice_bitrate = 12000;
+  // 10 kbit/s: speech recognition of what came through stays with the original's (at 8 it fell
+  // far behind) and a speaker costs a listener under 10 kbit/s in all; 60 ms packets: the
+  // framing costs 2.4 kbit/s instead of 3.6 at 40 ms (docs/benchmarks.md, calls).
+  int voice_bitrate = 10000;
   int voice_frame_ms = 60;
   double max_fps = 15;
 };

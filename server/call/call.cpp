@@ -15,7 +15,8 @@ namespace {
 
 using protocol::Bytes;
 constexpr auto kSpeakingHold = std::chrono::milliseconds(400);  // silence before a speaker stops speaking
-constexpr auto kFaceLost = std::chrono::milliseconds(600);      // camera faces older than this: the voice moves the mouth
+constexpr auto kFaceLost = std::chrono::milliseconds(1000);     // camera faces older than this: the voice moves the mouth
+constexpr auto kVoiceMouthStep = std::chrono::milliseconds(150); // a mouth from the voice changes at most this often
 constexpr auto kNoFaceAfter = std::chrono::seconds(3);          // crops without a face this long: "no face found"
 constexpr auto kVoiceMouthKeepalive = std::chrono::seconds(1);
 constexpr float kLevelDecayDb = 1.5f;                           // per packet, so a level falls ~75 dB a second
@@ -193,7 +194,10 @@ void Call::voice(uint64_t connection, protocol::VoiceFrame frame) {
   }
   // Without a face to read, the voice moves the mouth (SPEC F10).
   const bool face_gone = !m->entry.camera || m->faceless || now - m->last_face > kFaceLost;
-  if (face_gone && (!(reading->mouth == m->voice_mouth) || now - m->voice_mouth_sent > kVoiceMouthKeepalive)) {
+  // Mouths change with syllables, four to seven a second: one every packet would be more codes
+  // than speech needs (SPEC F14 counts them).
+  const bool changed = !(reading->mouth == m->voice_mouth) && now - m->voice_mouth_sent >= kVoiceMouthStep;
+  if (face_gone && (changed || now - m->voice_mouth_sent > kVoiceMouthKeepalive)) {
     m->voice_mouth = reading->mouth;
     m->voice_mouth_sent = now;
     const protocol::MemberFace face{.member = m->entry.member, .time_ms = frame.time_ms,

@@ -45,7 +45,7 @@ struct CallAnalyst::Models {
 // What the analyst keeps of a member between crops.
 struct CallAnalyst::Member {
   ExpressionSelector selector{ExpressionSelector::Options{.calibration_frames = 15}};
-  ExpressionStream stream;
+  ExpressionStream stream{2.0};  // a face that does not change is said again every two seconds
   std::optional<FaceLandmarks> neutral;  // pose reference: the neutral photo's, else the first face seen
   HeadPose sent_pose;
   // Tracking between detections: where the face was in the frame, and crops since the detector ran.

@@ -16,7 +16,7 @@ export function voiceUnsupported() {
 
 // The microphone: its level always (a meter), its Opus packets while `sending`.
 export class VoiceSender {
-  constructor(track, { bitrate = 12000, frameMs = 60, onPacket, onLevel } = {}) {  // as client/call/publisher.hpp
+  constructor(track, { bitrate = 10000, frameMs = 60, onPacket, onLevel } = {}) {  // as client/call/publisher.hpp
     this.onPacket = onPacket;
     this.onLevel = onLevel;
     this.sending = false;

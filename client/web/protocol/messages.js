@@ -258,8 +258,8 @@ function serialiseVoiceFrame(s, m) {
 function serialiseMemberFace(s, m) {
   m.member = s.u16(m.member ?? 0);
   m.time_ms = s.u32(m.time_ms ?? 0);
-  m.expression = { ...(m.expression ?? {}) };
-  serialiseExpressionCode(s, m.expression);
+  // The code and its intensity only (as the C++ codec: a call's faces carry no sequence or params).
+  m.expression = { code: s.u8(m.expression?.code ?? 0), intensity: s.u8(m.expression?.intensity ?? 0) };
   for (const f of ['yaw', 'pitch', 'roll']) m[f] = int8(s, m[f]);
   m.source = enumeration(s, m.source ?? 0, 0, 2, 'face source', 1);
 }
