@@ -18,6 +18,7 @@
 
 #include "client/call/call_captions.hpp"
 #include "client/call/publisher.hpp"
+#include "client/call/speaker.hpp"
 #include "client/gl/context.hpp"
 #include "client/render/styles.hpp"
 #include "client/viewer/frame_log.hpp"
@@ -103,10 +104,15 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
   protocol::ObjectPose followed{.sequence = ~0u};  // none shown yet
   Orbit& orbit = input.orbit;
   uint64_t refusals = 0;  // the server's refusals seen so far (a change this member may not make)
+  // A call's sound, when the session is one: opened once, fed what is due each frame.
+  std::unique_ptr<Speaker> speaker;
+  if (client.state().kind == protocol::SessionKind::Conference) speaker = std::make_unique<Speaker>();
   while (!context->should_close() && client.connected()) {
     const double now = glfwGetTime(), dt = std::min(now - last_time, 0.1);
     last_time = now;
     bool dirty = sync.poll();
+    const std::vector<float> due = sync.audio().take(std::chrono::steady_clock::now());
+    if (speaker) speaker->play(due);
     if (o.publisher && (input.toggle_mute || input.toggle_camera)) {
       if (input.toggle_mute) o.publisher->set_muted(!o.publisher->muted());
       if (input.toggle_camera) o.publisher->set_camera_off(!o.publisher->camera_off());
@@ -214,6 +220,7 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
           ImGui::GetForegroundDrawList()->AddText(ImVec2(float(t.rect.x) * to_window, float(t.rect.y + t.rect.w + 3) * to_window),
                                                   t.speaking ? IM_COL32(90, 230, 120, 255) : IM_COL32(235, 235, 235, 255), caption_of(t).c_str());
         }
+        if (speaker && !speaker->open()) ImGui::TextWrapped("%s", speaker->reason().c_str());
         if (o.publisher)
           ImGui::TextWrapped("M: %s. C: %s. Microphone %.0f dB.", o.publisher->muted() ? "unmute" : "mute",
                              o.publisher->camera_off() ? "camera on" : "camera off", o.publisher->level_db());

@@ -120,3 +120,50 @@ TEST(CallE2ETest, MembersAreSeenAndHeardAsThemselvesAndBadInputIsDroppedAndCount
   grace.send(protocol::Leave{});
   ASSERT_TRUE(eventually([&] { return listener.roster().members.size() == 2 && !named(listener.roster(), "Grace"); }));
 }
+
+// Each refusal of SPEC F13 as a member meets it: crops too frequent or too large are dropped and
+// counted, a camera that never shows a face is reported as such (the member keeps its neutral
+// photo), and a member who floods is closed with the reason; the others carry on.
+TEST(CallE2ETest, FloodsOversizedCropsAndAFacelessCameraAreRefusedOrReportedWhileOthersCarryOn) {
+  if (!fs::exists(kFaceModel) || !fs::exists(kDlibPhoto)) GTEST_SKIP() << "libdlib-data's model or libdlib-dev's example photo is missing";
+  const fs::path dir = output_dir("call-refusals");
+  ServerUnderTest server(dir, {{"http", "127.0.0.1:0"}, {"sessions", {{{"name", "call"}, {"kind", "conference"}}}}});
+  SessionClient blank(server.address(), "Blank"), mallory(server.address(), "Mallory"), listener(server.address(), "Listener");
+  for (SessionClient* c : {&blank, &mallory, &listener}) c->join("call", "");
+  blank.send(protocol::Publish{.camera = true, .microphone = false});
+
+  // A camera pointed at a wall: crops without a face, 10 a second for four seconds.
+  Image wall(160, 120);
+  for (size_t i = 0; i < wall.pixels.size(); ++i) wall.pixels[i] = i % 4 == 3 ? 255 : 180;
+  const protocol::Bytes wall_jpeg = encode_image(wall, "jpg", 80);
+  for (int k = 0; k < 40; ++k) {
+    blank.send(protocol::FaceCrop{.time_ms = uint32_t(k * 100), .frame_width = 160, .frame_height = 120, .x = 0, .y = 0, .width = 160,
+                                  .height = 120, .jpeg = wall_jpeg});
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  ASSERT_TRUE(eventually([&] {
+    const protocol::CallMember* m = named(listener.roster(), "Blank");
+    return m && !m->face_found;
+  })) << "the faceless camera is not reported";
+  EXPECT_FALSE(blank.face_region() && blank.face_region()->found);
+
+  // Thirty crops at once (a second's allowance is 15) and one of 40 KB.
+  for (int k = 0; k < 30; ++k)
+    blank.send(protocol::FaceCrop{.time_ms = 5000, .frame_width = 160, .frame_height = 120, .x = 0, .y = 0, .width = 160, .height = 120, .jpeg = wall_jpeg});
+  std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+  protocol::Bytes big(40 * 1024, 0x42);
+  big[0] = 0xff, big[1] = 0xd8, big[2] = 0xff;
+  blank.send(protocol::FaceCrop{.time_ms = 6000, .frame_width = 160, .frame_height = 120, .x = 0, .y = 0, .width = 160, .height = 120, .jpeg = big});
+
+  // Mallory floods: two thousand voice packets as fast as the socket takes them.
+  const auto voice = voice_packets(1);
+  for (int k = 0; k < 2000; ++k) mallory.send(protocol::VoiceFrame{.member = 0, .time_ms = uint32_t(k), .opus = voice[0]});
+  ASSERT_TRUE(eventually([&] { return !mallory.connected(); })) << "the flood was not cut off";
+  EXPECT_NE(mallory.last_error().find("flooding"), std::string::npos) << mallory.last_error();
+
+  const std::string metrics = metrics_of(server);
+  for (const char* reason : {"crop-too-frequent", "crop-too-large", "voice-too-frequent"})
+    EXPECT_NE(metrics.find(std::string("inkwire_call_dropped_total{reason=\"") + reason + "\"}"), std::string::npos) << reason << "\n" << metrics;
+  EXPECT_TRUE(listener.connected() && blank.connected());
+  EXPECT_TRUE(eventually([&] { return !named(listener.roster(), "Mallory"); })) << "the flooder stays in the roster";
+}
