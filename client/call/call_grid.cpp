@@ -56,6 +56,9 @@ void CallGrid::draw(glm::ivec2 viewport, double time_seconds, ConferenceView* sp
     tiles_.push_back({.member = m.member, .name = m.name, .speaking = m.speaking, .camera = m.camera, .microphone = m.microphone,
                       .face_found = m.face_found, .you = m.member == roster_.you, .has_face = views_.count(m.member) > 0});
   if (tiles_.empty()) return;
+  // A call is a dark room whatever the style's backdrop: the tiles and their captions read on it.
+  gl::glClearColor(0.16f, 0.16f, 0.18f, 1);
+  gl::glClear(GL_COLOR_BUFFER_BIT);
   const int n = int(tiles_.size());
   // The layout whose tiles come out largest at the faces' 4:3.
   int best_cols = 1;

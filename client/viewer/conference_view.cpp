@@ -5,6 +5,7 @@
 
 #include "client/gl/gl.hpp"
 #include "client/render/backdrop.hpp"
+#include "client/render/face/comic_photo.hpp"
 #include "common/face/landmarks_file.hpp"
 
 namespace inkwire {
@@ -20,6 +21,7 @@ void ConferenceView::set_expression(const protocol::ExpressionCode& code) {
 }
 
 void ConferenceView::set_style(const std::string& renderer, const std::vector<std::string>& settings) {
+  comic_ = renderer.rfind("comic", 0) == 0;
   if (renderer != "painterly") {
     painter_.reset();
     painting_.reset();
@@ -46,6 +48,19 @@ void ConferenceView::draw(glm::ivec2 viewport, double time_seconds) {
   const float scale = std::min(float(viewport.x) / float(face_.width()), float(viewport.y) / float(face_.height()));
   const glm::ivec2 size(std::lround(float(face_.width()) * scale), std::lround(float(face_.height()) * scale));
   const glm::ivec4 rect(origin.x + (viewport.x - size.x) / 2, origin.y + (viewport.y - size.y) / 2, size.x, size.y);
+  if (comic_) {
+    Image face = face_.read();
+    comic_photo(face);
+    if (comic_face_.width() != face.width || comic_face_.height() != face.height) comic_face_ = gl::Texture::from_image(face);
+    else comic_face_.update(face);
+    gl::glDisable(GL_DEPTH_TEST);
+    gl::glEnable(GL_BLEND);
+    gl::glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    rect_image_.draw(comic_face_, comic_face_, {rect.x, rect.y, rect.z, rect.w}, false, 1.0f);
+    gl::glDisable(GL_BLEND);
+    gl::glEnable(GL_DEPTH_TEST);
+    return;
+  }
   if (!painter_) {
     face_.composite(glm::vec4(rect));
     return;

@@ -2,7 +2,8 @@
 // A conference session on the client (SPEC F5): the speaker's neutral photo and its landmarks
 // (assets, fetched once) deformed to each received expression code, tweened, and fitted into
 // the viewport. The session's style "painterly" (with its settings) paints the face with
-// brushes, each frame over the last so strokes persist; any other style shows the photo.
+// brushes, each frame over the last so strokes persist; a comic style ("comic",
+// "comic-extended") flattens and inks it (render/face/comic_photo.hpp); any other shows the photo.
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -37,6 +38,8 @@ class ConferenceView {
   FaceReconstructor face_;
   std::optional<ExpressionState> pending_;
   std::unique_ptr<VideoPainter> painter_;  // painterly style only
+  bool comic_ = false;                     // comic styles
+  gl::Texture comic_face_;
   std::optional<Canvas> painting_;         // what the painter paints over, frame after frame
   gl::Texture painted_;                    // its latest frame, to lay into the viewport
   RectImage rect_image_;
