@@ -102,7 +102,7 @@ BrokerAddress parse_broker(const std::string& url) {
 }
 
 RedisRelay::RedisRelay(Server& server, BrokerAddress address)
-    : server_(server), address_(std::move(address)), io_(server.io()), commands_(io_), events_(io_), retry_timer_(io_),
+    : server_(server), address_(std::move(address)), io_(server.io()), commands_(io_), events_(io_), retry_timer_(io_), heartbeat_timer_(io_),
       publish_digest_(script_digest(kPublish)) {
   status_.broker = true;
   status_.connected = false;
@@ -119,6 +119,7 @@ void RedisRelay::stop() {
   stopped_ = true;
   ready_ = false;
   retry_timer_.cancel();
+  heartbeat_timer_.cancel();
   commands_.disconnect();
   events_.disconnect();
 }
@@ -205,8 +206,33 @@ void RedisRelay::on_call(std::string_view payload) {
   }
 }
 
+// A broker that stops answering without closing its sockets (stopped, partitioned, swapping)
+// would hold every change forever: a PING each second, and no answer within the deadline is a
+// lost broker (hiredis 0.14 has no command timeout of its own).
+void RedisRelay::heartbeat() {
+  heartbeat_timer_.expires_after(1s);
+  heartbeat_timer_.async_wait([this](std::error_code ec) {
+    if (ec || stopped_ || !ready_) return;
+    if (ping_outstanding_ && Clock::now() - ping_sent_ > kHeartbeatDeadline) {
+      lost("the broker did not answer a PING within " + std::to_string(kHeartbeatDeadline.count()) + " ms");
+      return;
+    }
+    if (!ping_outstanding_) {
+      ping_outstanding_ = true;
+      ping_sent_ = Clock::now();
+      const uint64_t round = ++ping_round_;
+      commands_.command({"PING"}, [this, round](const redisReply* r) {
+        if (r && round == ping_round_) ping_outstanding_ = false;
+      });
+    }
+    heartbeat();
+  });
+}
+
 void RedisRelay::ready() {
   ready_ = true;
+  ping_outstanding_ = false;
+  heartbeat();
   commands_.command({"SCRIPT", "LOAD", kPublish}, [](const redisReply*) {});  // before any EVALSHA: one connection keeps order
   backoff_ = 100ms;
   if (std::exchange(ever_ready_, true)) ++status_.reconnects;
@@ -269,15 +295,15 @@ void RedisRelay::on_event(std::string_view payload) {
   const auto session = server_.find_session(e.session);
   if (!session) return;  // not here (yet): adopted with its state when its notice comes
   SessionSync& sync = syncs_[e.session];
-  if (sync.syncing) sync.waiting.push_back(std::move(e));
+  if (sync.syncing) wait_for_resync(sync, e.session, std::move(e));
   else apply_in_order(*session, sync, std::move(e));
 }
 
 void RedisRelay::apply_in_order(Session& session, SessionSync& sync, Event e) {
   if (e.revision <= sync.revision) return;  // in the state a resync read already
   if (e.revision != sync.revision + 1) {    // one was missed: read the state whole
-    sync.waiting.push_back(std::move(e));
-    resync(session.name());
+    wait_for_resync(sync, session.name(), std::move(e));
+    if (!sync.syncing) resync(session.name());
     return;
   }
   sync.revision = e.revision;
@@ -300,21 +326,37 @@ void RedisRelay::resync(const std::string& name) {
   const std::string key = state_key(name);
   args.push_back(key);
   args.insert(args.end(), own.begin(), own.end());
-  commands_.command(args, [this, name](const redisReply* r) {
+  const bool sent = commands_.command(args, [this, name](const redisReply* r) {
     SessionSync& sync = syncs_[name];
     const auto session = server_.find_session(name);
-    if (is_error(r) || r->type != REDIS_REPLY_ARRAY || !session) {
+    if (!session) {
       sync.syncing = false;
-      if (r) log_warn("broker-resync-failed", {{"session", name}, {"reason", reason_of(r)}});
       return;
     }
-    uint64_t revision = 0;
+    if (!r) return;  // the broker went away: reconnecting resyncs every session
+    if (is_error(r) || r->type != REDIS_REPLY_ARRAY) {
+      log_warn("broker-resync-failed", {{"session", name}, {"reason", reason_of(r)}, {"retry_ms", 500}});
+      retry_resync(name);
+      return;
+    }
+    // A revision that does not read as a number is refused, not taken for 0 (which would apply
+    // every change again).
+    std::optional<uint64_t> revision;
+    for (size_t i = 0; i + 1 < r->elements; i += 2)
+      if (text_of(r->element[i]) == "revision") {
+        const std::string_view value = text_of(r->element[i + 1]);
+        uint64_t n = 0;
+        const auto [p, ec] = std::from_chars(value.data(), value.data() + value.size(), n);
+        if (ec == std::errc() && p == value.data() + value.size() && n <= UINT32_MAX) revision = n;
+      }
+    if (!revision) {
+      log_warn("broker-resync-failed", {{"session", name}, {"reason", "the broker's revision of the session is missing or garbled"}, {"retry_ms", 500}});
+      retry_resync(name);
+      return;
+    }
     for (size_t i = 0; i + 1 < r->elements; i += 2) {
       const std::string_view field = text_of(r->element[i]), value = text_of(r->element[i + 1]);
-      if (field == "revision") {
-        std::from_chars(value.data(), value.data() + value.size(), revision);
-        continue;
-      }
+      if (field == "revision") continue;
       // A change made here while away: already applied here, and sent below unless the broker has it.
       if (const auto mine = unsent_.find({name, std::string(field)}); mine != unsent_.end()) {
         if (std::string_view(reinterpret_cast<const char*>(mine->second.frame.data()), mine->second.frame.size()) == value) unsent_.erase(mine);
@@ -328,7 +370,7 @@ void RedisRelay::resync(const std::string& name) {
         log_warn("broker-state-malformed", {{"session", name}, {"field", field}, {"reason", e.what()}});
       }
     }
-    sync.revision = uint32_t(revision);
+    sync.revision = uint32_t(*revision);
     session->set_revision(sync.revision);
     sync.syncing = false;
     for (auto it = unsent_.lower_bound({name, ""}); it != unsent_.end() && it->first.first == name; it = unsent_.erase(it))
@@ -338,6 +380,26 @@ void RedisRelay::resync(const std::string& name) {
     for (Event& e : waiting)
       if (!sync.syncing) apply_in_order(*session, sync, std::move(e));
   });
+  if (!sent) syncs_[name].syncing = false;  // not connected: the reconnection resyncs
+}
+
+void RedisRelay::retry_resync(const std::string& name) {
+  auto timer = std::make_shared<asio::steady_timer>(io_, 500ms);
+  timer->async_wait([this, name, timer](std::error_code ec) {
+    if (!ec && !stopped_ && ready_) resync(name);
+  });
+}
+
+void RedisRelay::wait_for_resync(SessionSync& sync, const std::string& name, Event e) {
+  // Bounded: past kMaxWaiting the waiting changes are dropped and counted, and the resync under
+  // way (or a new one) brings the state whole instead.
+  if (sync.waiting.size() >= kMaxWaiting) {
+    ++status_.overflows;
+    log_warn("broker-waiting-overflow", {{"session", name}, {"dropped", sync.waiting.size()}});
+    sync.waiting.clear();
+    if (!sync.syncing) resync(name);
+  }
+  sync.waiting.push_back(std::move(e));
 }
 
 void RedisRelay::share(const Session& session) {
@@ -407,7 +469,7 @@ void RedisRelay::adopt_remote(const std::string& name, std::string_view definiti
   };
   if (missing->empty()) return finish();
   for (const AssetAnnounce& asset : *missing) {
-    commands_.command({"GET", asset_key(asset.hash)}, [this, name, asset, left, failed, finish](const redisReply* r) {
+    const bool sent = commands_.command({"GET", asset_key(asset.hash)}, [this, name, asset, left, failed, finish](const redisReply* r) {
       if (is_error(r) || r->type != REDIS_REPLY_STRING) {
         if (!*failed) log_warn("broker-asset-missing", {{"session", name}, {"asset", asset.name}, {"reason", r ? "not in the broker" : "the broker went away"}});
         *failed = true;
@@ -427,6 +489,12 @@ void RedisRelay::adopt_remote(const std::string& name, std::string_view definiti
       }
       if (--*left == 0) finish();
     });
+    // Not sent (the broker went away meanwhile): the adoption fails now instead of never ending;
+    // the next discovery after the broker is back tries again.
+    if (!sent) {
+      *failed = true;
+      if (--*left == 0) finish();
+    }
   }
 }
 

@@ -69,6 +69,9 @@ class RedisRelay final : public Relay {
   void on_call(std::string_view payload);
   void apply_in_order(Session& session, SessionSync& sync, Event event);
   void resync(const std::string& session);
+  void retry_resync(const std::string& session);
+  void wait_for_resync(SessionSync& sync, const std::string& session, Event e);
+  void heartbeat();
   void share(const Session& session);
   void share_asset(const protocol::AssetAnnounce& asset);
   void discover();
@@ -78,7 +81,13 @@ class RedisRelay final : public Relay {
   BrokerAddress address_;
   asio::io_context& io_;
   RedisConnection commands_, events_;
-  asio::steady_timer retry_timer_;
+  asio::steady_timer retry_timer_, heartbeat_timer_;
+  using Clock = std::chrono::steady_clock;
+  static constexpr size_t kMaxWaiting = 10000;                               // changes waiting for a resync, per session
+  static constexpr std::chrono::milliseconds kHeartbeatDeadline{3000};
+  bool ping_outstanding_ = false;
+  uint64_t ping_round_ = 0;
+  Clock::time_point ping_sent_;
   std::chrono::milliseconds backoff_{100};
   int connections_up_ = 0, subscriptions_ = 0;
   bool ready_ = false, retry_scheduled_ = false, stopped_ = false, ever_ready_ = false;

@@ -26,6 +26,7 @@ struct RelayStatus {
   uint64_t reconnects = 0;
   size_t outbox = 0;       // changes made while the broker was away, waiting to go out
   double lag_seconds = 0;  // last time from publishing a change to its coming back
+  uint64_t overflows = 0;  // sessions whose changes waiting for a resync overflowed (then read whole)
 };
 
 class Relay {

@@ -66,6 +66,7 @@ std::string metrics_text(Server& server) {
     m.one("inkwire_broker_received_total", "counter", "Changes the broker delivered (from every instance).", r.received);
     m.one("inkwire_broker_resyncs_total", "counter", "Session states read whole from the broker.", r.resyncs);
     m.one("inkwire_broker_reconnects_total", "counter", "Times the broker came back after it was lost.", r.reconnects);
+    m.one("inkwire_broker_waiting_overflows_total", "counter", "Changes waiting for a resync that overflowed their bound (the state was read whole).", r.overflows);
     m.one("inkwire_broker_unsent", "gauge", "Changes made while the broker was away, waiting for it.", r.outbox);
     m.one("inkwire_broker_lag_seconds", "gauge", "From publishing this instance's latest change to its return from the broker.", r.lag_seconds);
   }

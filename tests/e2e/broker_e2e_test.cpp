@@ -51,6 +51,8 @@ class BrokerUnderTest {
     process_->kill(SIGKILL);
     process_->wait();
   }
+  // SIGSTOP / SIGCONT: a broker that stops answering with its sockets still open.
+  void signal(int sig) { process_->kill(sig); }
   // A command of redis-cli's on this broker (e.g. SCRIPT FLUSH); its exit code.
   int cli(const std::vector<std::string>& command) const {
     std::vector<std::string> args{"-p", std::to_string(port_)};
@@ -272,4 +274,31 @@ TEST_F(BrokerE2ETest, AMemberPublishingOnOneInstanceIsSeenAndHeardOnTheOther) {
 
   ada.send(protocol::Leave{});
   EXPECT_TRUE(eventually([&] { return !named(listener.roster(), "Ada"); })) << "Ada left instance one but stays in instance two's roster";
+}
+
+// A broker that stops answering without closing its sockets (SIGSTOP) is noticed by the PING
+// heartbeat within its deadline (3 s): the instance says so and serves its own members; when the
+// broker answers again, changes flow between the instances again.
+TEST_F(BrokerE2ETest, ASilentBrokerIsNoticedWithinTheHeartbeatsDeadlineAndChangesFlowWhenItAnswersAgain) {
+  const fs::path dir = output_dir("broker-silent");
+  TwoInstances instances(dir);
+  ServerUnderTest &one = instances.one, &two = instances.two;
+  ASSERT_TRUE(eventually([&] { return health_of(one) .find("ok\n") != std::string::npos; }));
+  instances.broker.signal(SIGSTOP);
+  const auto stopped = std::chrono::steady_clock::now();
+  ASSERT_TRUE(eventually([&] { return count_events(one, "broker-lost") >= 1; }, std::chrono::seconds(8))) << one.process().output();
+  const double noticed = std::chrono::duration<double>(std::chrono::steady_clock::now() - stopped).count();
+  std::printf("a silent broker noticed after %.1f s\n", noticed);
+  EXPECT_LT(noticed, 5.0) << "the heartbeat's deadline is 3 s, checked each second";
+  EXPECT_NE(log_events(one.process().output(), "broker-lost").front().value("reason", "").find("PING"), std::string::npos);
+  EXPECT_NE(health_of(one).find("broker away"), std::string::npos) << health_of(one);
+  // Its own members are still served meanwhile.
+  SessionClient local(one.address(), "local");
+  local.join("cows", "");
+  instances.broker.signal(SIGCONT);
+  ASSERT_TRUE(eventually([&] { return count_events(one, "broker-connected") >= 2; }, std::chrono::seconds(15))) << one.process().output();
+  SessionClient watcher(two.address(), "watcher");
+  watcher.join("cows", "");
+  local.send(protocol::StyleChange{.renderer = "hatching", .settings = {}});
+  EXPECT_TRUE(eventually([&] { return watcher.state().style.renderer == "hatching"; }, std::chrono::seconds(10))) << "no change flowed after the broker answered again";
 }
