@@ -15,7 +15,7 @@ std::string refusal(const SessionAuthority& session, Role role, MessageType chan
                                                                : "send expression codes";
   switch (session.kind) {
     case SessionKind::Turntable:
-      return "only the product's editor may " + what + " here; your view is your own (follow a presenter with F)";
+      return "only the product's editor may " + what + " here; your view is your own, and you may follow a presenter";
     case SessionKind::Conference:
       if (change == MessageType::ExpressionCode || change == MessageType::ObjectPose || change == MessageType::CameraPose)
         return "members publish only as themselves: faces come from each member's own camera";

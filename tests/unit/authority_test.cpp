@@ -53,7 +53,7 @@ TEST(AuthorityTest, EachKindOfSessionAllowsWhatItsTableSays) {
 
 TEST(AuthorityTest, ARefusalSaysWhoMayAndWhat) {
   EXPECT_EQ(refusal({.kind = SessionKind::Turntable, .has_editor_token = true}, Role::Visitor, MessageType::ObjectPose),
-            "only the product's editor may present or turn the object here; your view is your own (follow a presenter with F)");
+            "only the product's editor may present or turn the object here; your view is your own, and you may follow a presenter");
   EXPECT_EQ(refusal({.kind = SessionKind::Scene, .has_editor_token = true}, Role::Visitor, MessageType::StyleChange),
             "only the session's editors may change the style; you follow them");
 }

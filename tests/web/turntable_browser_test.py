@@ -77,6 +77,46 @@ try:
     check(driver.execute_script(f"const s = {element}.session; return [s.bytesSent, s.bytesReceived];") == [sent, received],
           "the drag sent and received nothing")
 
+    # Lifecycle (STYLE 17): moved in the page, the element's handlers are there once, so the same
+    # drag turns it as far as before (twice as far when a re-connection added them again).
+    def turned_by_drag():
+        start_az = driver.execute_script(f"return {element}.azimuth")
+        ActionChains(driver).move_to_element(driver.execute_script(f"return {element}.canvas")).click_and_hold() \
+            .move_by_offset(30, 0).move_by_offset(30, 0).release().perform()
+        time.sleep(1.5)  # inertia dies down
+        return driver.execute_script(f"return {element}.azimuth") - start_az
+    first_turn = turned_by_drag()
+    driver.execute_script(f"const e = {element}; const box = document.createElement('div'); document.body.prepend(box); box.append(e);")
+    time.sleep(1.0)
+    moved_turn = turned_by_drag()
+    check(first_turn != 0 and 0.6 < moved_turn / first_turn < 1.6,
+          f"moved in the page, a drag turns it once as far ({first_turn:.1f} then {moved_turn:.1f} degrees)")
+    # One animation loop however often its attributes restart it: auto-spin at 20 degrees a second.
+    driver.execute_script(f"""const e = document.createElement('inkwire-turntable');
+      e.setAttribute('session', 'duck'); e.style.cssText = 'width:{SIZE}px;height:{SIZE}px'; e.id = 'spinner';
+      document.body.append(e);
+      for (const t of ['a', 'b', 'c', 'd', '']) e.setAttribute('token', t);""")
+    end = time.time() + 60
+    while time.time() < end and not driver.execute_script("return document.getElementById('spinner').hasAttribute('loaded')"):
+        time.sleep(0.1)
+    a0 = driver.execute_script("return document.getElementById('spinner').azimuth")
+    time.sleep(2.0)
+    spun = driver.execute_script("return document.getElementById('spinner').azimuth") - a0
+    check(20 <= spun <= 60, f"after five restarts it auto-spins at one loop's speed ({spun:.1f} degrees in 2 s, about 40)")
+    driver.execute_script("document.getElementById('spinner').remove()")
+    # A visitor without the editor token who tries to present is refused, and the element says so.
+    driver.execute_script(f"""const e = document.createElement('inkwire-turntable');
+      e.setAttribute('session', 'duck'); e.setAttribute('present', ''); e.setAttribute('auto-rotate', 'off'); e.id = 'stranger';
+      e.style.cssText = 'width:{SIZE}px;height:{SIZE}px'; document.body.append(e);""")
+    end = time.time() + 30
+    message = ""
+    while time.time() < end and "Refused" not in message:
+        driver.execute_script("const e = document.getElementById('stranger'); e.azimuth = e.azimuth + 5;")
+        message = driver.execute_script("return document.getElementById('stranger').shadowRoot.querySelector('.message').textContent")
+        time.sleep(0.2)
+    check("only the product's editor may" in message, f"a visitor who presents is told why it is refused: '{message}'")
+    driver.execute_script("document.getElementById('stranger').remove()")
+
     # Presenter mode: a second element that follows shows this one's view once it presents, a
     # drag included; a C++ client that follows later joins at the presented view.
     follower = "document.querySelectorAll('inkwire-turntable')[1]"

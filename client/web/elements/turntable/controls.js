@@ -1,0 +1,69 @@
+// <inkwire-turntable>'s controls (SPEC W2): drag with mouse, touch or pen (with inertia), wheel
+// or pinch to zoom, arrow keys step one photo. Handlers are added with the connection's
+// AbortSignal and go when the element leaves the page (STYLE 17), so an element moved in the
+// page turns once as far, never twice.
+
+const kDegreesPerPixel = 0.4;  // as the C++ window turns
+
+export const ControlsMixin = (Base) => class extends Base {
+  connectedCallback() {
+    super.connectedCallback();
+    this.listen(this.connection);
+  }
+
+  // Pointer, wheel and key handlers, removed with `signal` (when the element leaves the page).
+  listen(signal) {
+    const c = this.canvas, options = { signal };
+    c.addEventListener('pointerdown', (e) => {
+      this.touched = true;
+      this.velocity = 0;
+      c.setPointerCapture(e.pointerId);
+      this.pointers.set(e.pointerId, { x: e.clientX, y: e.clientY, t: e.timeStamp });
+      c.classList.add('dragging');
+    }, options);
+    c.addEventListener('pointermove', (e) => {
+      const p = this.pointers.get(e.pointerId);
+      if (!p) return;
+      if (this.pointers.size === 2) {  // pinch: zoom by the change in the pointers' spread
+        const [a, b] = [...this.pointers.values()];
+        const before = Math.hypot(a.x - b.x, a.y - b.y);
+        p.x = e.clientX, p.y = e.clientY;
+        const after = Math.hypot(a.x - b.x, a.y - b.y);
+        if (before > 0) this.setZoom(this.zoom * (after / before));
+        return;
+      }
+      const dx = e.clientX - p.x, dt = Math.max((e.timeStamp - p.t) / 1000, 1e-3);
+      this.azimuth = this._azimuth - dx * kDegreesPerPixel;
+      // Inertia follows the last moments of the drag, at most a turn a second.
+      this.velocity = Math.min(Math.max(0.7 * this.velocity + 0.3 * ((-dx * kDegreesPerPixel) / dt), -360), 360);
+      Object.assign(p, { x: e.clientX, y: e.clientY, t: e.timeStamp });
+    }, options);
+    const up = (e) => {
+      this.pointers.delete(e.pointerId);
+      if (this.pointers.size === 0) c.classList.remove('dragging');
+    };
+    c.addEventListener('pointerup', up, options);
+    c.addEventListener('pointercancel', up, options);
+    c.addEventListener('wheel', (e) => {
+      e.preventDefault();
+      this.touched = true;
+      this.setZoom(this.zoom * Math.pow(0.9, Math.sign(e.deltaY)));
+    }, { passive: false, signal });
+    this.addEventListener('keydown', (e) => {
+      if (e.key !== 'ArrowLeft' && e.key !== 'ArrowRight' || !this.snapshot) return;
+      e.preventDefault();
+      this.touched = true;
+      this.velocity = 0;
+      const dirs = this.snapshot.product.directions, d = this.direction();
+      let nearest = 0;
+      dirs.forEach((s, i) => { if (s[0] * d[0] + s[2] * d[2] > dirs[nearest][0] * d[0] + dirs[nearest][2] * d[2]) nearest = i; });
+      const next = dirs[(nearest + (e.key === 'ArrowRight' ? 1 : -1) + dirs.length) % dirs.length];
+      this.azimuth = (Math.atan2(next[0], next[2]) * 180) / Math.PI;
+    }, options);
+  }
+
+  setZoom(zoom) {
+    this.zoom = Math.min(Math.max(zoom, 0.5), 4);
+    this.redraw();
+  }
+};

@@ -1,0 +1,30 @@
+// <inkwire-turntable>'s presenter mode (SPEC T13), off unless asked for: with the attribute
+// `present` the view goes to the session as object poses whenever it changes (only the
+// product's editor may: a refused presenter stops), with `follow` the newest view a presenter
+// sent replaces this one (a drag turns it until the next).
+import { poseOfView, viewOfPose } from '../../common/turntable_pose.js';
+
+export const PresenterMixin = (Base) => class extends Base {
+  // Following: the presenter's view replaces this one.
+  follow(pose) {
+    if (!this.hasAttribute('follow')) return;
+    const { azimuth, elevation, zoom } = viewOfPose(pose);
+    this.touched = true;  // no auto-spin of its own
+    this.velocity = 0;
+    this.elevation = elevation;
+    this.zoom = zoom;
+    this.azimuth = azimuth;
+  }
+
+  // Presenting: the view goes to the session whenever it changes, at most once a frame; a
+  // presenter the server refused (only the product's editor presents) stops sending.
+  present() {
+    if (!this.hasAttribute('present') || this.presentRefused || !this.session || !this.snapshot) return;
+    const view = [this._azimuth, this.elevation, this.zoom];
+    if (this.presented && view.every((v, i) => v === this.presented[i])) return;
+    this.presented = view;
+    this.poseSequence = (this.poseSequence ?? 0) + 1;
+    this.session.send(poseOfView(...view, this.poseSequence));
+  }
+
+};
