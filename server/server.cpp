@@ -1,5 +1,7 @@
 #include "server/server.hpp"
 
+#include <malloc.h>
+
 #include <asio/experimental/as_tuple.hpp>
 
 #include "common/camera.hpp"
@@ -232,6 +234,13 @@ asio::awaitable<void> Server::persist_loop() {
     co_await persist_timer_.async_wait(no_throw);
     for (auto& [name, session] : sessions_)
       if (session->dirty) persist(*session);
+    // After a burst of connections (an attack, a crowd leaving) glibc keeps the freed memory in
+    // its arenas: hand it back, so the server's size follows what it serves (SPEC D6).
+    if (connections_.size() < peak_connections_ / 2) {
+      malloc_trim(0);
+      peak_connections_ = connections_.size();
+    }
+    peak_connections_ = std::max(peak_connections_, connections_.size());
   }
 }
 

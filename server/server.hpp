@@ -119,6 +119,7 @@ class Server {
   std::unique_ptr<Relay> relay_;
   ServerCounters counters_;
   uint64_t next_id_ = 1;
+  size_t peak_connections_ = 0;  // since memory was last handed back (persist_loop)
   bool stopping_ = false;
 };
 

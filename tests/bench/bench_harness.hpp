@@ -87,5 +87,6 @@ std::vector<Result> run_turntable_suite(Harness& harness);
 std::vector<Result> run_web_suite(Harness& harness);
 std::vector<Result> run_landmarks_suite(Harness& harness);
 std::vector<Result> run_call_suite(Harness& harness);
+std::vector<Result> run_abuse_suite(Harness& harness);
 
 }  // namespace inkwire::bench
