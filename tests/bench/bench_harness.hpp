@@ -88,5 +88,6 @@ std::vector<Result> run_web_suite(Harness& harness);
 std::vector<Result> run_landmarks_suite(Harness& harness);
 std::vector<Result> run_call_suite(Harness& harness);
 std::vector<Result> run_abuse_suite(Harness& harness);
+std::vector<Result> run_crash_suite(Harness& harness);
 
 }  // namespace inkwire::bench
