@@ -266,19 +266,11 @@ void Call::analysed(const CropAnalysed& result) {
   }
 }
 
-const Bytes* Call::asset(const protocol::Hash& hash, protocol::AssetAnnounce* announce) const {
-  const auto found = [&](const protocol::CallMember& entry, const std::map<protocol::Hash, Bytes>& bytes) -> const Bytes* {
-    const auto it = bytes.find(hash);
-    if (it == bytes.end()) return nullptr;
-    if (announce)
-      for (const auto& a : entry.assets)
-        if (a.hash == hash) *announce = a;
-    return &it->second;
-  };
+const Bytes* Call::asset(const protocol::Hash& hash) const {
   for (const auto& [id, m] : members_)
-    if (const Bytes* b = found(m->entry, m->asset_bytes)) return b;
+    if (const auto it = m->asset_bytes.find(hash); it != m->asset_bytes.end()) return &it->second;
   for (const auto& [key, r] : remotes_)
-    if (const Bytes* b = found(r.entry, r.asset_bytes)) return b;
+    if (const auto it = r.asset_bytes.find(hash); it != r.asset_bytes.end()) return &it->second;
   return nullptr;
 }
 

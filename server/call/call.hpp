@@ -71,8 +71,8 @@ class Call {
   void analysed(const PhotoAnalysed& result);
   void analysed(const CropAnalysed& result);
 
-  // A member's photo or landmarks by hash, with its bytes: null unless a member holds it.
-  const protocol::Bytes* asset(const protocol::Hash& hash, protocol::AssetAnnounce* announce = nullptr) const;
+  // A member's photo or landmarks by hash: its bytes, or null unless a member holds it.
+  const protocol::Bytes* asset(const protocol::Hash& hash) const;
   size_t size() const { return members_.size(); }
 
  private:
