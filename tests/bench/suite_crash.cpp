@@ -3,7 +3,9 @@
 // the server; the other half hit a running server while a member changes its session's style and
 // camera many times a second. After every kill the server starts again on the same data; at the
 // end every product add-product said it stored must be served whole (each asset fetched and
-// checked against its hash by the client), and no asset on disk may differ from its hash.
+// checked against its hash by the client), and no asset on disk may differ from its hash. Then
+// twenty kills of a second instance while it takes a session and its mesh (2.4 MB) from another
+// instance through Redis: after each it starts again and must serve the session whole.
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -141,10 +143,68 @@ std::vector<Result> run_crash_suite(Harness& harness) {
     if (e.path().filename().string().find('.') != std::string::npos) continue;  // a temporary name, never served
     if (to_hex(content_hash_of_file(e.path())) != e.path().filename().string()) ++partial;
   }
-  Result r{.suite = "crash", .renderer = "crash", .variant = "kills=" + std::to_string(kills), .object = "-"};
+  // Kills while an instance takes a session's assets from another through the broker.
+  int upload_kills = 0, uploads_served = 0, uploads_lost = 0, killed_mid_upload = 0;
+  {
+    BrokerProcess broker(BrokerProcess::Kind::Redis);
+    const std::string url = "redis://127.0.0.1:" + std::to_string(broker.port());
+    std::ofstream(dir / "one.json") << R"({ "name": "one", "broker": ")" << url
+                                    << R"(", "sessions": [ { "name": "bunny", "kind": "scene", "assets": [ { "path": "/usr/share/glmark2/models/bunny.obj" } ] } ] })";
+    std::ofstream(dir / "two.json") << R"({ "name": "two", "broker": ")" << url << R"(", "sessions": [] })";
+    const int one_port = free_loopback_port();
+    const pid_t one = spawn({server_bin, "--listen", "127.0.0.1:" + std::to_string(one_port), "--data", (dir / "data-one").string(), "--config",
+                             (dir / "one.json").string(), "--quiet"}, dir / "one.log");
+    for (int t = 0; t < 400 && !answers(one_port); ++t) std::this_thread::sleep_for(std::chrono::milliseconds(25));
+    std::this_thread::sleep_for(std::chrono::seconds(2));  // one has shared the session and its mesh
+    for (int i = 0; i < 20; ++i) {
+      // Each time from nothing, so every kill can fall in the middle of taking the mesh; the
+      // restart then finds whatever the kill left.
+      fs::remove_all(dir / "data-two");
+      const int port = free_loopback_port();
+      const std::vector<std::string> two = {server_bin, "--listen", "127.0.0.1:" + std::to_string(port), "--data", (dir / "data-two").string(),
+                                            "--config", (dir / "two.json").string()};
+      const fs::path victim_log = dir / ("two-" + std::to_string(i) + ".log");
+      const pid_t victim = spawn(two, victim_log);
+      // The mesh comes within about 20 ms of the instance's listening: the kill falls in that window.
+      for (int t = 0; t < 500 && text_of(victim_log).find("\"listening\"") == std::string::npos; ++t) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+      std::this_thread::sleep_for(std::chrono::microseconds(std::uniform_int_distribution<int>(0, 30000)(rng)));
+      kill(victim, SIGKILL);
+      if (text_of(victim_log).find("\"session-added\"") == std::string::npos) ++killed_mid_upload;
+      waitpid(victim, nullptr, 0);
+      ++upload_kills;
+      // Started again: it takes the session (again, or from what it stored) and serves it whole.
+      const pid_t again = spawn(two, dir / ("two-" + std::to_string(i) + "-again.log"));
+      for (int t = 0; t < 400 && !answers(port); ++t) std::this_thread::sleep_for(std::chrono::milliseconds(25));
+      bool served = false;
+      for (int t = 0; t < 40 && !served; ++t) {
+        try {
+          SessionClient visitor("127.0.0.1:" + std::to_string(port), "visitor");
+          const protocol::Snapshot state = visitor.join("bunny", "");
+          AssetCache cache(dir / ("cache-two-" + std::to_string(i)));
+          visitor.fetch_assets(state, cache);  // checked against its hash
+          served = true;
+        } catch (const Error&) {
+          std::this_thread::sleep_for(std::chrono::milliseconds(250));  // not taken yet
+        }
+      }
+      (served ? uploads_served : uploads_lost) += 1;
+      kill(again, SIGKILL);
+      waitpid(again, nullptr, 0);
+    }
+    kill(one, SIGTERM);
+    waitpid(one, nullptr, 0);
+    for (const auto& e : fs::directory_iterator(dir / "data-two" / "assets")) {  // the last run's
+      if (e.path().filename().string().find('.') != std::string::npos) continue;
+      if (to_hex(content_hash_of_file(e.path())) != e.path().filename().string()) ++partial;
+    }
+  }
+
+  Result r{.suite = "crash", .renderer = "crash", .variant = "kills=" + std::to_string(kills + upload_kills), .object = "-"};
   r.counters = {{"kills", double(kills)}, {"add_product_kills", double(add_kills)}, {"session_change_kills", double(change_kills)},
                 {"products_stored", double(stored.size())}, {"products_served", double(served)}, {"products_lost", double(lost)},
-                {"restarts_failed", double(restarts_failed)}, {"assets_on_disk", double(assets)}, {"partial_assets_named", double(partial)}};
+                {"restarts_failed", double(restarts_failed)}, {"assets_on_disk", double(assets)}, {"partial_assets_named", double(partial)},
+                {"asset_upload_kills", double(upload_kills)}, {"uploaded_sessions_served", double(uploads_served)},
+                {"uploaded_sessions_lost", double(uploads_lost)}, {"killed_before_the_session_was_taken", double(killed_mid_upload)}};
   return {r};
 }
 
