@@ -35,10 +35,17 @@ struct Publisher::Microphone {
       return;
     }
     if (Pa_Initialize() != paNoError) throw Error("no microphone: PortAudio cannot start");
-    initialised_ = true;
-    if (Pa_GetDefaultInputDevice() == paNoDevice) throw Error("no microphone: this machine has no sound input device (give a WAV file instead)");
+    // A constructor that throws runs no destructor: PortAudio is let go here on every refusal.
+    const auto refuse = [&](const std::string& reason) {
+      if (stream_) Pa_CloseStream(stream_);
+      Pa_Terminate();
+      throw Error("no microphone: " + reason);
+    };
+    if (Pa_GetDefaultInputDevice() == paNoDevice) refuse("this machine has no sound input device (give a WAV file instead)");
     const PaError e = Pa_OpenDefaultStream(&stream_, 1, 0, paFloat32, kCallRate, paFramesPerBufferUnspecified, nullptr, nullptr);
-    if (e != paNoError || Pa_StartStream(stream_) != paNoError) throw Error(std::string("no microphone: ") + Pa_GetErrorText(e));
+    if (e != paNoError) refuse(Pa_GetErrorText(e));
+    if (const PaError started = Pa_StartStream(stream_); started != paNoError) refuse(Pa_GetErrorText(started));
+    initialised_ = true;
   }
   ~Microphone() {
     if (stream_) Pa_CloseStream(stream_);
