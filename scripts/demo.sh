@@ -216,7 +216,7 @@ say "the product and conference pages in headless Chromium (web/)"
 # A call: two members publish their own face (a camera clip made from a real photo each) and
 # voice (sentences spoken by espeak-ng) from native clients; a third only listens and records the
 # grid with its sound. Only face crops go up; expression codes and Opus voice come down.
-say "recording a call between two members and a listener (demo-output/call/call.mp4, with sound)"
+say "recording a call between two members and a listener ($out/call/call.mp4, with sound)"
 mkdir -p "$out/call"
 "$bin/inkwire-conference" --speaker /usr/share/doc/libdlib19.1/examples/faces/2009_004587.jpg \
   --script neutral:1.5,smile@220:2,neutral:1,surprise:1.5,smile:2,neutral:2 --fps 15 \
