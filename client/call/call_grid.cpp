@@ -35,6 +35,7 @@ void CallGrid::update(const protocol::Roster& roster, const std::map<uint16_t, s
 }
 
 void CallGrid::set_style(const std::string& renderer, const std::vector<std::string>& settings) {
+  if (renderer == renderer_ && settings == settings_) return;  // a painted face keeps its strokes
   renderer_ = renderer, settings_ = settings;
   for (auto& [member, view] : views_) view->set_style(renderer, settings);
 }

@@ -122,7 +122,7 @@ void SessionView::update_style(const protocol::Snapshot& state, bool new_content
   try {
     style_params(state.style.renderer, state.style.settings);
     if (face_) face_->set_style(state.style.renderer, state.style.settings);
-    if (!call_.empty()) call_.set_style(state.style.renderer, state.style.settings);
+    call_.set_style(state.style.renderer, state.style.settings);  // kept for the call's faces to come too
     if (shows_object) {
       auto renderer = make_renderer(state.style.renderer, state.style.settings);
       if (object_) renderer->prepare(*object_);
@@ -148,7 +148,6 @@ void SessionView::update_style(const protocol::Snapshot& state, bool new_content
 
 void SessionView::update_call(const protocol::Roster& roster, const std::map<uint16_t, std::vector<std::filesystem::path>>& files) {
   call_.update(roster, files);
-  call_.set_style(state_.style.renderer, state_.style.settings);
   if (!call_.empty() && !face_) content_error_.clear();
 }
 
