@@ -131,7 +131,7 @@ void Server::create_sessions() {
     });
   });
   for (auto& [name, session] : sessions_)
-    if (session->state().kind == protocol::SessionKind::Conference) session->start_call(config_.call, *call_analyst_, counters_.call_drops, counters_.call, *relay_, config_.name);
+    if (session->state().kind == protocol::SessionKind::Conference) session->start_call(config_.call, *call_analyst_, counters_.call, *relay_, config_.name);
 }
 
 // A product is checked (every file against its hash) and its tween data readied once.
@@ -158,7 +158,7 @@ std::shared_ptr<Session> Server::add_session(StoredSession stored) {
   }
   auto session = std::make_shared<Session>(std::move(stored));
   ready_product(*session);
-  if (session->state().kind == protocol::SessionKind::Conference) session->start_call(config_.call, *call_analyst_, counters_.call_drops, counters_.call, *relay_, config_.name);
+  if (session->state().kind == protocol::SessionKind::Conference) session->start_call(config_.call, *call_analyst_, counters_.call, *relay_, config_.name);
   sessions_[name] = session;
   log_info("session-added", {{"session", name}, {"kind", protocol::to_string(session->state().kind)}, {"assets", session->state().assets.size()}});
   return session;

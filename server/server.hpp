@@ -32,8 +32,7 @@ struct ServerCounters {
   uint64_t connections_refused = 0;  // past a connection cap
   uint64_t joins_refused = 0;        // wrong token
   uint64_t changes_refused = 0;      // changes a member had no authority to make (authority.hpp)
-  std::map<std::string, uint64_t> call_drops;  // call messages dropped, by reason (call/call.hpp)
-  Call::Counters call;                         // face crops analysed, the time it took, voice relayed
+  Call::Counters call;               // calls' crops analysed and their time, voice relayed, drops by reason
 };
 
 class Server {

@@ -53,8 +53,8 @@ class Session {
 
   // A conference session's call (its members' own faces and voices); null in other sessions.
   Call* call() { return call_.get(); }
-  void start_call(CallOptions options, CallAnalyst& analyst, Call::Drops& drops, Call::Counters& counters, Relay& relay, const std::string& origin) {
-    call_ = std::make_unique<Call>(name(), options, analyst, drops, counters, relay, origin);
+  void start_call(CallOptions options, CallAnalyst& analyst, Call::Counters& counters, Relay& relay, const std::string& origin) {
+    call_ = std::make_unique<Call>(name(), options, analyst, counters, relay, origin);
   }
 
   // Set by apply(); cleared by whoever persists the state.

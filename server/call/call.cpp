@@ -68,8 +68,8 @@ struct Call::Member {
   uint32_t latest_voice_time = 0;
 };
 
-Call::Call(std::string session, CallOptions options, CallAnalyst& analyst, Drops& drops, Counters& counters, Relay& relay, std::string origin)
-    : session_(std::move(session)), options_(options), analyst_(analyst), drops_(drops), counters_(counters), relay_(relay), origin_(std::move(origin)) {}
+Call::Call(std::string session, CallOptions options, CallAnalyst& analyst, Counters& counters, Relay& relay, std::string origin)
+    : session_(std::move(session)), options_(options), analyst_(analyst), counters_(counters), relay_(relay), origin_(std::move(origin)) {}
 
 Call::~Call() {
   for (const auto& [id, m] : members_) analyst_.forget({session_, m->entry.member});
@@ -118,7 +118,7 @@ void Call::leave(uint64_t connection) {
 }
 
 bool Call::dropped(Member& m, const std::string& reason) {
-  ++drops_[reason];
+  ++counters_.drops[reason];
   const auto now = Clock::now();
   m.drops.push_back(now);
   while (!m.drops.empty() && now - m.drops.front() > std::chrono::seconds(1)) m.drops.pop_front();
@@ -145,18 +145,22 @@ void Call::photo(uint64_t connection, Bytes jpeg) {
   if (Member* m = find(connection)) analyst_.photo({session_, m->entry.member}, std::move(jpeg));
 }
 
+bool Call::admitted(Member& m, bool voice, size_t size) {
+  const char* what = voice ? "voice" : "crop";
+  if (!(voice ? m.voices : m.crops).take(voice ? options_.voice_per_second : options_.crops_per_second, Clock::now())) {
+    dropped(m, std::string(what) + "-too-frequent");
+    return false;
+  }
+  if (size > (voice ? options_.max_voice_bytes : options_.max_crop_bytes)) {
+    dropped(m, std::string(what) + "-too-large");
+    return false;
+  }
+  return true;
+}
+
 void Call::crop(uint64_t connection, protocol::FaceCrop crop) {
   Member* m = find(connection);
-  if (!m) return;
-  const auto now = Clock::now();
-  if (!m->crops.take(options_.crops_per_second, now)) {
-    dropped(*m, "crop-too-frequent");
-    return;
-  }
-  if (crop.jpeg.size() > options_.max_crop_bytes) {
-    dropped(*m, "crop-too-large");
-    return;
-  }
+  if (!m || !admitted(*m, false, crop.jpeg.size())) return;
   if (crop.jpeg.size() < 4 || crop.jpeg[0] != 0xff || crop.jpeg[1] != 0xd8 || crop.jpeg[2] != 0xff) {
     dropped(*m, "crop-not-jpeg");
     return;
@@ -166,18 +170,9 @@ void Call::crop(uint64_t connection, protocol::FaceCrop crop) {
 
 void Call::voice(uint64_t connection, protocol::VoiceFrame frame) {
   Member* m = find(connection);
-  if (!m) return;
+  if (!m || !admitted(*m, true, frame.opus.size())) return;
   const auto now = Clock::now();
-  if (!m->voices.take(options_.voice_per_second, now)) {
-    dropped(*m, "voice-too-frequent");
-    return;
-  }
-  if (frame.opus.size() > options_.max_voice_bytes) {
-    dropped(*m, "voice-too-large");
-    return;
-  }
-  std::string reason;
-  const auto reading = m->voice.read(frame.opus, &reason);
+  const auto reading = m->voice.read(frame.opus);
   if (!reading) {
     dropped(*m, "voice-not-opus");
     return;

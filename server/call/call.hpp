@@ -38,18 +38,18 @@ struct CallOptions {
 class Call {
  public:
   using Clock = std::chrono::steady_clock;
-  // Drops by reason, for /metrics (shared by every call of the server).
-  using Drops = std::map<std::string, uint64_t>;
-  // For /metrics and the benchmark: crops analysed and the analyst's time on them (server CPU
-  // per publisher), voice packets relayed (one per receiver).
+  // For /metrics and the benchmark, shared by every call of the server: crops analysed and the
+  // analyst's time on them (server CPU per publisher), voice packets relayed (one per
+  // receiver), messages dropped by reason.
   struct Counters {
     uint64_t crops = 0;
     double seconds = 0;
     uint64_t voice_relayed = 0;
+    std::map<std::string, uint64_t> drops;
   };
 
   // `origin`: this instance's name, on what it shares through `relay`.
-  Call(std::string session, CallOptions options, CallAnalyst& analyst, Drops& drops, Counters& counters, Relay& relay, std::string origin);
+  Call(std::string session, CallOptions options, CallAnalyst& analyst, Counters& counters, Relay& relay, std::string origin);
   ~Call();
 
   void join(const std::shared_ptr<Connection>& connection, const std::string& name);
@@ -82,6 +82,8 @@ class Call {
   // Counts a drop; true when the member has dropped so much in the last second that it floods
   // (it is then closed with the reason).
   bool dropped(Member& m, const std::string& reason);
+  // Within the member's rate and size for a crop or a voice packet; otherwise dropped and counted.
+  bool admitted(Member& m, bool voice, size_t size);
   void send_roster();
   size_t send_to_others(const Member& from, const protocol::Message& message);  // how many it went to
   void send_to_all(const protocol::Message& message);
@@ -90,7 +92,6 @@ class Call {
   std::string session_;
   CallOptions options_;
   CallAnalyst& analyst_;
-  Drops& drops_;
   Counters& counters_;
   std::map<uint64_t, std::unique_ptr<Member>> members_;  // by connection id
   uint16_t next_number_ = 1;
