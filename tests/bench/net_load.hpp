@@ -44,6 +44,8 @@ double percentile(std::vector<double> v, double p);
 double thread_cpu_seconds();
 double process_cpu_seconds(pid_t pid);  // user + system time of another process
 int free_loopback_port();
+// Whether something accepts connections on 127.0.0.1:`port` now (a server process started yet).
+bool port_answers(int port);
 
 // A broker started for one run: redis-server (nothing saved) or nats-server on 127.0.0.1.
 class BrokerProcess {

@@ -174,14 +174,7 @@ std::vector<Result> run_abuse_suite(Harness& harness) {
     _exit(127);
   }
   // Serving once the native port answers.
-  for (int i = 0; i < 200; ++i) {
-    asio::io_context io;
-    tcp::socket s(io);
-    std::error_code ec;
-    s.connect({asio::ip::make_address("127.0.0.1"), uint16_t(port)}, ec);
-    if (!ec) break;
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  }
+  for (int i = 0; i < 200 && !port_answers(port); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
   const double rss_before = rss_mb(server), fds_before = open_fds(server);
 

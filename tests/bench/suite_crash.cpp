@@ -44,14 +44,6 @@ pid_t spawn(const std::vector<std::string>& args, const fs::path& log) {
   return pid;
 }
 
-bool answers(int port) {
-  asio::io_context io;
-  asio::ip::tcp::socket s(io);
-  std::error_code ec;
-  s.connect({asio::ip::make_address("127.0.0.1"), uint16_t(port)}, ec);
-  return !ec;
-}
-
 std::string text_of(const fs::path& file) {
   std::ifstream in(file);
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -88,8 +80,8 @@ std::vector<Result> run_crash_suite(Harness& harness) {
       // A running server, a member changing the session as fast as it can, killed.
       const int port = free_loopback_port();
       const pid_t pid = spawn({server_bin, "--listen", "127.0.0.1:" + std::to_string(port), "--data", data.string(), "--config", (dir / "server.json").string(), "--quiet"}, log);
-      for (int t = 0; t < 200 && !answers(port); ++t) std::this_thread::sleep_for(std::chrono::milliseconds(25));
-      if (!answers(port)) {
+      for (int t = 0; t < 200 && !port_answers(port); ++t) std::this_thread::sleep_for(std::chrono::milliseconds(25));
+      if (!port_answers(port)) {
         ++restarts_failed;  // the data a kill left behind does not start
       } else {
         try {
@@ -116,9 +108,9 @@ std::vector<Result> run_crash_suite(Harness& harness) {
   const int port = free_loopback_port();
   const pid_t pid = spawn({server_bin, "--listen", "127.0.0.1:" + std::to_string(port), "--data", data.string(), "--config", (dir / "server.json").string(), "--quiet"},
                           dir / "after.log");
-  for (int t = 0; t < 400 && !answers(port); ++t) std::this_thread::sleep_for(std::chrono::milliseconds(25));
+  for (int t = 0; t < 400 && !port_answers(port); ++t) std::this_thread::sleep_for(std::chrono::milliseconds(25));
   int served = 0, lost = 0;
-  if (answers(port)) {
+  if (port_answers(port)) {
     AssetCache cache(dir / "cache");
     for (const std::string& name : stored) {
       try {
@@ -154,7 +146,7 @@ std::vector<Result> run_crash_suite(Harness& harness) {
     const int one_port = free_loopback_port();
     const pid_t one = spawn({server_bin, "--listen", "127.0.0.1:" + std::to_string(one_port), "--data", (dir / "data-one").string(), "--config",
                              (dir / "one.json").string(), "--quiet"}, dir / "one.log");
-    for (int t = 0; t < 400 && !answers(one_port); ++t) std::this_thread::sleep_for(std::chrono::milliseconds(25));
+    for (int t = 0; t < 400 && !port_answers(one_port); ++t) std::this_thread::sleep_for(std::chrono::milliseconds(25));
     std::this_thread::sleep_for(std::chrono::seconds(2));  // one has shared the session and its mesh
     for (int i = 0; i < 20; ++i) {
       // Each time from nothing, so every kill can fall in the middle of taking the mesh; the
@@ -174,7 +166,7 @@ std::vector<Result> run_crash_suite(Harness& harness) {
       ++upload_kills;
       // Started again: it takes the session (again, or from what it stored) and serves it whole.
       const pid_t again = spawn(two, dir / ("two-" + std::to_string(i) + "-again.log"));
-      for (int t = 0; t < 400 && !answers(port); ++t) std::this_thread::sleep_for(std::chrono::milliseconds(25));
+      for (int t = 0; t < 400 && !port_answers(port); ++t) std::this_thread::sleep_for(std::chrono::milliseconds(25));
       bool served = false;
       for (int t = 0; t < 40 && !served; ++t) {
         try {

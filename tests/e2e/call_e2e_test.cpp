@@ -23,7 +23,6 @@ const fs::path kYale = fs::path(INKWIRE_SOURCE_DIR) / ".." / "shared" / "data" /
 const fs::path kDlibPhoto = "/usr/share/doc/libdlib19.1/examples/faces/Tom_Cruise_avp_2014_4.jpg";
 const fs::path kFaceModel = "/usr/share/dlib/shape_predictor_68_face_landmarks.dat";
 
-protocol::Bytes jpeg_of(const Image& image, const fs::path&) { return encode_image(image, "jpg", 90); }
 
 }  // namespace
 
@@ -40,7 +39,7 @@ TEST(CallE2ETest, MembersAreSeenAndHeardAsThemselvesAndBadInputIsDroppedAndCount
   for (SessionClient* c : {&ada, &grace, &listener}) c->join("call", "");
   ada.send(protocol::Publish{.camera = true, .microphone = true});
   grace.send(protocol::Publish{.camera = false, .microphone = true});
-  ada.send(protocol::NeutralPhoto{.jpeg = jpeg_of(neutral, dir / "neutral.jpg")});
+  ada.send(protocol::NeutralPhoto{.jpeg = encode_image(neutral, "jpg", 90)});
 
   // The roster lists all three, Ada's photo and landmarks among her assets, fetched by hash.
   ASSERT_TRUE(eventually([&] {
@@ -66,9 +65,9 @@ TEST(CallE2ETest, MembersAreSeenAndHeardAsThemselvesAndBadInputIsDroppedAndCount
                             .x = 0, .y = 0, .width = uint16_t(shown.width), .height = uint16_t(shown.height), .jpeg = {}};
     if (const auto region = ada.face_region(); region && region->found) {
       crop.x = region->x, crop.y = region->y, crop.width = region->width, crop.height = region->height;
-      crop.jpeg = jpeg_of(resized(cropped(shown, crop.x, crop.y, crop.width, crop.height), 160, 160), dir / "crop.jpg");
+      crop.jpeg = encode_image(resized(cropped(shown, crop.x, crop.y, crop.width, crop.height), 160, 160), "jpg", 90);
     } else {
-      crop.jpeg = jpeg_of(shown, dir / "crop.jpg");
+      crop.jpeg = encode_image(shown, "jpg", 90);
     }
     ada.send(crop);
     for (int k = 0; k < 5 && sent_voice < int(voice.size()); ++k, ++sent_voice) {
