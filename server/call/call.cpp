@@ -161,7 +161,7 @@ bool Call::admitted(Member& m, bool voice, size_t size) {
 void Call::crop(uint64_t connection, protocol::FaceCrop crop) {
   Member* m = find(connection);
   if (!m || !admitted(*m, false, crop.jpeg.size())) return;
-  if (crop.jpeg.size() < 4 || crop.jpeg[0] != 0xff || crop.jpeg[1] != 0xd8 || crop.jpeg[2] != 0xff) {
+  if (!looks_like_jpeg(crop.jpeg)) {
     dropped(*m, "crop-not-jpeg");
     return;
   }

@@ -24,8 +24,6 @@ constexpr float kRegionMargin = 1.8f;  // the next crop: the face's box grown th
 constexpr float kPoseStep = 8;         // degrees a head must turn before it is sent again
 constexpr int kDetectEvery = 2;        // crops: the detector checks the face is still there; between, it is tracked
 
-bool looks_like_jpeg(const protocol::Bytes& b) { return b.size() >= 4 && b[0] == 0xff && b[1] == 0xd8 && b[2] == 0xff; }
-
 Image decode_jpeg(const protocol::Bytes& jpeg, const char* what) {
   if (!looks_like_jpeg(jpeg)) throw Error(std::string(what) + " is not a JPEG");
   Image image = load_image_from_memory(jpeg, what);
@@ -37,6 +35,8 @@ Image decode_jpeg(const protocol::Bytes& jpeg, const char* what) {
 int8_t degrees_byte(float degrees) { return int8_t(std::clamp(std::lround(degrees), -127L, 127L)); }
 
 }  // namespace
+
+bool looks_like_jpeg(const protocol::Bytes& b) { return b.size() >= 4 && b[0] == 0xff && b[1] == 0xd8 && b[2] == 0xff; }
 
 struct CallAnalyst::Models {
   FaceAnalyzer analyzer;

@@ -20,6 +20,9 @@
 
 namespace inkwire::server {
 
+// JPEG files start with SOI and a marker: anything else is refused before it is decoded.
+bool looks_like_jpeg(const protocol::Bytes& bytes);
+
 // Which member of which session a job is for.
 struct MemberKey {
   std::string session;

@@ -5,7 +5,6 @@
 // ../shared/data/yalefaces when they are there, else libdlib's example photo with no change of
 // expression (then the expression check is skipped with a message).
 #include <cmath>
-#include <fstream>
 #include <thread>
 
 #include <gtest/gtest.h>
