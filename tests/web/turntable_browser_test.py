@@ -89,21 +89,28 @@ try:
     driver.execute_script(f"const e = {element}; const box = document.createElement('div'); document.body.prepend(box); box.append(e);")
     time.sleep(1.0)
     moved_turn = turned_by_drag()
-    check(first_turn != 0 and 0.6 < moved_turn / first_turn < 1.6,
+    check(first_turn != 0 and 0.5 < moved_turn / first_turn < 1.7,
           f"moved in the page, a drag turns it once as far ({first_turn:.1f} then {moved_turn:.1f} degrees)")
-    # One animation loop however often its attributes restart it: auto-spin at 20 degrees a second.
-    driver.execute_script(f"""const e = document.createElement('inkwire-turntable');
-      e.setAttribute('session', 'duck'); e.style.cssText = 'width:{SIZE}px;height:{SIZE}px'; e.id = 'spinner';
-      document.body.append(e);
-      for (const t of ['a', 'b', 'c', 'd', '']) e.setAttribute('token', t);""")
+    # One animation loop however often its attributes restart it: an element restarted five times
+    # auto-spins as fast as one never restarted, side by side in the same frames (a loop per
+    # restart would make it six times as fast, whatever the machine's load).
+    driver.execute_script(f"""for (const id of ['spinner', 'reference']) {{
+        const e = document.createElement('inkwire-turntable');
+        e.setAttribute('session', 'duck'); e.style.cssText = 'width:{SIZE}px;height:{SIZE}px'; e.id = id;
+        document.body.append(e);
+      }}
+      for (const t of ['a', 'b', 'c', 'd', '']) document.getElementById('spinner').setAttribute('token', t);""")
+    loaded = "return ['spinner', 'reference'].every((id) => document.getElementById(id).hasAttribute('loaded'))"
     end = time.time() + 60
-    while time.time() < end and not driver.execute_script("return document.getElementById('spinner').hasAttribute('loaded')"):
+    while time.time() < end and not driver.execute_script(loaded):
         time.sleep(0.1)
-    a0 = driver.execute_script("return document.getElementById('spinner').azimuth")
+    azimuths = "return ['spinner', 'reference'].map((id) => document.getElementById(id).azimuth)"
+    s0, r0 = driver.execute_script(azimuths)
     time.sleep(2.0)
-    spun = driver.execute_script("return document.getElementById('spinner').azimuth") - a0
-    check(20 <= spun <= 60, f"after five restarts it auto-spins at one loop's speed ({spun:.1f} degrees in 2 s, about 40)")
-    driver.execute_script("document.getElementById('spinner').remove()")
+    s1, r1 = driver.execute_script(azimuths)
+    check(r1 - r0 > 0 and 0.5 < (s1 - s0) / (r1 - r0) < 1.8,
+          f"after five restarts it auto-spins as fast as an element never restarted ({s1 - s0:.1f} against {r1 - r0:.1f} degrees in 2 s)")
+    driver.execute_script("for (const id of ['spinner', 'reference']) document.getElementById(id).remove()")
     # A visitor without the editor token who tries to present is refused, and the element says so.
     driver.execute_script(f"""const e = document.createElement('inkwire-turntable');
       e.setAttribute('session', 'duck'); e.setAttribute('present', ''); e.setAttribute('auto-rotate', 'off'); e.id = 'stranger';
