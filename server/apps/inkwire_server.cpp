@@ -27,7 +27,7 @@ int add_product(const std::string& name, const server::ProductSource& source, co
   const bool terminal = isatty(fileno(stdout));
   bool made = false;
   protocol::Snapshot state = server::find_or_make_product(store, source, name, [&](int done, int total, const std::string& line) {
-    if (done == 0) {  // a note before the pairs (e.g. why there are no mattes)
+    if (done == 0) {  // a note, not a pair (why there are no mattes, how much exposure was evened)
       std::printf("note: %s\n", line.c_str());
       return;
     }

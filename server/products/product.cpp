@@ -10,8 +10,10 @@
 #include "client/render/tween/mesh_samples.hpp"
 #include "common/error.hpp"
 #include "common/tween/view_sphere.hpp"
+#include "server/products/exposure.hpp"
 #include "server/products/matte.hpp"
 #include "server/products/photo_folder.hpp"
+#include "server/tween/dense_matches.hpp"
 #include "server/tween/landmarks.hpp"
 #include "server/tween/outline.hpp"
 
@@ -52,28 +54,38 @@ Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions&
     }
   }
 
-  // Landmarks (SPEC T7) per neighbouring pair. How far a point can move between neighbours
-  // grows with the turn between them: a point half the image's width off the axis moves
-  // width/2 * sin(step).
-  LandmarkOptions landmark_options;
-  landmark_options.count = o.landmarks;
+  // Per neighbouring pair, verified dense matches (SPEC T15), and from them: control points (the
+  // outline where there are mattes, what a view between two photos shows first when it is
+  // wrong, then points wherever the warp through the points so far would double detail); how
+  // much brighter the second photo is (T19).
+  DistilOptions distil;
+  distil.max_points = o.control_points;
+  DenseMatchOptions match_options;
+  match_options.use_mattes = product.matted;
+  std::vector<PairExposure> exposures;
   const int total = int(photos.pairs.size());
   for (int i = 0; i < total; ++i) {
     const auto& pair = photos.pairs[size_t(i)];
-    const float step = std::acos(std::clamp(glm::dot(photos.directions[pair[0]], photos.directions[pair[1]]), -1.0f, 1.0f));
-    landmark_options.search = {std::clamp(int(0.5f * float(product.data.width) * std::sin(step) * 1.3f) + 8, 12, product.data.width / 3),
-                               std::max(8, product.data.height / 40)};
     const Image& a = photos.photos[pair[0]];
     const Image& b = photos.photos[pair[1]];
-    std::vector<Landmark> landmarks = find_landmarks(grey_of(a), grey_of(b), landmark_options);
-    const size_t inside = landmarks.size();
-    // With mattes, the outline too: smooth objects give NCC little to hold on to.
-    if (product.matted) landmarks = with_outline(std::move(landmarks), outline_landmarks(a, b, std::max(8, a.height / 32)), landmark_options.min_spacing);
-    product.data.cells.push_back(cell_from_landmarks(landmarks, pair[0], pair[1]));
+    const DenseMatches matches = dense_matches(a, b, match_options);
+    exposures.push_back(pair_exposure(matches, a, b, pair[0], pair[1]));
+    std::vector<Landmark> outline;
+    if (product.matted) outline = with_outline({}, outline_landmarks(a, b, std::max(8, a.height / 32)), distil.min_spacing);
+    const size_t on_outline = outline.size();
+    const std::vector<Landmark> points = distil_control_points(matches, a, std::move(outline), distil);
+    product.data.cells.push_back(cell_from_landmarks(points, pair[0], pair[1]));
     if (progress)
-      progress(i + 1, total, photos.names[pair[0]] + " -> " + photos.names[pair[1]] + ": " + std::to_string(inside) + " landmarks" +
-                                 (product.matted ? ", " + std::to_string(landmarks.size() - inside) + " outline points" : ""));
+      progress(i + 1, total, photos.names[pair[0]] + " -> " + photos.names[pair[1]] + ": " + std::to_string(points.size() - on_outline) +
+                                 " points from matches" + (product.matted ? ", " + std::to_string(on_outline) + " outline points" : ""));
   }
+  const std::vector<glm::vec3> gains = exposure_gains(exposures, int(photos.photos.size()), photos.closed);
+  float largest_change = 0;
+  for (size_t i = 0; i < gains.size(); ++i) {
+    apply_gain(photos.photos[i], gains[i]);
+    for (int c = 0; c < 3; ++c) largest_change = std::max(largest_change, std::abs(gains[i][c] - 1.0f));
+  }
+  if (progress) progress(0, total, "exposure evened: the largest change " + std::to_string(int(std::lround(largest_change * 100))) + "%");
   product.images = std::move(photos.photos);
   // Photos say nothing of the camera's distance; a view at the samples' own distance shows them
   // at their own scale, which is all zooming needs.

@@ -1,7 +1,7 @@
 #pragma once
 // Products (SPEC T11): what a turntable session shows. N sample photos of one object with their
 // view directions and mattes, and the tween data between neighbouring samples, made once at
-// ingest from a folder of photos (landmarks by NCC) or from a mesh rendered on a ring (exact
+// ingest from a folder of photos (verified dense matches) or from a mesh rendered on a ring (exact
 // control points). A shop owner makes one with `inkwire-server add-product`.
 #include <filesystem>
 #include <functional>
@@ -29,11 +29,11 @@ struct PhotoProductOptions {
   float arc_degrees = 0;   // the turn from the first photo to the last; 0: a full turn
   int max_side = 512;      // photos are scaled down to at most this many pixels a side
   std::string matte = "auto";  // auto: key a plain backdrop when there is one; key: refuse if not; none
-  int landmarks = 65;
+  int control_points = 160;  // per pair at most, outline included (12 bytes each)
 };
 
 // Reads a folder of photos taken around an object, in file-name order (see photo_folder.hpp),
-// and finds landmarks between every neighbouring pair. Throws inkwire::Error with a one-line
+// and finds control points between every neighbouring pair. Throws inkwire::Error with a one-line
 // reason naming the file at fault.
 Product product_from_photos(const std::filesystem::path& folder, const PhotoProductOptions& options,
                             const PairProgress& progress = {});

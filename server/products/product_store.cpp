@@ -39,7 +39,7 @@ std::string ProductSource::key() const {
   } else {
     text = "photos step=" + std::to_string(photo_options.step_degrees) + " arc=" + std::to_string(photo_options.arc_degrees) +
            " max_side=" + std::to_string(photo_options.max_side) + " matte=" + photo_options.matte +
-           " landmarks=" + std::to_string(photo_options.landmarks);
+           " points=" + std::to_string(photo_options.control_points);
     std::error_code ec;
     if (!fs::is_directory(photos, ec)) throw Error(photos.string() + " is not a folder");
     std::vector<fs::path> files;
@@ -49,7 +49,7 @@ std::string ProductSource::key() const {
     std::sort(files.begin(), files.end());
     for (const fs::path& f : files) text += " " + f.filename().string() + "=" + hash_of_file(f);
   }
-  text += " format=3";  // bump when the way products are made changes
+  text += " format=4";  // bump when the way products are made changes
   const ContentHash h = content_hash(text.data(), text.size());
   return to_hex(h);
 }

@@ -170,7 +170,7 @@ TEST(ProductTest, AStoredProductIsFoundByItsKeyAndCheckedAgainstItsHashes) {
   source.photos = photo_folder("stored", 6, 96, 64);
   int pairs = 0;
   bool made = false;
-  const protocol::Snapshot state = server::find_or_make_product(store, source, "box", [&](int, int, const std::string&) { ++pairs; }, &made);
+  const protocol::Snapshot state = server::find_or_make_product(store, source, "box", [&](int done, int, const std::string&) { pairs += done > 0; }, &made);
   EXPECT_TRUE(made);
   EXPECT_EQ(pairs, 6);
   EXPECT_EQ(state.product.directions.size(), 6u);
