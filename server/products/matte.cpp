@@ -14,25 +14,41 @@ float colour_distance(const uint8_t* a, const cv::Vec3f& b) {
   return std::sqrt(dr * dr + dg * dg + db * db);
 }
 
-}  // namespace
 
-MatteResult key_plain_background(Image& photo) {
-  MatteResult result;
-  const int w = photo.width, h = photo.height;
-  const int band = std::max(2, std::min(w, h) / 50);  // the outer 2% of the photo is backdrop
+int border_band(const Image& photo) { return std::max(2, std::min(photo.width, photo.height) / 50); }
+
+std::vector<const uint8_t*> border_pixels(const Image& photo) {
+  const int w = photo.width, h = photo.height, band = border_band(photo);
   std::vector<const uint8_t*> border;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       if (x < band || y < band || x >= w - band || y >= h - band) border.push_back(photo.at(x, y));
-  // The backdrop's colour: the per-channel median of the border.
-  cv::Vec3f backdrop;
+  return border;
+}
+
+glm::vec3 median_colour(const std::vector<const uint8_t*>& pixels) {
+  glm::vec3 out(0.0f);
   for (int c = 0; c < 3; ++c) {
     std::vector<uint8_t> v;
-    v.reserve(border.size());
-    for (const uint8_t* p : border) v.push_back(p[c]);
+    v.reserve(pixels.size());
+    for (const uint8_t* p : pixels) v.push_back(p[c]);
     std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
-    backdrop[c] = float(v[v.size() / 2]);
+    out[c] = float(v[v.size() / 2]);
   }
+  return out;
+}
+
+}  // namespace
+
+glm::vec3 backdrop_colour(const Image& photo) { return median_colour(border_pixels(photo)); }
+
+MatteResult key_plain_background(Image& photo) {
+  MatteResult result;
+  const int w = photo.width, h = photo.height;
+  // The outer 2% of the photo is backdrop.
+  const std::vector<const uint8_t*> border = border_pixels(photo);
+  const glm::vec3 median = median_colour(border);
+  const cv::Vec3f backdrop(median.r, median.g, median.b);
   std::vector<float> distances;
   distances.reserve(border.size());
   for (const uint8_t* p : border) distances.push_back(colour_distance(p, backdrop));

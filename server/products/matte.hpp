@@ -5,6 +5,8 @@
 #include <optional>
 #include <string>
 
+#include <glm/vec3.hpp>
+
 #include "common/image.hpp"
 
 namespace inkwire {
@@ -14,6 +16,9 @@ struct MatteResult {
   std::string reason;        // why not, when not keyed
   double object_fraction = 0;  // share of the image the object covers
 };
+
+// The backdrop's colour: the per-channel median of the photo's outer 2% (RGB, 0-255).
+glm::vec3 backdrop_colour(const Image& photo);
 
 // Sets `photo`'s alpha to the object's matte (255 inside, 0 on the background, a pixel of soft
 // edge between). Holes enclosed by the object are filled: a matte says where the object's

@@ -27,6 +27,7 @@ struct Options {
   std::string mesh;  // the LOD series' source mesh
   std::string gl = "osmesa";  // off-screen backend
   std::string output_dir;     // where suites write extra files (CSV, plots): beside the JSON
+  std::vector<std::string> photos;  // turntable: real photo folders to measure (every other photo held out)
 };
 
 // One object of the level-of-detail series, placed as in the study: thesis camera, one light,

@@ -59,6 +59,8 @@ int main(int argc, char** argv) {
   app.add_option("--frames", options.frames, "frames timed per measurement")->check(CLI::Range(1, 1000000));
   app.add_option("--mesh", options.mesh, "source mesh of the LOD series (default: bull.off from libcgal-demo)");
   app.add_option("--gl", options.gl, "off-screen GL backend: osmesa, egl (surfaceless) or auto");
+  app.add_option("--photos", options.photos, "turntable: a folder of real turntable photos to measure instead of the truck (repeatable)")
+      ->check(CLI::ExistingDirectory);
   app.add_option("--json", json_path, "write results here")->required();
   try {
     app.parse(argc, argv);

@@ -6,7 +6,9 @@
 // and the tween (every view drawn from the decoded stored photos), the worst matte IoU of the
 // tween, the bytes each client downloads, and the bytes and milliseconds until a first view on
 // loopback (a real server, a real client). With ../shared/data/templeRing: the same on real
-// photos, the even photos made into a product and the odd ones held out as the truth.
+// photos, the even photos made into a product and the odd ones held out as the truth; with
+// --photos DIR (repeatable), the same on those folders instead, with the optical-flow
+// interpolation of the two photos as the quality reference (SPEC T15).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -33,7 +35,9 @@
 #include "common/tween/view_sphere.hpp"
 #include "server/products/photo_folder.hpp"
 #include "server/products/product.hpp"
+#include "server/products/matte.hpp"
 #include "server/products/product_store.hpp"
+#include "server/tween/dense_matches.hpp"
 #include "server/server.hpp"
 
 namespace inkwire::bench {
@@ -157,34 +161,48 @@ protocol::Snapshot store_spin(server::AssetStore& store, const std::vector<Image
   return state;
 }
 
-// Real photos: templeRing's even photos made into a product as add-product makes one, the odd
-// ones held out as the truth (each lies between two product photos, about 15 degrees apart).
-std::vector<Result> temple_rows(Canvas& canvas) {
-  const fs::path folder = fs::path(INKWIRE_SHARED_DATA_DIR) / "templeRing";
-  if (!fs::exists(folder)) {
-    std::fprintf(stderr, "inkwire-bench: %s is absent: no templeRing rows\n", folder.c_str());
-    return {};
-  }
+// Spin-viewer photos carry a watermark in the bottom-right corner (../shared/data/spins/mini-rows):
+// the corner is left out of every score (painted one colour in the view and the truth alike).
+Image without_watermark_corner(Image image, glm::u8vec3 colour) {
+  for (int y = image.height - std::max(1, image.height / 20); y < image.height; ++y)
+    for (int x = image.width - image.width / 4; x < image.width; ++x) {
+      uint8_t* p = image.at(x, y);
+      p[0] = colour.r, p[1] = colour.g, p[2] = colour.b, p[3] = 255;
+    }
+  return image;
+}
+
+// Real photos: a folder's even photos made into a product as add-product makes one, the odd ones
+// held out as the truth (each lies between two product photos). Per held-out photo: the spin
+// viewer's nearest product photo as it was shot, a cross-fade and the tween of the stored
+// product over the photo's own backdrop colour, and the optical-flow interpolation of the two
+// photos (everything on the client: the quality reference). Midway views are written beside
+// the truth for looking at: [truth | spin | cross-fade | tween | flow] in DIR/turntable-NAME-K.png.
+std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const fs::path& output_dir) {
+  const std::string name = folder.filename().empty() ? folder.parent_path().filename().string() : folder.filename().string();
   const PhotoFolder all = read_photo_folder(folder, 0, 0, 512);
   PhotoFolder even;
-  std::vector<int> held_out;
-  for (size_t i = 0; i < all.photos.size(); ++i) {
-    if (i % 2 == 1) {
-      held_out.push_back(int(i));
-      continue;
-    }
+  for (size_t i = 0; i < all.photos.size(); i += 2) {
     even.names.push_back(all.names[i]);
     even.photos.push_back(all.photos[i]);
     even.directions.push_back(all.directions[i]);
   }
-  for (size_t i = 0; i + 1 < even.photos.size(); ++i) even.pairs.push_back({uint16_t(i), uint16_t(i + 1)});
+  const int n = int(even.photos.size());
+  for (int i = 0; i + 1 < n; ++i) even.pairs.push_back({uint16_t(i), uint16_t(i + 1)});
+  // The ring closes when the photos go all the way round and the last held-out one lies between
+  // the last kept one and the first.
+  const bool closes = all.closed && all.photos.size() % 2 == 0;
+  if (closes) even.pairs.push_back({uint16_t(n - 1), 0});
+  even.closed = closes;
+  const auto made = std::chrono::steady_clock::now();
   const Product product = product_from_photo_folder(even, PhotoProductOptions{}, {}, folder.string());
-  const fs::path data = fs::temp_directory_path() / ("inkwire-bench-temple-" + std::to_string(::getpid()));
+  const double seconds_to_make = std::chrono::duration<double>(std::chrono::steady_clock::now() - made).count();
+  const fs::path data = fs::temp_directory_path() / ("inkwire-bench-photos-" + std::to_string(::getpid()));
   fs::remove_all(data);
   protocol::Snapshot state;
   {
     server::AssetStore store(data);
-    state = server::store_product(store, product, "temple");
+    state = server::store_product(store, product, "photos");
   }
   server::AssetStore store(data);
   TweenModel model;
@@ -196,36 +214,54 @@ std::vector<Result> temple_rows(Canvas& canvas) {
   TweenRenderer renderer;
   renderer.configure(style_params("tween").front());
   renderer.use_model(model);
-  Scores spin, fade, tween;
-  for (int k : held_out) {
-    if (k + 1 >= int(all.photos.size())) continue;  // past the last product photo: nothing to tween from
-    const Image& truth = all.photos[size_t(k)];
-    const glm::vec3 d = all.directions[size_t(k)];
+  Scores spin, fade, tween, flow;
+  auto score = [](Scores& s, const Image& view, const Image& truth) {
+    s.psnr.push_back(psnr(view, truth));
+    s.ssim.push_back(ssim(view, truth));
+  };
+  for (size_t k = 1; k < all.photos.size(); k += 2) {
+    const int before = int(k / 2), after = (before + 1) % n;
+    if (after == 0 && !closes) continue;  // past the last product photo: nothing to tween from
+    const glm::vec3 backdrop = backdrop_colour(all.photos[k]);
+    const glm::u8vec3 colour(backdrop);
+    const Image truth = without_watermark_corner(all.photos[k], colour);
+    const glm::vec3 d = all.directions[k];
     FrameState frame;
     frame.viewport = {model.data.width, model.data.height};
     frame.camera.position = d * model.distance_diagonals * kSceneDiagonal;
     frame.camera.target = glm::vec3(0.0f);
-    // The spin viewer: the nearer of the two product photos around it.
-    const int before = k / 2, after = before + 1;
-    const bool first_nearer = glm::dot(d, even.directions[size_t(before)]) >= glm::dot(d, even.directions[size_t(after)]);
-    const Image& nearest = model.images[size_t(first_nearer ? before : after)];
-    spin.psnr.push_back(psnr(nearest, truth));
-    spin.ssim.push_back(ssim(nearest, truth));
-    for (auto [method, compose, scores] : {std::tuple{"crossfade", "sum", &fade}, std::tuple{"bilinear", "matte", &tween}}) {
-      const Image view = over_colour(synthesised(renderer, canvas, frame, method, compose), {0, 0, 0}, true);
-      scores->psnr.push_back(psnr(view, truth));
-      scores->ssim.push_back(ssim(view, truth));
-    }
+    // Where the held-out view lies between its two product photos.
+    const float to_before = std::acos(std::clamp(glm::dot(d, even.directions[size_t(before)]), -1.0f, 1.0f));
+    const float to_after = std::acos(std::clamp(glm::dot(d, even.directions[size_t(after)]), -1.0f, 1.0f));
+    const float t = to_before / std::max(to_before + to_after, 1e-6f);
+    const Image& nearest = all.photos[size_t(2 * (t <= 0.5f ? before : after))];
+    const Image spin_view = without_watermark_corner(nearest, colour);
+    const Image fade_view = without_watermark_corner(over_colour(synthesised(renderer, canvas, frame, "crossfade", "sum"), colour, true), colour);
+    const Image tween_view = without_watermark_corner(over_colour(synthesised(renderer, canvas, frame, "bilinear", "matte"), colour, true), colour);
+    const Image flow_view =
+        without_watermark_corner(flow_interpolation(all.photos[size_t(2 * before)], all.photos[size_t(2 * after)], t), colour);
+    score(spin, spin_view, truth);
+    score(fade, fade_view, truth);
+    score(tween, tween_view, truth);
+    score(flow, flow_view, truth);
+    if (!output_dir.empty())
+      save_image(side_by_side({truth, spin_view, fade_view, tween_view, flow_view}, {"held out", "spin", "cross-fade", "tween", "flow"}),
+                 output_dir / ("turntable-" + name + "-" + std::to_string(k) + ".png"), false);
   }
-  const int n = int(even.photos.size());
-  std::vector<Result> rows = {row("spin,n=" + std::to_string(n) + ",data=templeRing", "templeRing", n, spin, false),
-                              row("crossfade,n=" + std::to_string(n) + ",data=templeRing", "templeRing", n, fade, false),
-                              row("tween,n=" + std::to_string(n) + ",data=templeRing", "templeRing", n, tween, false)};
-  rows[2].counters["bytes_total"] = double(bytes_of(state, protocol::AssetKind::Samples) + bytes_of(state, protocol::AssetKind::Tween));
-  rows[2].counters["bytes_tween"] = double(bytes_of(state, protocol::AssetKind::Tween));
-  rows[0].counters["bytes_total"] = double(bytes_of(state, protocol::AssetKind::Samples));
-  std::fprintf(stderr, "inkwire-bench: turntable templeRing (%zu held out): spin %.2f dB, cross-fade %.2f dB, tween %.2f dB\n",
-               spin.psnr.size(), Scores::mean(spin.psnr), Scores::mean(fade.psnr), Scores::mean(tween.psnr));
+  const uint64_t photo_bytes = bytes_of(state, protocol::AssetKind::Samples), matte_bytes = bytes_of(state, protocol::AssetKind::Matte),
+                 tween_bytes = bytes_of(state, protocol::AssetKind::Tween);
+  const std::string suffix = ",n=" + std::to_string(n) + ",data=" + name;
+  std::vector<Result> rows = {row("spin" + suffix, name, n, spin, false), row("crossfade" + suffix, name, n, fade, false),
+                              row("tween" + suffix, name, n, tween, false), row("flow" + suffix, name, n, flow, false)};
+  rows[0].counters["bytes_total"] = double(photo_bytes);
+  rows[2].counters["bytes_total"] = double(photo_bytes + matte_bytes + tween_bytes);
+  rows[2].counters["bytes_tween"] = double(tween_bytes);
+  rows[2].counters["bytes_per_pair"] = double(tween_bytes) / double(std::max<size_t>(product.data.cells.size(), 1));
+  rows[2].counters["tween_share"] = double(tween_bytes) / double(photo_bytes + matte_bytes + tween_bytes);
+  rows[2].counters["seconds_to_make"] = seconds_to_make;
+  std::fprintf(stderr, "inkwire-bench: turntable %s (%zu held out): spin %.2f dB, cross-fade %.2f dB, tween %.2f dB, flow %.2f dB, %.0f B a pair\n",
+               name.c_str(), spin.psnr.size(), Scores::mean(spin.psnr), Scores::mean(fade.psnr), Scores::mean(tween.psnr),
+               Scores::mean(flow.psnr), rows[2].counters["bytes_per_pair"]);
   fs::remove_all(data);
   return rows;
 }
@@ -235,9 +271,14 @@ std::vector<Result> temple_rows(Canvas& canvas) {
 std::vector<Result> run_turntable_suite(Harness& harness) {
   std::vector<Result> results;
   Canvas canvas(kSize, kSize, 1);
+  if (!harness.options().photos.empty()) {  // --photos DIR: those sets alone
+    for (const std::string& folder : harness.options().photos)
+      for (Result& r : photo_set_rows(canvas, folder, harness.options().output_dir)) results.push_back(std::move(r));
+    return results;
+  }
   if (!fs::exists(kTruck)) {
     std::fprintf(stderr, "inkwire-bench: %s is missing (assimp-testmodels): no truck rows\n", kTruck.c_str());
-    return temple_rows(canvas);
+    return {};
   }
   const SceneObject truck = load_scene_object(kTruck);
   const fs::path data = fs::temp_directory_path() / ("inkwire-bench-turntable-" + std::to_string(::getpid()));
@@ -317,7 +358,11 @@ std::vector<Result> run_turntable_suite(Harness& harness) {
   }
   fs::remove_all(data);
   (void)harness;  // the suite makes its own canvases at the product's size
-  for (Result& r : temple_rows(canvas)) results.push_back(std::move(r));
+  const fs::path temple = fs::path(INKWIRE_SHARED_DATA_DIR) / "templeRing";
+  if (fs::exists(temple))
+    for (Result& r : photo_set_rows(canvas, temple, harness.options().output_dir)) results.push_back(std::move(r));
+  else
+    std::fprintf(stderr, "inkwire-bench: %s is absent: no templeRing rows\n", temple.c_str());
   return results;
 }
 
