@@ -108,6 +108,12 @@ try:
                            f"--use-file-for-fake-audio-capture={words[name]}", "--autoplay-policy=no-user-gesture-required"])
         driver.get(f"http://127.0.0.1:{server.http}/call/call")
         drivers[name] = driver
+        # As a member does: the neutral photo taken while the face is neutral (the clip's first
+        # three seconds; the next browser's start can take longer than that).
+        end = time.time() + 10
+        while time.time() < end and not driver.execute_script(f"return {element}.preview.videoWidth > 0"):
+            time.sleep(0.1)
+        driver.execute_script(f"return {element}.takePhoto()")
     ada, bea = drivers["ada"], drivers["bea"]
     # The native member publishes its camera only; it records what it sees and hears.
     native = subprocess.Popen([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{server.tcp}", "--session", "call", "--name", "Nat",
