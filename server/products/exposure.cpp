@@ -73,7 +73,8 @@ std::vector<glm::vec3> exposure_gains(const std::vector<PairExposure>& pairs, in
 
 void apply_gain(Image& photo, const glm::vec3& gain) {
   for (size_t i = 0; i < photo.pixels.size(); i += 4)
-    for (int c = 0; c < 3; ++c) photo.pixels[i + size_t(c)] = uint8_t(std::clamp(std::lround(float(photo.pixels[i + size_t(c)]) * gain[c]), 0L, 255L));
+    if (photo.pixels[i + 3] != 0)  // where a matte is 0 the floor layer is already on white
+      for (int c = 0; c < 3; ++c) photo.pixels[i + size_t(c)] = uint8_t(std::clamp(std::lround(float(photo.pixels[i + size_t(c)]) * gain[c]), 0L, 255L));
 }
 
 }  // namespace inkwire

@@ -28,7 +28,8 @@ PairExposure pair_exposure(const DenseMatches& matches, const Image& a, const Im
 // last photo's neighbours include the first). Photos no pair reaches keep 1.
 std::vector<glm::vec3> exposure_gains(const std::vector<PairExposure>& pairs, int photos, bool closed);
 
-// Multiplies the colours (not the matte) by `gain`, clamped to 0-255.
+// Multiplies the colours (not the matte) by `gain`, clamped to 0-255, where the matte is not 0
+// (the floor layer there is already relative to the photo's own backdrop).
 void apply_gain(Image& photo, const glm::vec3& gain);
 
 }  // namespace inkwire

@@ -38,6 +38,55 @@ glm::vec3 median_colour(const std::vector<const uint8_t*>& pixels) {
   return out;
 }
 
+// Pixels of the floor the object shades: darker than the backdrop by about the same share in
+// every channel (a shadow takes light, not colour), and smooth (a shadow's edge is soft; the
+// grey sole of a shoe has edges).
+cv::Mat floor_shade(const Image& photo, const cv::Vec3f& backdrop) {
+  const int w = photo.width, h = photo.height;
+  cv::Mat grey(h, w, CV_32F), shade(h, w, CV_8U, cv::Scalar(0));
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const uint8_t* p = photo.at(x, y);
+      grey.at<float>(y, x) = (float(p[0]) + float(p[1]) + float(p[2])) / 3.0f;
+    }
+  cv::Mat gx, gy, slope;
+  cv::GaussianBlur(grey, grey, {0, 0}, 1.0);
+  cv::Sobel(grey, gx, CV_32F, 1, 0, 3, 1.0 / 8.0);
+  cv::Sobel(grey, gy, CV_32F, 0, 1, 3, 1.0 / 8.0);
+  cv::magnitude(gx, gy, slope);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const uint8_t* p = photo.at(x, y);
+      float low = 2.0f, high = 0.0f, mean = 0.0f;
+      for (int c = 0; c < 3; ++c) {
+        const float r = float(p[c]) / std::max(backdrop[c], 1.0f);
+        low = std::min(low, r), high = std::max(high, r), mean += r / 3.0f;
+      }
+      if (mean > 0.3f && mean < 0.97f && high - low < 0.08f && slope.at<float>(y, x) < 12.0f) shade.at<uint8_t>(y, x) = 255;
+    }
+  return shade;
+}
+
+// The largest piece of `mask` with the holes it encloses filled (a hole the colour of the
+// backdrop inside an object is far more often paint than air), and its area.
+cv::Mat largest_piece(const cv::Mat& mask, int* area) {
+  const int w = mask.cols, h = mask.rows;
+  cv::Mat object;
+  cv::morphologyEx(mask, object, cv::MORPH_OPEN, cv::getStructuringElement(cv::MORPH_ELLIPSE, {3, 3}));
+  cv::Mat flooded(h + 2, w + 2, CV_8U, cv::Scalar(0));
+  object.copyTo(flooded(cv::Rect(1, 1, w, h)));
+  cv::floodFill(flooded, cv::Point(0, 0), 128);
+  const cv::Mat filled = flooded(cv::Rect(1, 1, w, h)) != 128;
+  cv::Mat labels, stats, centroids;
+  const int n = cv::connectedComponentsWithStats(filled, labels, stats, centroids, 8);
+  int largest = 0;
+  *area = 0;
+  for (int i = 1; i < n; ++i)
+    if (stats.at<int>(i, cv::CC_STAT_AREA) > *area) largest = i, *area = stats.at<int>(i, cv::CC_STAT_AREA);
+  if (largest == 0) return cv::Mat(h, w, CV_8U, cv::Scalar(0));
+  return labels == largest;
+}
+
 }  // namespace
 
 glm::vec3 backdrop_colour(const Image& photo) { return median_colour(border_pixels(photo)); }
@@ -58,27 +107,17 @@ MatteResult key_plain_background(Image& photo) {
     result.reason = "its border is not a plain background (colours stray by " + std::to_string(int(noise)) + " of 441)";
     return result;
   }
-  // Object: clearly unlike the backdrop. Speckles are opened away; the outline is what the
-  // backdrop, flooded from the border, does not reach.
+  // Object: clearly unlike the backdrop, and not floor the object darkens (SPEC T16). Speckles
+  // are opened away; the outline is what the backdrop, flooded from the border, does not reach.
   const float threshold = std::max(24.0f, 2.5f * noise);
-  cv::Mat object(h, w, CV_8U);
+  cv::Mat shade = floor_shade(photo, backdrop);
+  cv::Mat unlike(h, w, CV_8U);
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) object.at<uint8_t>(y, x) = colour_distance(photo.at(x, y), backdrop) > threshold ? 255 : 0;
-  cv::morphologyEx(object, object, cv::MORPH_OPEN, cv::getStructuringElement(cv::MORPH_ELLIPSE, {3, 3}));
-  cv::Mat flooded(h + 2, w + 2, CV_8U, cv::Scalar(0));
-  object.copyTo(flooded(cv::Rect(1, 1, w, h)));
-  cv::floodFill(flooded, cv::Point(0, 0), 128);
-  cv::Mat matte(h, w, CV_8U);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) matte.at<uint8_t>(y, x) = flooded.at<uint8_t>(y + 1, x + 1) == 128 ? 0 : 255;
-  // Only the largest piece is the object; the rest is dust, reflections and the turntable's edge.
-  cv::Mat labels, stats, centroids;
-  const int n = cv::connectedComponentsWithStats(matte, labels, stats, centroids, 8);
-  int largest = 0, largest_area = 0;
-  for (int i = 1; i < n; ++i)
-    if (stats.at<int>(i, cv::CC_STAT_AREA) > largest_area) largest = i, largest_area = stats.at<int>(i, cv::CC_STAT_AREA);
-  result.object_fraction = double(largest_area) / double(w * h);
-  if (largest == 0 || result.object_fraction < 0.005) {
+    for (int x = 0; x < w; ++x) unlike.at<uint8_t>(y, x) = colour_distance(photo.at(x, y), backdrop) > threshold ? 255 : 0;
+  int area = 0;
+  const cv::Mat with_shade = largest_piece(unlike, &area);
+  result.object_fraction = double(area) / double(w * h);
+  if (area == 0 || result.object_fraction < 0.005) {
     result.reason = "nothing stands out from its background";
     return result;
   }
@@ -86,12 +125,79 @@ MatteResult key_plain_background(Image& photo) {
     result.reason = "the object fills the whole photo, so no background is left to key";
     return result;
   }
-  cv::Mat soft = (labels == largest);
-  cv::GaussianBlur(soft, soft, {3, 3}, 0.7);  // a pixel of soft edge against stair steps
+  // The shadow is taken out of the object only in its lower half (of what stands out, shadow
+  // included), where that leaves most of it and what it takes lies under the rest: a grey
+  // product is not its own shadow. (A plain grey part low down that meets the shadow can go
+  // with it.)
+  const cv::Rect box = cv::boundingRect(with_shade);
+  shade(cv::Rect(0, 0, w, box.y + box.height / 2)).setTo(0);
+  // And only shade that fades into the backdrop: a plain grey part of the object is shut off from
+  // the backdrop by its own edge.
+  cv::Mat backdrop_near;
+  cv::dilate(~unlike & ~shade, backdrop_near, cv::getStructuringElement(cv::MORPH_RECT, {3, 3}));
+  cv::Mat shade_pieces;
+  const int shade_count = cv::connectedComponents(shade, shade_pieces, 8);
+  std::vector<bool> fades(size_t(shade_count), false);
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) photo.at(x, y)[3] = soft.at<uint8_t>(y, x);
+    for (int x = 0; x < w; ++x)
+      if (shade.at<uint8_t>(y, x) && backdrop_near.at<uint8_t>(y, x)) fades[size_t(shade_pieces.at<int>(y, x))] = true;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (!fades[size_t(shade_pieces.at<int>(y, x))]) shade.at<uint8_t>(y, x) = 0;
+  int core_area = 0;
+  cv::Mat matte = largest_piece(unlike & ~shade, &core_area);
+  const cv::Mat taken = with_shade & ~matte;
+  const cv::Moments core = cv::moments(matte, true), under = cv::moments(taken, true);
+  const bool split = core_area >= area / 2 && under.m00 > 0 && under.m01 / under.m00 > core.m01 / core.m00;
+  if (!split) matte = with_shade;
+  else result.object_fraction = double(core_area) / double(w * h);
+  // The floor layer: what differs from the backdrop around the object, kept as it would look on
+  // white (a shadow, a reflection); the rest of the backdrop becomes white.
+  cv::Mat differs(h, w, CV_8U), near;
+  const float faint = std::max(8.0f, 1.5f * noise);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) differs.at<uint8_t>(y, x) = colour_distance(photo.at(x, y), backdrop) > faint ? 255 : 0;
+  cv::dilate(matte, near, cv::getStructuringElement(cv::MORPH_ELLIPSE, {7, 7}));
+  cv::Mat pieces;
+  const int count = cv::connectedComponents(differs & ~matte, pieces, 8);
+  std::vector<bool> touches(size_t(count), false);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (near.at<uint8_t>(y, x) && !matte.at<uint8_t>(y, x)) touches[size_t(pieces.at<int>(y, x))] = true;
+  touches[0] = false;
+  cv::Mat soft = matte.clone();
+  cv::GaussianBlur(soft, soft, {3, 3}, 0.7);  // a pixel of soft edge against stair steps
+  int layer_pixels = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      uint8_t* p = photo.at(x, y);
+      p[3] = soft.at<uint8_t>(y, x);
+      if (p[3] >= 32 && p[3] < 255) {
+        // An edge pixel is part object, part backdrop: the backdrop's part taken out, or the
+        // object would wear a rim of the studio's colour on any other backdrop.
+        const float a = float(p[3]) / 255.0f;
+        for (int c = 0; c < 3; ++c) p[c] = uint8_t(std::clamp(std::round((float(p[c]) - (1.0f - a) * backdrop[c]) / a), 0.0f, 255.0f));
+      }
+      if (p[3] != 0) continue;
+      const bool layer = touches[size_t(pieces.at<int>(y, x))];
+      layer_pixels += layer;
+      for (int c = 0; c < 3; ++c) p[c] = layer ? uint8_t(std::min(255.0f, std::round(float(p[c]) * 255.0f / std::max(backdrop[c], 1.0f)))) : 255;
+    }
+  result.floor_fraction = double(layer_pixels) / double(w * h);
   result.keyed = true;
   return result;
 }
 
+Image laid_on_white(const Image& keyed) {
+  Image out = keyed;
+  for (size_t i = 0; i < out.pixels.size(); i += 4) {
+    const int a = out.pixels[i + 3];
+    if (a != 0)
+      for (size_t c = 0; c < 3; ++c) out.pixels[i + c] = uint8_t((out.pixels[i + c] * a + 255 * (255 - a) + 127) / 255);
+    out.pixels[i + 3] = 255;
+  }
+  return out;
+}
+
 }  // namespace inkwire
+

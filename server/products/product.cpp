@@ -7,6 +7,7 @@
 
 #include "client/gl/context.hpp"
 #include "client/render/scene_object.hpp"
+#include "client/render/tween/image_warper.hpp"
 #include "client/render/tween/mesh_samples.hpp"
 #include "common/error.hpp"
 #include "common/tween/view_sphere.hpp"
@@ -117,7 +118,7 @@ Product product_from_mesh(const fs::path& mesh, const MeshProductOptions& o, con
                    (cells[i].size() == 3 ? " -> " + std::to_string(cells[i][2]) : std::string()) + ": " +
                    std::to_string(product.data.cells.back().points.size()) + " control points");
   }
-  product.images = samples.images;
+  for (const Image& image : samples.images) product.images.push_back(without_floor(image));  // a render has no floor layer
   product.matted = true;
   return product;
 }

@@ -12,6 +12,7 @@
 #include "common/error.hpp"
 #include "common/image_metrics.hpp"
 #include "common/log.hpp"
+#include "server/products/matte.hpp"
 
 namespace inkwire::server {
 namespace fs = std::filesystem;
@@ -68,9 +69,10 @@ protocol::Snapshot store_product(AssetStore& store, const Product& product, cons
   for (size_t i = 0; i < product.images.size(); ++i) {
     const Image& image = product.images[i];
     std::snprintf(name, sizeof name, "sample-%03zu.jpg", i);
-    // As a shop shows a photo: on white, which is also what compresses best; clients bleed the
-    // object's colour past the outline themselves (matte_sample()).
-    state.assets.push_back(store.add_bytes(encode_image(product.matted ? over_colour(image, {255, 255, 255}, false) : image, "jpg", kJpegQuality),
+    // As a shop shows a photo: on white with its floor layer (shadow), which is also what
+    // compresses best; clients bleed the object's colour past the outline themselves
+    // (matte_sample()).
+    state.assets.push_back(store.add_bytes(encode_image(product.matted ? laid_on_white(image) : image, "jpg", kJpegQuality),
                                            AssetKind::Samples, name));
     if (product.matted) {
       std::snprintf(name, sizeof name, "matte-%03zu.png", i);

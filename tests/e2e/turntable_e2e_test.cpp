@@ -65,7 +65,8 @@ int count_lines_starting(const std::string& text, const std::string& prefix) {
   return n;
 }
 
-// The product's own photo k (JPEG with its matte), over white, as the client's cache holds it.
+// The product's own photo k as the client's cache holds it: the JPEG is the photo laid on white
+// already; where its matte is 0 (no object, no floor here) it shows white.
 Image stored_photo(const protocol::Snapshot& state, AssetCache& cache, int k) {
   int photo = 0, matte = 0;
   Image image;
@@ -73,10 +74,11 @@ Image stored_photo(const protocol::Snapshot& state, AssetCache& cache, int k) {
     if (a.kind == protocol::AssetKind::Samples && photo++ == k) image = load_image(cache.path_of(a));
     if (a.kind == protocol::AssetKind::Matte && matte++ == k) {
       const Image alpha = load_image(cache.path_of(a));
-      for (size_t i = 0; i < image.pixels.size(); i += 4) image.pixels[i + 3] = alpha.pixels[i];
+      for (size_t i = 0; i < image.pixels.size(); i += 4)
+        if (alpha.pixels[i] == 0) image.pixels[i] = image.pixels[i + 1] = image.pixels[i + 2] = 255;
     }
   }
-  return over_colour(image, {255, 255, 255}, false);
+  return image;
 }
 
 Image blend(const Image& a, const Image& b) {

@@ -133,7 +133,7 @@ TEST(TurntableGLTest, AProductArrivingPieceByPieceShowsTheNearestPhotoUntilItsCe
   tween.draw(frame);
   EXPECT_EQ(tween.counters().at("samples_loaded"), 0.0);
   // The farther photo first: it shows, as it is.
-  tween.set_sample(1, samples.images[1]);
+  tween.set_sample(1, without_floor(samples.images[1]));  // as a stored photo: white around it
   EXPECT_EQ(tween.counters().at("cell"), -1.0);
   const Image only_far = draw();
   EXPECT_GT(matte_iou(only_far, samples.images[1]), 0.99);
@@ -144,7 +144,7 @@ TEST(TurntableGLTest, AProductArrivingPieceByPieceShowsTheNearestPhotoUntilItsCe
   EXPECT_NO_THROW(tween.configure(StyleParams(TweenRenderer::params())));
   EXPECT_GT(matte_iou(draw(), samples.images[1]), 0.99);
   // The nearer one: now it shows.
-  tween.set_sample(0, samples.images[0]);
+  tween.set_sample(0, without_floor(samples.images[0]));
   const Image nearest = draw();
   EXPECT_GT(matte_iou(nearest, samples.images[0]), 0.99);
   EXPECT_EQ(tween.counters().at("cell"), -1.0);

@@ -148,8 +148,46 @@ TEST(ProductTest, APlainBackdropIsKeyedIntoTheObjectsMatte) {
   EXPECT_NE(refused.reason.find("not a plain background"), std::string::npos);
 }
 
-TEST(ProductTest, AMatteSampleCarriesTheDistanceToTheOutlineAndBleedsColourOutward) {
-  Image image(64, 64, {0, 0, 0, 0});
+TEST(ProductTest, TheShadowUnderTheObjectIsKeptAsAFloorLayerNotAsObject) {
+  // A red box on a light grey backdrop with a soft grey shadow spreading from its foot, and a grey
+  // part (the colour of a shadow, plain) high on its side: the shadow is floor, the grey part is
+  // object.
+  const glm::vec3 backdrop(230, 228, 225);
+  Image photo(200, 150);
+  for (int y = 0; y < 150; ++y)
+    for (int x = 0; x < 200; ++x) {
+      // Darkness 0.45 at the foot (y = 100), fading over 25 pixels down and sideways.
+      const float fall = std::max(0.0f, 1.0f - std::hypot((x - 80) / 60.0f, std::max(0, y - 100) / 25.0f));
+      const float darkness = y >= 100 ? 0.45f * fall : 0.0f;
+      uint8_t* p = photo.at(x, y);
+      for (int c = 0; c < 3; ++c) p[c] = uint8_t(std::lround(backdrop[c] * (1.0f - darkness)));
+      p[3] = 255;
+      if (x >= 40 && x < 120 && y >= 40 && y < 100) p[0] = 200, p[1] = 30, p[2] = 20;       // the red box
+      if (x >= 120 && x < 150 && y >= 40 && y < 65) p[0] = p[1] = p[2] = 150;                // the grey part
+    }
+  Image keyed = photo;
+  const MatteResult r = key_plain_background(keyed);
+  ASSERT_TRUE(r.keyed) << r.reason;
+  EXPECT_EQ(keyed.at(60, 70)[3], 255);   // in the red box
+  EXPECT_EQ(keyed.at(135, 50)[3], 255);  // in the grey part
+  EXPECT_EQ(keyed.at(80, 110)[3], 0);    // in the shadow: not object
+  EXPECT_GT(r.floor_fraction, 0.02);
+  // Where the matte is 0, the floor layer as it would look on white: the shadow's darkness kept
+  // (0.45 * (1 - 10/25) = 0.27 at 10 pixels below the foot), the plain backdrop white.
+  EXPECT_NEAR(keyed.at(80, 110)[1], 255 * (1.0 - 0.27), 6);
+  EXPECT_EQ(keyed.at(10, 10)[0], 255);
+  EXPECT_EQ(keyed.at(190, 140)[2], 255);
+  // Stored as shown: the object on white, the shadow under it.
+  const Image stored = laid_on_white(keyed);
+  EXPECT_EQ(stored.at(60, 70)[0], 200);
+  EXPECT_EQ(stored.at(80, 110)[1], keyed.at(80, 110)[1]);
+  EXPECT_EQ(stored.at(10, 10)[3], 255);
+}
+
+TEST(ProductTest, AMatteSampleCarriesTheDistanceToTheOutlineBleedsColourOutwardAndKeepsTheFloor) {
+  // A product photo as stored: the object, white around it, a shadow on the floor under it.
+  Image image(64, 64, {255, 255, 255, 0});
+  for (int x = 8; x < 56; ++x) image.at(x, 60)[0] = image.at(x, 60)[1] = image.at(x, 60)[2] = 150;
   for (int y = 8; y < 56; ++y)
     for (int x = 8; x < 56; ++x) {
       uint8_t* p = image.at(x, y);
@@ -160,7 +198,9 @@ TEST(ProductTest, AMatteSampleCarriesTheDistanceToTheOutlineAndBleedsColourOutwa
   EXPECT_NEAR(m.at(7, 32)[3], 128 - 128 / int(2 * kMatteRange), 3);   // half a pixel outside
   EXPECT_LT(m.at(0, 0)[3], 60);                                          // 11 pixels outside
   EXPECT_EQ(m.at(32, 32)[3], 255);                                       // deep inside
-  EXPECT_EQ(int(m.at(2, 32)[0]), 200);  // colour bled out
+  EXPECT_EQ(int(m.at(7, 32)[0]), 200);  // colour bled out a pixel
+  EXPECT_EQ(int(m.at(2, 32)[0]), 255);  // further out, the floor layer: white where there is none
+  EXPECT_EQ(int(m.at(32, 60)[0]), 150);  // and the shadow where there is one
 }
 
 TEST(ProductTest, AStoredProductIsFoundByItsKeyAndCheckedAgainstItsHashes) {

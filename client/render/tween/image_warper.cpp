@@ -54,13 +54,23 @@ Image matte_sample(const Image& image) {
       float d = in ? to_background.at<float>(y, x) - 0.5f : 0.5f - to_object.at<float>(y, x);
       if (alpha > 0 && alpha < 255 && std::abs(d) <= 1.0f) d = float(alpha) / 255.0f - 0.5f;
       uint8_t* p = out.at(x, y);
-      if (alpha < 32) {  // too little of the object in it to trust its colour
+      // Too little of the object in it to trust its colour: the nearest object pixel's, on the
+      // soft edge and up to kBleedPixels out (the blend reads a sample's colour only where it
+      // sees the object or nearly); further out the colour is the floor layer on white (SPEC
+      // T16), kept.
+      if (alpha < 32 && (alpha > 0 || to_object.at<float>(y, x) <= kBleedPixels)) {
         const cv::Point src = object_pixel_of_label[size_t(nearest_object.at<int>(y, x))];
         if (src.x >= 0) std::copy_n(image.at(src.x, src.y), 3, p);
       }
       p[3] = uint8_t(std::lround(std::clamp(0.5f + d / (2.0f * kMatteRange), 0.0f, 1.0f) * 255.0f));
     }
   return out;
+}
+
+Image without_floor(Image sample) {
+  for (size_t i = 0; i < sample.pixels.size(); i += 4)
+    if (sample.pixels[i + 3] == 0) sample.pixels[i] = sample.pixels[i + 1] = sample.pixels[i + 2] = 255;
+  return sample;
 }
 
 gl::Texture make_matte_texture(const Image& image) {
@@ -84,7 +94,7 @@ ImageWarper::ImageWarper(int width, int height)
   for (int n = 1; n <= 3; ++n) {
     blend_.push_back(gl::Program::from_files({"tween/blend.vert", "tween/blend.frag"}, {"SAMPLES " + std::to_string(n)}));
     blend_matte_.push_back(gl::Program::from_files({"tween/blend.vert", "tween/blend.frag"},
-                                                   {"SAMPLES " + std::to_string(n), "MATTE", "MATTE_RANGE " + std::to_string(kMatteRange)}));
+                                                   {"SAMPLES " + std::to_string(n), "MATTE", "MATTE_RANGE " + std::to_string(kMatteRange), "BLEED " + std::to_string(kBleedPixels)}));
   }
 }
 

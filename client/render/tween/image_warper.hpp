@@ -37,10 +37,16 @@ struct WarpSource {
 gl::Texture make_sample_texture(const Image& image);
 
 // A sample with a matte (its alpha) as the warper reads it when composing by mattes: colour
-// bled outward past the outline, alpha the signed distance to the outline (0.5 on it, +-1 at
-// kMatteRange pixels inside / outside), so it interpolates under a warp and a blend.
+// bled outward past the outline by kBleedPixels, beyond that the floor layer as it looks on
+// white (the sample's own colours where its matte is 0: a shadow, or white), alpha the signed
+// distance to the outline (0.5 on it, +-1 at kMatteRange pixels inside / outside), so it
+// interpolates under a warp and a blend.
 inline constexpr float kMatteRange = 16.0f;
+inline constexpr float kBleedPixels = 1.5f;
 Image matte_sample(const Image& image);
+// A sample with no floor layer, as matte_sample() reads one: white where its matte is 0 (a
+// render leaves black there, which would read as a black floor).
+Image without_floor(Image sample);
 gl::Texture make_matte_texture(const Image& image);
 
 class ImageWarper {

@@ -92,7 +92,7 @@ void TweenRenderer::build_from_mesh() {
   m.distance_diagonals = 1.4f;
   const MeshSamples samples = render_mesh_samples(*object_, directions, sample_size_, m.distance_diagonals, sample_style_);
   m.data = exact_tween_data(samples, *object_, cells, points_);
-  m.images = samples.images;
+  for (const Image& image : samples.images) m.images.push_back(without_floor(image));
   m.bounds = object_->topology.bounds;
   model_ = std::move(m);
   built_for_ = sampling;

@@ -1,9 +1,13 @@
 // A product photo as the warp reads it when composing by mattes, mirroring
 // client/render/tween/image_warper.cpp matte_sample() and client/viewer/turntable_view.cpp
 // add_sample(): the white a photo was laid over taken out where its matte covers a pixel in
-// part; colour bled outward past the outline; alpha the signed distance to the outline (0.5 on
+// part; colour bled outward past the outline by kBleedPixels (beyond, the floor layer as the
+// photo has it); alpha the signed distance to the outline (0.5 on
 // it, +-1 at kMatteRange pixels inside / outside), so it interpolates under a warp and a blend.
 export const kMatteRange = 16;
+// How far past the outline the object's colour is bled; further out a photo's colours are its
+// floor layer on white (a shadow), kept (image_warper.hpp kBleedPixels).
+export const kBleedPixels = 1.5;
 
 // Distances from every pixel to the nearest `seed` pixel's centre, and which pixel that is
 // (dead reckoning: two raster passes carrying the nearest seed, Grevera 2004).
@@ -44,7 +48,7 @@ export function matteSample(photo, matte, w, h) {
     let d = inside[i] ? toBackground.dist[i] - 0.5 : 0.5 - toObject.dist[i];
     if (!Number.isFinite(d)) d = inside[i] ? kMatteRange : -kMatteRange;
     if (a > 0 && a < 255 && Math.abs(d) <= 1) d = a / 255 - 0.5;
-    if (a < 32 && toObject.near[i] >= 0) for (let c = 0; c < 3; ++c) out[4 * i + c] = colour[4 * toObject.near[i] + c];
+    if (a < 32 && toObject.near[i] >= 0 && (a > 0 || toObject.dist[i] <= kBleedPixels)) for (let c = 0; c < 3; ++c) out[4 * i + c] = colour[4 * toObject.near[i] + c];
     out[4 * i + 3] = Math.round(Math.min(Math.max(0.5 + d / (2 * kMatteRange), 0), 1) * 255);
   }
   return out;

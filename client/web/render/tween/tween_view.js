@@ -6,7 +6,7 @@
 import { pathWeights } from '../../common/tween_data.js';
 import { locateView } from '../../common/view_sphere.js';
 import { buildWarpMesh } from '../../common/warp_mesh.js';
-import { kMatteRange } from './matte_sample.js';
+import { kBleedPixels, kMatteRange } from './matte_sample.js';
 
 function compile(gl, type, source) {
   const shader = gl.createShader(type);
@@ -36,7 +36,7 @@ export class TweenView {
   constructor(gl, product, shaders) {
     this.gl = gl;
     this.product = product;
-    this.programs = [1, 2, 3].map((n) => program(gl, shaders.vertex, shaders.fragment, [`SAMPLES ${n}`, 'MATTE', `MATTE_RANGE ${kMatteRange.toFixed(1)}`]));
+    this.programs = [1, 2, 3].map((n) => program(gl, shaders.vertex, shaders.fragment, [`SAMPLES ${n}`, 'MATTE', `MATTE_RANGE ${kMatteRange.toFixed(1)}`, `BLEED ${kBleedPixels.toFixed(1)}`]));
     this.textures = new Array(product.directions.length).fill(null);
     this.cells = new Array(product.cells).fill(null);
     this.meshes = new Array(product.cells).fill(null);

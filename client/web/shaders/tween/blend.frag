@@ -5,7 +5,8 @@
 // the sample's outline. The view's outline is where the weighted distances cross zero, a
 // sample's say that a pixel is object counting at most INSIDE_SAY pixels deep (so the pixel is
 // object where the samples agree it is); the colour comes from the samples that see the object
-// at the pixel. Premultiplied output.
+// at the pixel; under it the floor layer (a shadow: the samples' colours further than BLEED + 1
+// pixels outside their outline). Premultiplied output.
 // Samplers are indexed by constants only (GLSL ES 3.00), so the samples are unrolled.
 precision highp float;
 in vec2 uv0;
@@ -19,8 +20,9 @@ out vec4 colour;
 
 #ifdef MATTE
 const float INSIDE_SAY = 2.0;
-float distance_sum = 0.0, total = 0.0;
-vec3 rgb = vec3(0.0);
+const float FLOOR_NOISE = 0.03;
+float distance_sum = 0.0, total = 0.0, floor_total = 0.0;
+vec3 rgb = vec3(0.0), floor_rgb = vec3(0.0);
 
 void add(vec4 texel, float weight) {
   float d = (texel.a - 0.5) * (2.0 * MATTE_RANGE);
@@ -28,6 +30,9 @@ void add(vec4 texel, float weight) {
   float w = weight * (0.01 + clamp(d + 0.5, 0.0, 1.0));
   rgb += w * texel.rgb;
   total += w;
+  float f = weight * clamp(-(d + BLEED), 0.0, 1.0);
+  floor_rgb += f * texel.rgb;
+  floor_total += f;
 }
 #endif
 
@@ -41,7 +46,11 @@ void main() {
   add(texture(sample2, uv2), weights.z);
 #endif
   float coverage = clamp(distance_sum + 0.5, 0.0, 1.0);
-  colour = vec4(rgb / max(total, 1e-6) * coverage, coverage);
+  vec3 on_white = floor_total > 0.0 ? floor_rgb / floor_total : vec3(1.0);
+  float floor_alpha = 1.0 - min(on_white.r, min(on_white.g, on_white.b));
+  // A JPEG rings a few levels round an outline: so faint a floor is none.
+  float kept = max(floor_alpha - FLOOR_NOISE, 0.0) / max(floor_alpha, 1e-6);
+  colour = vec4(rgb / max(total, 1e-6) * coverage, coverage) + (1.0 - coverage) * kept * vec4(on_white - vec3(1.0 - floor_alpha), floor_alpha);
 #else
   colour = weights.x * texture(sample0, uv0);
 #if SAMPLES > 1
