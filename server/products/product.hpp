@@ -29,7 +29,7 @@ struct PhotoProductOptions {
   float arc_degrees = 0;   // the turn from the first photo to the last; 0: a full turn
   int max_side = 512;      // photos are scaled down to at most this many pixels a side
   std::string matte = "auto";  // auto: key a plain backdrop when there is one; key: refuse if not; none
-  int control_points = 160;  // per pair at most, outline included (12 bytes each)
+  int control_points = 130;  // per pair at most, outline included (12 bytes each; 160 bought 0.1 dB for 20% more)
 };
 
 // Reads a folder of photos taken around an object, in file-name order (see photo_folder.hpp),

@@ -40,7 +40,7 @@ DenseMatches dense_matches(const Image& a, const Image& b, const DenseMatchOptio
 cv::Point2f flow_at(const cv::Mat& flow, cv::Point2f p);
 
 struct DistilOptions {
-  int max_points = 160;          // control points of the pair in all (12 bytes each in the tween data)
+  int max_points = 130;          // control points of the pair in all (12 bytes each in the tween data)
   float min_spacing = 7.0f;      // pixels between chosen points
   float tolerance = 0.6f;        // pixels: stop when the weighted warp error is below this everywhere
   int points_per_round = 24;     // added before the error is measured again
