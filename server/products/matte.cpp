@@ -14,7 +14,6 @@ float colour_distance(const uint8_t* a, const cv::Vec3f& b) {
   return std::sqrt(dr * dr + dg * dg + db * db);
 }
 
-
 int border_band(const Image& photo) { return std::max(2, std::min(photo.width, photo.height) / 50); }
 
 std::vector<const uint8_t*> border_pixels(const Image& photo) {
@@ -67,6 +66,29 @@ cv::Mat floor_shade(const Image& photo, const cv::Vec3f& backdrop) {
   return shade;
 }
 
+// Pixels further than `threshold` from the backdrop's colour.
+cv::Mat unlike_backdrop(const Image& photo, const cv::Vec3f& backdrop, float threshold) {
+  cv::Mat out(photo.height, photo.width, CV_8U);
+  for (int y = 0; y < photo.height; ++y)
+    for (int x = 0; x < photo.width; ++x) out.at<uint8_t>(y, x) = colour_distance(photo.at(x, y), backdrop) > threshold ? 255 : 0;
+  return out;
+}
+
+// The connected pieces of `mask` that have a pixel in `touching`.
+cv::Mat pieces_touching(const cv::Mat& mask, const cv::Mat& touching) {
+  cv::Mat pieces;
+  const int count = cv::connectedComponents(mask, pieces, 8);
+  std::vector<uint8_t> keep(size_t(count), 0);
+  for (int y = 0; y < mask.rows; ++y)
+    for (int x = 0; x < mask.cols; ++x)
+      if (mask.at<uint8_t>(y, x) && touching.at<uint8_t>(y, x)) keep[size_t(pieces.at<int>(y, x))] = 255;
+  keep[0] = 0;
+  cv::Mat out(mask.size(), CV_8U);
+  for (int y = 0; y < mask.rows; ++y)
+    for (int x = 0; x < mask.cols; ++x) out.at<uint8_t>(y, x) = keep[size_t(pieces.at<int>(y, x))];
+  return out;
+}
+
 // The largest piece of `mask` with the holes it encloses filled (a hole the colour of the
 // backdrop inside an object is far more often paint than air), and its area.
 cv::Mat largest_piece(const cv::Mat& mask, int* area) {
@@ -110,10 +132,7 @@ MatteResult key_plain_background(Image& photo) {
   // Object: clearly unlike the backdrop, and not floor the object darkens (SPEC T16). Speckles
   // are opened away; the outline is what the backdrop, flooded from the border, does not reach.
   const float threshold = std::max(24.0f, 2.5f * noise);
-  cv::Mat shade = floor_shade(photo, backdrop);
-  cv::Mat unlike(h, w, CV_8U);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) unlike.at<uint8_t>(y, x) = colour_distance(photo.at(x, y), backdrop) > threshold ? 255 : 0;
+  const cv::Mat unlike = unlike_backdrop(photo, backdrop, threshold);
   int area = 0;
   const cv::Mat with_shade = largest_piece(unlike, &area);
   result.object_fraction = double(area) / double(w * h);
@@ -126,45 +145,28 @@ MatteResult key_plain_background(Image& photo) {
     return result;
   }
   // The shadow is taken out of the object only in its lower half (of what stands out, shadow
-  // included), where that leaves most of it and what it takes lies under the rest: a grey
-  // product is not its own shadow. (A plain grey part low down that meets the shadow can go
-  // with it.)
+  // included) and where it fades into the backdrop (a plain grey part of the object is shut off
+  // from the backdrop by its own edge), and only where that leaves most of the object and what
+  // it takes lies under the rest: a grey product is not its own shadow. (A plain grey part low
+  // down that meets the shadow can go with it.)
+  cv::Mat shade = floor_shade(photo, backdrop);
   const cv::Rect box = cv::boundingRect(with_shade);
   shade(cv::Rect(0, 0, w, box.y + box.height / 2)).setTo(0);
-  // And only shade that fades into the backdrop: a plain grey part of the object is shut off from
-  // the backdrop by its own edge.
   cv::Mat backdrop_near;
   cv::dilate(~unlike & ~shade, backdrop_near, cv::getStructuringElement(cv::MORPH_RECT, {3, 3}));
-  cv::Mat shade_pieces;
-  const int shade_count = cv::connectedComponents(shade, shade_pieces, 8);
-  std::vector<bool> fades(size_t(shade_count), false);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      if (shade.at<uint8_t>(y, x) && backdrop_near.at<uint8_t>(y, x)) fades[size_t(shade_pieces.at<int>(y, x))] = true;
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      if (!fades[size_t(shade_pieces.at<int>(y, x))]) shade.at<uint8_t>(y, x) = 0;
+  shade = pieces_touching(shade, backdrop_near);
   int core_area = 0;
   cv::Mat matte = largest_piece(unlike & ~shade, &core_area);
-  const cv::Mat taken = with_shade & ~matte;
-  const cv::Moments core = cv::moments(matte, true), under = cv::moments(taken, true);
-  const bool split = core_area >= area / 2 && under.m00 > 0 && under.m01 / under.m00 > core.m01 / core.m00;
-  if (!split) matte = with_shade;
-  else result.object_fraction = double(core_area) / double(w * h);
-  // The floor layer: what differs from the backdrop around the object, kept as it would look on
+  const cv::Moments core = cv::moments(matte, true), under = cv::moments(with_shade & ~matte, true);
+  if (core_area >= area / 2 && under.m00 > 0 && under.m01 / under.m00 > core.m01 / core.m00)
+    result.object_fraction = double(core_area) / double(w * h);
+  else
+    matte = with_shade;
+  // The floor layer: what differs from the backdrop next to the object, kept as it would look on
   // white (a shadow, a reflection); the rest of the backdrop becomes white.
-  cv::Mat differs(h, w, CV_8U), near;
-  const float faint = std::max(8.0f, 1.5f * noise);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) differs.at<uint8_t>(y, x) = colour_distance(photo.at(x, y), backdrop) > faint ? 255 : 0;
+  cv::Mat near;
   cv::dilate(matte, near, cv::getStructuringElement(cv::MORPH_ELLIPSE, {7, 7}));
-  cv::Mat pieces;
-  const int count = cv::connectedComponents(differs & ~matte, pieces, 8);
-  std::vector<bool> touches(size_t(count), false);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      if (near.at<uint8_t>(y, x) && !matte.at<uint8_t>(y, x)) touches[size_t(pieces.at<int>(y, x))] = true;
-  touches[0] = false;
+  const cv::Mat floor = pieces_touching(unlike_backdrop(photo, backdrop, std::max(8.0f, 1.5f * noise)) & ~matte, near);
   cv::Mat soft = matte.clone();
   cv::GaussianBlur(soft, soft, {3, 3}, 0.7);  // a pixel of soft edge against stair steps
   int layer_pixels = 0;
@@ -179,7 +181,7 @@ MatteResult key_plain_background(Image& photo) {
         for (int c = 0; c < 3; ++c) p[c] = uint8_t(std::clamp(std::round((float(p[c]) - (1.0f - a) * backdrop[c]) / a), 0.0f, 255.0f));
       }
       if (p[3] != 0) continue;
-      const bool layer = touches[size_t(pieces.at<int>(y, x))];
+      const bool layer = floor.at<uint8_t>(y, x) != 0;
       layer_pixels += layer;
       for (int c = 0; c < 3; ++c) p[c] = layer ? uint8_t(std::min(255.0f, std::round(float(p[c]) * 255.0f / std::max(backdrop[c], 1.0f)))) : 255;
     }
