@@ -56,11 +56,9 @@ cv::Mat detail_weight(const Image& a, const cv::Mat& inside) {
   return 0.25f + 0.75f * weight;
 }
 
-}  // namespace
-
 // Pixels of `from` (inside its matte) whose flow lands inside `to`'s matte and comes back within
 // `max_round_trip` pixels by `back`.
-static cv::Mat verified(const cv::Mat& flow, const cv::Mat& back, const cv::Mat& inside_from, const cv::Mat& inside_to, float max_round_trip) {
+cv::Mat verified(const cv::Mat& flow, const cv::Mat& back, const cv::Mat& inside_from, const cv::Mat& inside_to, float max_round_trip) {
   cv::Mat reliable(flow.size(), CV_8U, cv::Scalar(0));
   const float limit = max_round_trip * max_round_trip;
   for (int y = 0; y < flow.rows; ++y)
@@ -75,6 +73,8 @@ static cv::Mat verified(const cv::Mat& flow, const cv::Mat& back, const cv::Mat&
     }
   return reliable;
 }
+
+}  // namespace
 
 cv::Point2f flow_at(const cv::Mat& flow, cv::Point2f p) {
   const float x = std::clamp(p.x, 0.0f, float(flow.cols - 1)), y = std::clamp(p.y, 0.0f, float(flow.rows - 1));
