@@ -78,18 +78,22 @@ try:
           "the drag sent and received nothing")
 
     # Lifecycle (STYLE 17): moved in the page, the element's handlers are there once, so the same
-    # drag turns it as far as before (twice as far when a re-connection added them again).
+    # drag turns it as far as before (twice as far when a re-connection added them again). The
+    # turn is read while the button is still held: the fling after it depends on how fast a
+    # loaded machine delivers the moves, the turn under the pointer does not.
     def turned_by_drag():
+        time.sleep(1.5)  # the last fling dies down
         start_az = driver.execute_script(f"return {element}.azimuth")
         ActionChains(driver).move_to_element(driver.execute_script(f"return {element}.canvas")).click_and_hold() \
-            .move_by_offset(30, 0).move_by_offset(30, 0).release().perform()
-        time.sleep(1.5)  # inertia dies down
-        return driver.execute_script(f"return {element}.azimuth") - start_az
+            .move_by_offset(30, 0).move_by_offset(30, 0).perform()
+        turned = driver.execute_script(f"return {element}.azimuth") - start_az
+        ActionChains(driver).release().perform()
+        return turned
     first_turn = turned_by_drag()
     driver.execute_script(f"const e = {element}; const box = document.createElement('div'); document.body.prepend(box); box.append(e);")
     time.sleep(1.0)
     moved_turn = turned_by_drag()
-    check(first_turn != 0 and 0.5 < moved_turn / first_turn < 1.7,
+    check(first_turn != 0 and 0.7 < moved_turn / first_turn < 1.4,
           f"moved in the page, a drag turns it once as far ({first_turn:.1f} then {moved_turn:.1f} degrees)")
     # One animation loop however often its attributes restart it: an element restarted five times
     # auto-spins as fast as one never restarted, side by side in the same frames (a loop per
