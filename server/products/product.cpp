@@ -72,7 +72,7 @@ Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions&
     const DenseMatches matches = dense_matches(a, b, match_options);
     exposures.push_back(pair_exposure(matches, a, b, pair[0], pair[1]));
     std::vector<Landmark> outline;
-    if (product.matted) outline = with_outline({}, outline_landmarks(a, b, std::max(8, a.height / 32)), distil.min_spacing);
+    if (product.matted) outline = outline_landmarks(a, b, std::max(8, a.height / 32));
     const size_t on_outline = outline.size();
     const std::vector<Landmark> points = distil_control_points(matches, a, std::move(outline), distil);
     product.data.cells.push_back(cell_from_landmarks(points, pair[0], pair[1]));

@@ -55,14 +55,4 @@ std::vector<Landmark> outline_landmarks(const Image& a, const Image& b, int spac
   return out;
 }
 
-std::vector<Landmark> with_outline(std::vector<Landmark> landmarks, const std::vector<Landmark>& outline, float min_spacing) {
-  const size_t inside = landmarks.size();
-  for (const Landmark& o : outline) {
-    bool clear = true;
-    for (size_t i = 0; i < inside && clear; ++i) clear = glm::length(landmarks[i].source - o.source) >= min_spacing;
-    if (clear) landmarks.push_back(o);
-  }
-  return landmarks;
-}
-
 }  // namespace inkwire

@@ -17,8 +17,4 @@ namespace inkwire {
 // are left out (there the ends slide along a nearly level edge). Positions are pixel centres.
 std::vector<Landmark> outline_landmarks(const Image& a, const Image& b, int spacing = 16);
 
-// `landmarks` with the outline points added that lie at least `min_spacing` pixels from every
-// landmark already there (NCC landmarks take precedence inside the object).
-std::vector<Landmark> with_outline(std::vector<Landmark> landmarks, const std::vector<Landmark>& outline, float min_spacing);
-
 }  // namespace inkwire

@@ -253,8 +253,5 @@ TEST(ProductTest, OutlinePointsFollowTheObjectsEndsRowByRow) {
     const float half_a = 50 - p.source.x, expected = left ? 58 - half_a * 24.0f / 30.0f : 58 + (p.source.x - 50) * 24.0f / 30.0f;
     EXPECT_NEAR(p.target.x, expected, 1.5f) << p.source.x << "," << p.source.y;
   }
-  // NCC landmarks keep their place; outline points near them are left out.
-  const std::vector<Landmark> merged = with_outline({{.source = points[0].source + glm::vec2(2, 0), .target = {}, .match = 0.9f}}, points, 8.0f);
-  EXPECT_EQ(merged.size(), points.size());  // one outline point fell within 8 pixels of the landmark
   EXPECT_THROW(outline_landmarks(a, Image(10, 10), 8), Error);
 }
