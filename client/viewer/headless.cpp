@@ -73,7 +73,9 @@ int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& 
   };
   for (int i = 0; i < o.frames; ++i) {
     hear_until(tick);
-    sync.poll();
+    // The first frame shows what the wait above made ready (it has just polled): polling again
+    // could take in the next photo first, and the first view would not be the one-photo view.
+    if (i > 0) sync.poll();
     // A product's view is this visitor's own: a full turn over the frames, or, following, the
     // newest view a presenter sent; presenting, each frame's view goes to the session.
     TurntableOrbit& view = sync.view().orbit();
