@@ -34,7 +34,10 @@ export class CameraSender {
       if (this.off || this.busy || !video.videoWidth) return;
       this.busy = true;
       try {
-        send(await this.crop(now()));
+        const crop = await this.crop(now());
+        // Switched off while it was being encoded: a camera turned off sends nothing more.
+        if (this.off) return;
+        send(crop);
         ++this.sent;
       } finally {
         this.busy = false;
