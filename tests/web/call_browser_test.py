@@ -137,12 +137,13 @@ try:
     checks.check(level > -60, f"the microphone's level meter moved before joining ({level:.1f} dB)")
 
     # Smiles arrive as smiles (the clips smile from their fourth second on). Watched for 15 s, and
-    # on until every smile has come (up to 45 s): on a loaded machine the native member plays its
+    # on until every smile has come (up to 25 s, while the native member is still in the call): on
+    # a loaded machine the native member plays its
     # clip slower than real time, and the analyst runs behind.
     seen = {}
     smiled = lambda: all({"smile", "laugh"} & seen.get(key, set()) for key in (("ada", "Bea"), ("bea", "Ada"), ("ada", "Nat")))
     start = time.time()
-    while time.time() < start + 15 or (yale and not smiled() and time.time() < start + 45):
+    while time.time() < start + 15 or (yale and not smiled() and time.time() < start + 25):
         for viewer, driver in drivers.items():
             for m in driver.execute_script(f"return {element}.members"):
                 seen.setdefault((viewer, m["name"]), set()).add(m["expression"])
