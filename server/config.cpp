@@ -39,9 +39,11 @@ ProductSource product_from_json(const SessionConfig& session, const nlohmann::js
   p.photos = j.value("photos", "");
   p.mesh = j.value("mesh", "");
   if (p.photos.empty() == p.mesh.empty()) throw Error("session '" + session.name + "': a product is made from \"photos\" or a \"mesh\", one of the two");
-  p.photo_options.step_degrees = j.value("step", 0.0f);
-  p.photo_options.arc_degrees = j.value("arc", 0.0f);
-  p.photo_options.max_side = j.value("max_side", 512);
+  p.photo_options.layout.step_degrees = j.value("step", 0.0f);
+  p.photo_options.layout.arc_degrees = j.value("arc", 0.0f);
+  p.photo_options.layout.rows = j.value("rows", 0);
+  p.photo_options.layout.elevations = j.value("elevations", std::vector<float>{});
+  p.photo_options.layout.max_side = j.value("max_side", 512);
   p.photo_options.matte = j.value("matte", "auto");
   p.mesh_options.samples = j.value("samples", 24);
   p.mesh_options.size = j.value("size", 512);

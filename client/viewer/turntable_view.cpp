@@ -62,8 +62,25 @@ void TurntableView::set_style(const std::vector<std::string>& settings) {
   }
 }
 
-bool TurntableView::all_round() const {
-  return std::any_of(product_.directions.begin(), product_.directions.end(), [](const glm::vec3& d) { return std::abs(d.y) > 0.5f; });
+glm::vec2 TurntableView::elevation_range() const {
+  glm::vec2 range(90.0f, -90.0f);
+  for (const glm::vec3& d : product_.directions) {
+    const float e = TurntableOrbit::from_direction(d).elevation;
+    range = {std::min(range.x, e), std::max(range.y, e)};
+  }
+  return range;
+}
+
+float TurntableView::row_elevation(float elevation, int rows) const {
+  std::vector<float> heights;  // the rows' elevations, lowest first (directions travel as i16: rows within half a degree are one)
+  for (const glm::vec3& d : product_.directions) heights.push_back(TurntableOrbit::from_direction(d).elevation);
+  std::sort(heights.begin(), heights.end());
+  heights.erase(std::unique(heights.begin(), heights.end(), [](float a, float b) { return b - a < 0.5f; }), heights.end());
+  const auto nearest = std::min_element(heights.begin(), heights.end(), [&](float a, float b) {
+    return std::abs(a - elevation) < std::abs(b - elevation);
+  });
+  const long index = std::clamp(long(nearest - heights.begin()) + rows, 0L, long(heights.size()) - 1);
+  return heights[size_t(index)];
 }
 
 int TurntableView::nearest_sample(const TurntableOrbit& orbit) const {

@@ -58,8 +58,13 @@ class TurntableView {
   int cells() const { return product_.cells; }
   int cells_loaded() const { return int(cells_seen_.size()); }
   bool complete() const { return loaded_ == samples() && cells_loaded() == cells(); }
-  // True when the samples look from above and below too (a geodesic sphere), not round one ring.
-  bool all_round() const;
+  // The lowest and highest elevation of the samples (degrees): one ring's alone, a few rows'
+  // (SPEC T17), or nearly -90..90 on a geodesic sphere. Views are kept between them: outside,
+  // nothing is there to synthesise from.
+  glm::vec2 elevation_range() const;
+  // The elevation of the nearest row of samples above (`rows` > 0) or below `elevation`, `rows`
+  // rows on; the range's end when there are no more.
+  float row_elevation(float elevation, int rows) const;
   // The sample whose direction is nearest `orbit`'s, for stepping one sample at a time.
   int nearest_sample(const TurntableOrbit& orbit) const;
   // The azimuth and elevation of sample `index`, in TurntableOrbit's terms.

@@ -127,8 +127,15 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
     TurntableView* product = sync.view().turntable();
     if (product) {
       if (!turntable_started) orbit = Orbit{.azimuth = 0, .elevation = 0, .distance = 1.0f}, turntable_started = true;
-      if (!product->all_round()) orbit.elevation = 0;  // the photos go round one ring
       inertia.follow(orbit, dt);
+      if (input.view_step_y != 0) {
+        orbit.elevation = product->row_elevation(orbit.elevation, input.view_step_y);
+        inertia.stop();
+        dirty = true;
+      }
+      // Up and down as far as there are rows of photos (one ring: its own height).
+      const glm::vec2 heights = product->elevation_range();
+      orbit.elevation = std::clamp(orbit.elevation, heights.x, heights.y);
       if (input.view_step_x != 0) {
         const int n = product->samples();
         const int next = ((product->nearest_sample(sync.view().orbit()) + input.view_step_x) % n + n) % n;

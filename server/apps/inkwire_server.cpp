@@ -72,9 +72,13 @@ int main(int argc, char** argv) {
   auto* photos = add->add_option("--photos", source.photos, "folder of photos taken around the object, in file-name order");
   auto* mesh = add->add_option("--mesh", source.mesh, "a mesh rendered into samples on a ring instead");
   photos->excludes(mesh);
-  add->add_option("--step", source.photo_options.step_degrees, "degrees the view turns from one photo to the next, negative if the turntable turned the other way (default: a full turn)")->needs(photos);
-  add->add_option("--arc", source.photo_options.arc_degrees, "degrees from the first photo to the last (default: a full turn)")->needs(photos);
-  add->add_option("--max-side", source.photo_options.max_side, "photos are scaled to at most this many pixels a side")->needs(photos);
+  PhotoLayout& layout = source.photo_options.layout;
+  add->add_option("--step", layout.step_degrees, "degrees the view turns from one photo to the next, negative if the turntable turned the other way (default: a full turn)")->needs(photos);
+  add->add_option("--arc", layout.arc_degrees, "degrees from the first photo to the last of a row (default: a full turn)")->needs(photos);
+  add->add_option("--rows", layout.rows, "rings of photos at several camera heights, the files in order, lowest first (sub-folders row1, row2, ... need no --rows)")->needs(photos);
+  add->add_option("--elevations", layout.elevations, "the rows' camera heights in degrees, lowest first, comma-separated (default: level, then 15 degrees apart)")
+      ->delimiter(',')->needs(photos);
+  add->add_option("--max-side", layout.max_side, "photos are scaled to at most this many pixels a side (32..2048, default 512)")->needs(photos);
   add->add_option("--matte", source.photo_options.matte, "auto: key a plain backdrop when there is one; key: refuse if not; none")
       ->needs(photos);
   add->add_option("--samples", source.mesh_options.samples, "samples on the ring (default 24)")->needs(mesh);

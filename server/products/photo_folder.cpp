@@ -42,6 +42,83 @@ std::vector<glm::vec3> ring_frame(const std::vector<glm::vec3>& directions) {
   return out;
 }
 
+// 12 for a folder named "row12" (any case), 0 for any other name.
+int row_number(const std::string& name) {
+  if (name.size() < 4 || name.size() > 6) return 0;
+  std::string lower = name;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (lower.compare(0, 3, "row") != 0 || !std::all_of(lower.begin() + 3, lower.end(), [](unsigned char c) { return std::isdigit(c); }))
+    return 0;
+  return std::stoi(lower.substr(3));
+}
+
+struct Listing {
+  std::vector<fs::path> photos;  // in file-name order
+  std::vector<std::pair<int, fs::path>> row_folders;
+  bool calibrated = false;       // a *_par.txt is there
+};
+
+// What a folder holds: photos, row folders (when `rows_allowed`), companions; anything else is
+// refused by name.
+Listing list_folder(const fs::path& folder, bool rows_allowed) {
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec)) throw Error(folder.string() + " is not a folder");
+  Listing out;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    const fs::path& file = entry.path();
+    if (file.filename().string().ends_with("_par.txt")) out.calibrated = true;
+    if (is_companion(file)) continue;
+    if (entry.is_directory()) {
+      const int row = rows_allowed ? row_number(file.filename().string()) : 0;
+      if (row == 0)
+        throw Error(file.string() + " is not a photo (a folder of photos holds photos, or row folders row1, row2, ... from the lowest camera up)");
+      out.row_folders.push_back({row, file});
+      continue;
+    }
+    if (!entry.is_regular_file()) throw Error(file.string() + " is not a photo");
+    if (!is_photo_name(file)) throw Error(file.string() + " is not a photo (JPEG, PNG, TIFF, BMP or WebP)");
+    out.photos.push_back(file);
+  }
+  if (ec) throw Error("cannot list " + folder.string() + ": " + ec.message());
+  std::sort(out.photos.begin(), out.photos.end());
+  std::sort(out.row_folders.begin(), out.row_folders.end());
+  return out;
+}
+
+// Row r's elevation: as given, else level first and then 15 degrees apart (closer when more
+// than 6 rows would pass overhead), the spacing spin-viewer photographers commonly use.
+std::vector<float> row_elevations(const PhotoLayout& layout, int rows) {
+  if (!layout.elevations.empty()) {
+    if (int(layout.elevations.size()) != rows)
+      throw Error(std::to_string(layout.elevations.size()) + " elevations given for " + std::to_string(rows) + " rows");
+    for (size_t r = 0; r < layout.elevations.size(); ++r) {
+      if (!(std::abs(layout.elevations[r]) <= 90.0f)) throw Error("elevations must be -90..90 degrees");
+      if (r > 0 && !(layout.elevations[r] > layout.elevations[r - 1]))
+        throw Error("elevations go from the lowest row up: each higher than the one before");
+    }
+    return layout.elevations;
+  }
+  const float spacing = std::min(15.0f, 90.0f / float(rows));
+  std::vector<float> out;
+  for (int r = 0; r < rows; ++r) out.push_back(spacing * float(r));
+  return out;
+}
+
+// Triangles between neighbouring rows of `columns` photos: each quad of two photos in row r and
+// the two above them split along one diagonal. A triangle's first sample is the one its control
+// points are found from (to its row neighbour and to the photo above or below it).
+std::vector<std::vector<uint16_t>> row_triangles(int rows, int columns, bool closed) {
+  std::vector<std::vector<uint16_t>> cells;
+  for (int r = 0; r + 1 < rows; ++r)
+    for (int c = 0; c < columns - (closed ? 0 : 1); ++c) {
+      const int next = (c + 1) % columns;
+      const auto at = [&](int row, int column) { return uint16_t(row * columns + column); };
+      cells.push_back({at(r, c), at(r, next), at(r + 1, c)});
+      cells.push_back({at(r + 1, next), at(r + 1, c), at(r, next)});
+    }
+  return cells;
+}
+
 }  // namespace
 
 Image load_upright_photo(const fs::path& file) {
@@ -67,62 +144,91 @@ Image load_upright_photo(const fs::path& file) {
   return out;
 }
 
-PhotoFolder read_photo_folder(const fs::path& folder, float step_degrees, float arc_degrees, int max_side) {
-  std::error_code ec;
-  if (!fs::is_directory(folder, ec)) throw Error(folder.string() + " is not a folder");
-  if (std::abs(step_degrees) > 180) throw Error("--step must be -180..180 degrees");
-  if (std::abs(arc_degrees) > 360) throw Error("--arc must be -360..360 degrees");
-  if (step_degrees != 0 && arc_degrees != 0) throw Error("give --step or --arc, not both");
+PhotoFolder read_photo_folder(const fs::path& folder, const PhotoLayout& layout) {
+  if (std::abs(layout.step_degrees) > 180) throw Error("--step must be -180..180 degrees");
+  if (std::abs(layout.arc_degrees) > 360) throw Error("--arc must be -360..360 degrees");
+  if (layout.step_degrees != 0 && layout.arc_degrees != 0) throw Error("give --step or --arc, not both");
+  if (layout.rows < 0 || layout.rows > 36) throw Error("--rows must be 1..36");
 
+  const Listing listing = list_folder(folder, true);
   PhotoFolder out;
-  std::vector<fs::path> files;
-  bool calibrated = false;
-  for (const auto& entry : fs::directory_iterator(folder, ec)) {
-    const fs::path& file = entry.path();
-    if (file.filename().string().ends_with("_par.txt")) calibrated = true;
-    if (is_companion(file)) continue;
-    if (!entry.is_regular_file()) throw Error(file.string() + " is not a photo (a folder of photos holds no folders)");
-    if (!is_photo_name(file)) throw Error(file.string() + " is not a photo (JPEG, PNG, TIFF, BMP or WebP)");
-    files.push_back(file);
-  }
-  if (ec) throw Error("cannot list " + folder.string() + ": " + ec.message());
-  std::sort(files.begin(), files.end());
-
-  if (calibrated) {
+  std::vector<std::vector<std::string>> rows;  // names relative to the folder, per row
+  if (!listing.row_folders.empty()) {
+    if (!listing.photos.empty())
+      throw Error(listing.photos.front().string() + " is beside row folders: put every photo in its row's folder (row1, row2, ...)");
+    for (size_t r = 0; r < listing.row_folders.size(); ++r)
+      if (listing.row_folders[r].first != int(r) + 1)
+        throw Error(folder.string() + " has row folders " + listing.row_folders[r].second.filename().string() + " but no row" +
+                    std::to_string(r + 1) + " (numbered from row1, the lowest camera, without gaps)");
+    if (layout.rows != 0 && layout.rows != int(listing.row_folders.size()))
+      throw Error("--rows " + std::to_string(layout.rows) + " but " + folder.string() + " holds " + std::to_string(listing.row_folders.size()) + " row folders");
+    for (const auto& [number, row_folder] : listing.row_folders) {
+      const Listing row = list_folder(row_folder, false);
+      if (row.calibrated) throw Error(row_folder.string() + ": a calibration file describes one ring of photos, not rows");
+      rows.emplace_back();
+      for (const fs::path& f : row.photos) rows.back().push_back(row_folder.filename().string() + "/" + f.filename().string());
+    }
+  } else if (listing.calibrated) {
     // The calibration names the photos and their order; photos it does not name are refused.
+    if (layout.rows > 1) throw Error(folder.string() + ": a calibration file describes one ring of photos, not rows");
     const PhotoRing ring = load_photo_ring(folder);
     std::set<std::string> named(ring.names.begin(), ring.names.end());
-    for (const fs::path& f : files)
+    for (const fs::path& f : listing.photos)
       if (!named.count(f.filename().string())) throw Error(f.string() + " is not in the folder's calibration");
-    out.names = ring.names;
+    rows.push_back(ring.names);
     out.directions = ring_frame(ring.directions);
   } else {
-    for (const fs::path& f : files) out.names.push_back(f.filename().string());
-  }
-  const int n = int(out.names.size());
-  if (n < 3) throw Error(folder.string() + " holds " + std::to_string(n) + " photo" + (n == 1 ? "" : "s") + "; a turntable needs at least 3");
-  if (n > 360) throw Error(folder.string() + " holds " + std::to_string(n) + " photos; at most 360 (one per degree)");
-
-  if (!calibrated) {
-    const float step = step_degrees != 0 ? step_degrees : arc_degrees != 0 ? arc_degrees / float(n - 1) : 360.0f / float(n);
-    if (std::abs(step) * float(n - 1) > 360.0f + 1e-3f)
-      throw Error(std::to_string(n) + " photos " + std::to_string(step) + " degrees apart turn more than once round");
-    for (int i = 0; i < n; ++i) {
-      const float az = glm::radians(step * float(i));
-      out.directions.push_back({std::sin(az), 0.0f, std::cos(az)});
+    const int count = std::max(layout.rows, 1), n = int(listing.photos.size());
+    if (n % count != 0)
+      throw Error(folder.string() + " holds " + std::to_string(n) + " photos, which do not make " + std::to_string(count) + " rows of one length");
+    for (int r = 0; r < count; ++r) {
+      rows.emplace_back();
+      for (int c = 0; c < n / count; ++c) rows.back().push_back(listing.photos[size_t(r * (n / count) + c)].filename().string());
     }
   }
-  // Neighbours in order; the last and the first too when the photos go all the way round (the
-  // gap that closes the ring is no wider than one and a half of the others).
-  std::vector<float> steps;
-  for (int i = 0; i + 1 < n; ++i) {
-    out.pairs.push_back({uint16_t(i), uint16_t(i + 1)});
-    steps.push_back(glm::degrees(std::acos(std::clamp(glm::dot(out.directions[size_t(i)], out.directions[size_t(i + 1)]), -1.0f, 1.0f))));
+  const int columns = int(rows.front().size());
+  for (size_t r = 0; r < rows.size(); ++r) {
+    const std::string where = rows.size() > 1 ? folder.string() + " row " + std::to_string(r + 1) : folder.string();
+    const int n = int(rows[r].size());
+    if (n < 3) throw Error(where + " holds " + std::to_string(n) + " photo" + (n == 1 ? "" : "s") + "; a turntable needs at least 3");
+    if (n != columns)
+      throw Error(where + " holds " + std::to_string(n) + " photos and row 1 " + std::to_string(columns) + ": every row turns in the same steps");
+    for (const std::string& name : rows[r]) out.names.push_back(name);
   }
-  std::sort(steps.begin(), steps.end());
-  const float closing = glm::degrees(std::acos(std::clamp(glm::dot(out.directions.back(), out.directions.front()), -1.0f, 1.0f)));
-  out.closed = closing > 1e-3f && closing <= 1.5f * steps[steps.size() / 2] + 1e-3f;
-  if (out.closed) out.pairs.push_back({uint16_t(n - 1), uint16_t(0)});
+  const int n = int(out.names.size());
+  if (n > 360) throw Error(folder.string() + " holds " + std::to_string(n) + " photos; at most 360 (one per degree)");
+  out.rows = int(rows.size());
+
+  if (listing.calibrated && rows.size() == 1 && listing.row_folders.empty()) {
+    // Neighbours in order; the last and the first too when the photos go all the way round (the
+    // gap that closes the ring is no wider than one and a half of the others).
+    std::vector<float> steps;
+    for (int i = 0; i + 1 < n; ++i)
+      steps.push_back(glm::degrees(std::acos(std::clamp(glm::dot(out.directions[size_t(i)], out.directions[size_t(i + 1)]), -1.0f, 1.0f))));
+    std::sort(steps.begin(), steps.end());
+    const float closing = glm::degrees(std::acos(std::clamp(glm::dot(out.directions.back(), out.directions.front()), -1.0f, 1.0f)));
+    out.closed = closing > 1e-3f && closing <= 1.5f * steps[steps.size() / 2] + 1e-3f;
+  } else {
+    const float step = layout.step_degrees != 0 ? layout.step_degrees
+                       : layout.arc_degrees != 0 ? layout.arc_degrees / float(columns - 1)
+                                                 : 360.0f / float(columns);
+    if (std::abs(step) * float(columns - 1) > 360.0f + 1e-3f)
+      throw Error(std::to_string(columns) + " photos " + std::to_string(step) + " degrees apart turn more than once round");
+    const float closing = 360.0f - std::abs(step) * float(columns - 1);
+    out.closed = closing > 1e-3f && closing <= 1.5f * std::abs(step) + 1e-3f;
+    const std::vector<float> elevations = row_elevations(layout, out.rows);
+    for (int r = 0; r < out.rows; ++r)
+      for (int c = 0; c < columns; ++c) {
+        const float az = glm::radians(step * float(c)), el = glm::radians(elevations[size_t(r)]);
+        out.directions.push_back({std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)});
+      }
+  }
+  if (out.rows == 1) {
+    for (int i = 0; i + 1 < n; ++i) out.cells.push_back({uint16_t(i), uint16_t(i + 1)});
+    if (out.closed) out.cells.push_back({uint16_t(n - 1), uint16_t(0)});
+  } else {
+    out.cells = row_triangles(out.rows, columns, out.closed);
+  }
 
   // Every photo upright and at the first one's shape, scaled to at most max_side.
   glm::ivec2 size(0);
@@ -135,7 +241,7 @@ PhotoFolder read_photo_folder(const fs::path& folder, float step_degrees, float 
       throw Error(file.string() + " cannot be read: " + e.what());
     }
     if (size.x == 0) {
-      const float scale = std::min(1.0f, float(max_side) / float(std::max(photo.width, photo.height)));
+      const float scale = std::min(1.0f, float(layout.max_side) / float(std::max(photo.width, photo.height)));
       size = {std::max(1, int(std::lround(photo.width * scale))), std::max(1, int(std::lround(photo.height * scale)))};
     } else {
       const float aspect = float(photo.width) / float(photo.height), wanted = float(size.x) / float(size.y);

@@ -5,6 +5,12 @@
 // turned the other way: the camera's azimuth falls from photo to photo), or from a Middlebury-style
 // `*_par.txt` calibration in the folder. Anything else in the folder is refused by name, except
 // hidden files and the calibration's companions (*.txt).
+//
+// Several rows (SPEC T17): spin-viewer photographers shoot a ring at each of a few camera
+// heights (elevations). Either sub-folders `row1`, `row2`, ... (the lowest camera first) or
+// `rows` over the files in order; every row the same count and turn. Neighbouring rows are
+// tweened in triangles (two samples of one row, one of the next), as a view sphere is.
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -15,18 +21,28 @@
 
 namespace inkwire {
 
+struct PhotoLayout {
+  float step_degrees = 0;  // the turn between consecutive photos of a row (negative: turned the other way); 0: from arc or a full turn
+  float arc_degrees = 0;   // the turn from a row's first photo to its last; 0: a full turn
+  int rows = 0;            // rings of photos in the folder, in file-name order; 0: the row folders there are, else 1
+  std::vector<float> elevations;  // degrees, per row from the lowest; empty: level, then 15 degrees apart (less past 6 rows)
+  int max_side = 512;      // photos are scaled down to at most this many pixels a side
+};
+
 struct PhotoFolder {
-  std::vector<std::string> names;       // file names, in ring order
+  std::vector<std::string> names;       // file names (row folder included), row after row, each in ring order
   std::vector<Image> photos;            // RGBA, all one size
   std::vector<glm::vec3> directions;    // unit, from the object toward the camera
-  std::vector<std::vector<uint16_t>> pairs;  // neighbouring photos to tween between
-  bool closed = false;                  // the photos go all the way round
+  std::vector<std::vector<uint16_t>> cells;  // neighbouring photos to tween between: pairs round one row, else triangles
+  bool closed = false;                  // the rows go all the way round
+  int rows = 1;                         // photo r * columns() + c is row r's c-th
+  int columns() const { return int(photos.size()) / std::max(rows, 1); }
 };
 
 // Throws inkwire::Error with a one-line reason naming the file at fault: an empty or missing
-// folder, fewer than 3 photos, an unreadable photo, a photo whose shape differs from the first,
-// a file that is not a photo, steps that do not fit.
-PhotoFolder read_photo_folder(const std::filesystem::path& folder, float step_degrees, float arc_degrees, int max_side);
+// folder, fewer than 3 photos a row, an unreadable photo, a photo whose shape differs from the
+// first, a file that is not a photo, steps that do not fit, rows of different lengths.
+PhotoFolder read_photo_folder(const std::filesystem::path& folder, const PhotoLayout& layout);
 
 // A photo turned upright by its EXIF orientation (1-8), as a viewer shows it.
 Image load_upright_photo(const std::filesystem::path& file);

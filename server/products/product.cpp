@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
+#include <set>
 
 #include <glm/geometric.hpp>
 
@@ -21,10 +23,92 @@
 namespace inkwire {
 namespace fs = std::filesystem;
 
+namespace {
+
+// Verified dense matches between photos, each pair computed once while it is needed (a row of
+// triangles asks for every pair between the rows twice, one after the other; a pair read the
+// other way is the same matches reversed). Only the last few are kept: at 2048 pixels a side a
+// pair's flows take 150 MB.
+class MatchCache {
+ public:
+  MatchCache(const std::vector<Image>& photos, const DenseMatchOptions& options) : photos_(photos), options_(options) {}
+
+  DenseMatches get(int a, int b) {
+    for (const Entry& e : recent_) {
+      if (e.a == a && e.b == b) return e.matches;
+      if (e.a == b && e.b == a) return reversed(e.matches);
+    }
+    recent_.push_back({a, b, dense_matches(photos_[size_t(a)], photos_[size_t(b)], options_)});
+    if (recent_.size() > kKept) recent_.pop_front();
+    return recent_.back().matches;
+  }
+
+ private:
+  static constexpr size_t kKept = 6;  // a quad's four pairs and the next quad's shared one
+  struct Entry {
+    int a, b;
+    DenseMatches matches;
+  };
+  const std::vector<Image>& photos_;
+  DenseMatchOptions options_;
+  std::deque<Entry> recent_;
+};
+
+// The outline points of a cell's first two photos (row neighbours: the object's ends at one
+// height stay at that height), followed into a triangle's third photo by its verified flow;
+// an end the flow there does not vouch for is left out.
+std::vector<Track> outline_tracks(const Image& a, const Image& b, const std::vector<DenseMatches>& flows) {
+  std::vector<Track> out;
+  for (const Landmark& l : outline_landmarks(a, b, std::max(8, a.height / 32))) {
+    Track t{.source = l.source, .targets = {l.target}};
+    bool followed = true;
+    for (size_t k = 1; k < flows.size() && followed; ++k) {
+      const cv::Point p(int(std::lround(l.source.x)), int(std::lround(l.source.y)));
+      followed = flows[k].reliable.at<uint8_t>(p) != 0;
+      const cv::Point2f there = flow_at(flows[k].forward, {l.source.x, l.source.y});
+      t.targets.push_back({there.x, there.y});
+    }
+    if (followed) out.push_back(std::move(t));
+  }
+  return out;
+}
+
+// A pair's points go straight from a to b (halfway on the line); a triangle's are where they are
+// in each of its three photos.
+TweenCell cell_from_tracks(const std::vector<Track>& tracks, const std::vector<uint16_t>& samples) {
+  if (samples.size() == 2) {
+    std::vector<Landmark> landmarks;
+    for (const Track& t : tracks) landmarks.push_back({.source = t.source, .target = t.targets[0], .match = 1.0f});
+    return cell_from_landmarks(landmarks, samples[0], samples[1]);
+  }
+  TweenCell cell{.samples = samples, .points = {}};
+  for (const Track& t : tracks) cell.points.push_back({t.source, t.targets[0], t.targets[1]});
+  return cell;
+}
+
+// Per photo, the gain that evens it with its neighbours, each row on its own: light differs
+// between camera heights (the top row sees the lit top), which is the product's look.
+std::vector<glm::vec3> row_gains(const std::vector<PairExposure>& exposures, const PhotoFolder& photos) {
+  const int columns = photos.columns();
+  std::vector<glm::vec3> gains;
+  for (int r = 0; r < photos.rows; ++r) {
+    std::vector<PairExposure> in_row;
+    for (PairExposure e : exposures)
+      if (e.a / columns == r && e.b / columns == r) {
+        e.a -= r * columns, e.b -= r * columns;
+        in_row.push_back(e);
+      }
+    for (const glm::vec3& g : exposure_gains(in_row, columns, photos.closed)) gains.push_back(g);
+  }
+  return gains;
+}
+
+}  // namespace
+
 Product product_from_photos(const fs::path& folder, const PhotoProductOptions& o, const PairProgress& progress) {
   if (o.matte != "auto" && o.matte != "key" && o.matte != "none") throw Error("--matte must be auto, key or none");
-  if (o.max_side < 32 || o.max_side > kMaxTweenImageSide) throw Error("--max-side must be 32.." + std::to_string(kMaxTweenImageSide));
-  return product_from_photo_folder(read_photo_folder(folder, o.step_degrees, o.arc_degrees, o.max_side), o, progress, folder.string());
+  if (o.layout.max_side < 32 || o.layout.max_side > 2048) throw Error("--max-side must be 32..2048");
+  return product_from_photo_folder(read_photo_folder(folder, o.layout), o, progress, folder.string());
 }
 
 Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions& o, const PairProgress& progress,
@@ -51,36 +135,45 @@ Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions&
     } else if (o.matte == "key") {
       throw Error(refusal);
     } else if (progress) {
-      progress(0, int(photos.pairs.size()), "no mattes: " + refusal + " (the photos are shown whole)");
+      progress(0, int(photos.cells.size()), "no mattes: " + refusal + " (the photos are shown whole)");
     }
   }
 
-  // Per neighbouring pair, verified dense matches (SPEC T15), and from them: control points (the
-  // outline where there are mattes, what a view between two photos shows first when it is
-  // wrong, then points wherever the warp through the points so far would double detail); how
-  // much brighter the second photo is (T19).
+  // Per cell, verified dense matches (SPEC T15) from its first photo to the others, and from them:
+  // control points (the outline where there are mattes, what a view between two photos shows
+  // first when it is wrong, then points wherever the warp through the points so far would
+  // double detail); how much brighter a photo is than its row neighbour (T19).
   DistilOptions distil;
   distil.max_points = o.control_points;
   DenseMatchOptions match_options;
   match_options.use_mattes = product.matted;
+  MatchCache matches(photos.photos, match_options);
   std::vector<PairExposure> exposures;
-  const int total = int(photos.pairs.size());
+  std::set<std::pair<int, int>> exposed;
+  const int total = int(photos.cells.size());
   for (int i = 0; i < total; ++i) {
-    const auto& pair = photos.pairs[size_t(i)];
-    const Image& a = photos.photos[pair[0]];
-    const Image& b = photos.photos[pair[1]];
-    const DenseMatches matches = dense_matches(a, b, match_options);
-    exposures.push_back(pair_exposure(matches, a, b, pair[0], pair[1]));
-    std::vector<Landmark> outline;
-    if (product.matted) outline = outline_landmarks(a, b, std::max(8, a.height / 32));
+    const std::vector<uint16_t>& cell = photos.cells[size_t(i)];
+    const Image& a = photos.photos[cell[0]];
+    std::vector<DenseMatches> flows;
+    std::vector<const DenseMatches*> flow_pointers;
+    for (size_t k = 1; k < cell.size(); ++k) flows.push_back(matches.get(cell[0], cell[k]));
+    for (const DenseMatches& f : flows) flow_pointers.push_back(&f);
+    // A cell's first two photos are neighbours in one row.
+    if (exposed.insert(std::minmax(int(cell[0]), int(cell[1]))).second)
+      exposures.push_back(pair_exposure(flows[0], a, photos.photos[cell[1]], cell[0], cell[1]));
+    std::vector<Track> outline;
+    if (product.matted) outline = outline_tracks(a, photos.photos[cell[1]], flows);
     const size_t on_outline = outline.size();
-    const std::vector<Landmark> points = distil_control_points(matches, a, std::move(outline), distil);
-    product.data.cells.push_back(cell_from_landmarks(points, pair[0], pair[1]));
-    if (progress)
-      progress(i + 1, total, photos.names[pair[0]] + " -> " + photos.names[pair[1]] + ": " + std::to_string(points.size() - on_outline) +
-                                 " points from matches" + (product.matted ? ", " + std::to_string(on_outline) + " outline points" : ""));
+    const std::vector<Track> points = distil_tracks(flow_pointers, a, std::move(outline), distil);
+    product.data.cells.push_back(cell_from_tracks(points, cell));
+    if (progress) {
+      std::string names = photos.names[cell[0]];
+      for (size_t k = 1; k < cell.size(); ++k) names += (k == 1 ? " -> " : ", ") + photos.names[cell[k]];
+      progress(i + 1, total, names + ": " + std::to_string(points.size() - on_outline) + " points from matches" +
+                                 (product.matted ? ", " + std::to_string(on_outline) + " outline points" : ""));
+    }
   }
-  const std::vector<glm::vec3> gains = exposure_gains(exposures, int(photos.photos.size()), photos.closed);
+  const std::vector<glm::vec3> gains = row_gains(exposures, photos);
   float largest_change = 0;
   for (size_t i = 0; i < gains.size(); ++i) {
     apply_gain(photos.photos[i], gains[i]);

@@ -11,6 +11,7 @@
 #include "common/image.hpp"
 #include "common/mesh_import.hpp"
 #include "common/tween/tween_data.hpp"
+#include "server/products/photo_folder.hpp"
 
 namespace inkwire {
 
@@ -25,9 +26,7 @@ struct Product {
 using PairProgress = std::function<void(int done, int total, const std::string& line)>;
 
 struct PhotoProductOptions {
-  float step_degrees = 0;  // the turn between consecutive photos (negative: turned the other way); 0: from --arc or a full turn
-  float arc_degrees = 0;   // the turn from the first photo to the last; 0: a full turn
-  int max_side = 512;      // photos are scaled down to at most this many pixels a side
+  PhotoLayout layout;      // rows, turn, elevations, size
   std::string matte = "auto";  // auto: key a plain backdrop when there is one; key: refuse if not; none
   int control_points = 130;  // per pair at most, outline included (12 bytes each; 160 bought 0.1 dB for 20% more)
 };
@@ -38,7 +37,6 @@ struct PhotoProductOptions {
 Product product_from_photos(const std::filesystem::path& folder, const PhotoProductOptions& options,
                             const PairProgress& progress = {});
 // The same from photos already read (e.g. a subset of a folder, to hold the rest out).
-struct PhotoFolder;
 Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions& options, const PairProgress& progress = {},
                                   const std::string& folder_name = "");
 

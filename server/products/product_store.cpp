@@ -38,17 +38,27 @@ std::string ProductSource::key() const {
       text += to_string(mesh_options.up);
     }
   } else {
-    text = "photos step=" + std::to_string(photo_options.step_degrees) + " arc=" + std::to_string(photo_options.arc_degrees) +
-           " max_side=" + std::to_string(photo_options.max_side) + " matte=" + photo_options.matte +
+    const PhotoLayout& layout = photo_options.layout;
+    text = "photos step=" + std::to_string(layout.step_degrees) + " arc=" + std::to_string(layout.arc_degrees) +
+           " max_side=" + std::to_string(layout.max_side) + " matte=" + photo_options.matte +
            " points=" + std::to_string(photo_options.control_points);
+    if (layout.rows != 0) text += " rows=" + std::to_string(layout.rows);
+    for (float e : layout.elevations) text += " elevation=" + std::to_string(e);
     std::error_code ec;
     if (!fs::is_directory(photos, ec)) throw Error(photos.string() + " is not a folder");
+    // Row folders' photos by their path in the folder (row1/a.jpg); a flat folder's by name.
     std::vector<fs::path> files;
-    for (const auto& entry : fs::directory_iterator(photos, ec))
-      if (entry.is_regular_file() && entry.path().filename().string()[0] != '.') files.push_back(entry.path());
+    for (auto it = fs::recursive_directory_iterator(photos, ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+      const std::string name = it->path().filename().string();
+      if (name[0] == '.') {
+        if (it->is_directory()) it.disable_recursion_pending();
+        continue;
+      }
+      if (it->is_regular_file()) files.push_back(fs::relative(it->path(), photos));
+    }
     if (ec) throw Error("cannot list " + photos.string() + ": " + ec.message());
     std::sort(files.begin(), files.end());
-    for (const fs::path& f : files) text += " " + f.filename().string() + "=" + hash_of_file(f);
+    for (const fs::path& f : files) text += " " + f.generic_string() + "=" + hash_of_file(photos / f);
   }
   text += " format=4";  // bump when the way products are made changes
   const ContentHash h = content_hash(text.data(), text.size());

@@ -76,6 +76,10 @@ cv::Mat verified(const cv::Mat& flow, const cv::Mat& back, const cv::Mat& inside
 
 }  // namespace
 
+DenseMatches reversed(const DenseMatches& m) {
+  return {.forward = m.backward, .backward = m.forward, .reliable = m.reliable_backward, .reliable_backward = m.reliable};
+}
+
 cv::Point2f flow_at(const cv::Mat& flow, cv::Point2f p) {
   const float x = std::clamp(p.x, 0.0f, float(flow.cols - 1)), y = std::clamp(p.y, 0.0f, float(flow.rows - 1));
   const int x0 = int(x), y0 = int(y);
@@ -152,24 +156,46 @@ cv::Mat warp_flow(const std::vector<Landmark>& points, cv::Size size) {
   return flow;
 }
 
-std::vector<Landmark> distil_control_points(const DenseMatches& matches, const Image& a, std::vector<Landmark> points,
+std::vector<Landmark> distil_control_points(const DenseMatches& matches, const Image& a, std::vector<Landmark> anchors,
                                             const DistilOptions& options) {
-  const cv::Size size = matches.forward.size();
-  const cv::Mat weight = detail_weight(a, matches.reliable);
+  std::vector<Track> tracks;
+  for (const Landmark& l : anchors) tracks.push_back({l.source, {l.target}});
+  std::vector<Landmark> out;
+  for (const Track& t : distil_tracks({&matches}, a, std::move(tracks), options))
+    out.push_back({.source = t.source, .target = t.targets[0], .match = 1.0f});
+  return out;
+}
+
+std::vector<Track> distil_tracks(const std::vector<const DenseMatches*>& flows, const Image& a, std::vector<Track> points,
+                                 const DistilOptions& options) {
+  if (flows.empty()) throw Error("distilling control points needs at least one flow");
+  const cv::Size size = flows[0]->forward.size();
+  cv::Mat reliable = flows[0]->reliable.clone();
+  for (const DenseMatches* f : flows) cv::bitwise_and(reliable, f->reliable, reliable);
+  const cv::Mat weight = detail_weight(a, reliable);
   const float spacing2 = options.min_spacing * options.min_spacing;
   auto far_from_all = [&](const glm::vec2& p) {
-    return std::all_of(points.begin(), points.end(), [&](const Landmark& l) {
-      const glm::vec2 d = l.source - p;
+    return std::all_of(points.begin(), points.end(), [&](const Track& t) {
+      const glm::vec2 d = t.source - p;
       return d.x * d.x + d.y * d.y >= spacing2;
     });
   };
   auto add = [&](int x, int y) {
-    const cv::Vec2f f = matches.forward.at<cv::Vec2f>(y, x);
-    points.push_back({.source = {float(x), float(y)}, .target = {float(x) + f[0], float(y) + f[1]}, .match = 1.0f});
+    Track t{.source = {float(x), float(y)}, .targets = {}};
+    for (const DenseMatches* f : flows) {
+      const cv::Vec2f v = f->forward.at<cv::Vec2f>(y, x);
+      t.targets.push_back({float(x) + v[0], float(y) + v[1]});
+    }
+    points.push_back(std::move(t));
   };
   while (int(points.size()) < options.max_points) {
-    // Where the warp through the points so far misses the verified flow, by how much detail is there.
-    const cv::Mat approx = warp_flow(points, size);
+    // Where the warps through the points so far miss the verified flows, by how much detail is there.
+    std::vector<cv::Mat> approx;
+    for (size_t k = 0; k < flows.size(); ++k) {
+      std::vector<Landmark> through;
+      for (const Track& t : points) through.push_back({.source = t.source, .target = t.targets[k], .match = 1.0f});
+      approx.push_back(warp_flow(through, size));
+    }
     struct Miss {
       float error;
       int x, y;
@@ -177,9 +203,13 @@ std::vector<Landmark> distil_control_points(const DenseMatches& matches, const I
     std::vector<Miss> misses;
     for (int y = 0; y < size.height; ++y)
       for (int x = 0; x < size.width; ++x) {
-        if (!matches.reliable.at<uint8_t>(y, x)) continue;
-        const cv::Vec2f d = approx.at<cv::Vec2f>(y, x) - matches.forward.at<cv::Vec2f>(y, x);
-        const float e = std::sqrt(d[0] * d[0] + d[1] * d[1]) * weight.at<float>(y, x);
+        if (!reliable.at<uint8_t>(y, x)) continue;
+        float worst = 0;
+        for (size_t k = 0; k < flows.size(); ++k) {
+          const cv::Vec2f d = approx[k].at<cv::Vec2f>(y, x) - flows[k]->forward.at<cv::Vec2f>(y, x);
+          worst = std::max(worst, d[0] * d[0] + d[1] * d[1]);
+        }
+        const float e = std::sqrt(worst) * weight.at<float>(y, x);
         if (e > options.tolerance) misses.push_back({e, x, y});
       }
     if (misses.empty()) break;

@@ -36,6 +36,9 @@ struct DenseMatchOptions {
 // on photos scaled up twice, measured no better on the spin sets: docs/benchmarks.md.)
 DenseMatches dense_matches(const Image& a, const Image& b, const DenseMatchOptions& options = {});
 
+// The same matches read from b to a.
+DenseMatches reversed(const DenseMatches& matches);
+
 // Where `matches` place the pixel `p` of a in b (bilinear in the flow).
 cv::Point2f flow_at(const cv::Mat& flow, cv::Point2f p);
 
@@ -50,6 +53,17 @@ struct DistilOptions {
 // verified flow where the warp through the points so far errs most (error x detail).
 std::vector<Landmark> distil_control_points(const DenseMatches& matches, const Image& a, std::vector<Landmark> anchors,
                                             const DistilOptions& options = {});
+
+// A point of photo a followed into several other photos (a triangle of a view sphere: a's row
+// neighbour and the photo above or below).
+struct Track {
+  glm::vec2 source;
+  std::vector<glm::vec2> targets;  // one per flow, in the flows' order
+};
+// The same for a's flows into several photos at once: a pixel counts where every flow is
+// verified, and errs by the worst of its warps.
+std::vector<Track> distil_tracks(const std::vector<const DenseMatches*>& flows, const Image& a, std::vector<Track> anchors,
+                                 const DistilOptions& options = {});
 
 // The quality reference for tweens (the benchmark's "flow" rows): what a dense method gets with
 // everything on the client. Flow both ways, each photo warped part of the way (a to t, b to

@@ -180,7 +180,7 @@ Image without_watermark_corner(Image image, glm::u8vec3 colour) {
 // the truth for looking at: [truth | spin | cross-fade | tween | flow] in DIR/turntable-NAME-K.png.
 std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const fs::path& output_dir) {
   const std::string name = folder.filename().empty() ? folder.parent_path().filename().string() : folder.filename().string();
-  const PhotoFolder all = read_photo_folder(folder, 0, 0, 512);
+  const PhotoFolder all = read_photo_folder(folder, {});
   PhotoFolder even;
   for (size_t i = 0; i < all.photos.size(); i += 2) {
     even.names.push_back(all.names[i]);
@@ -188,11 +188,11 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
     even.directions.push_back(all.directions[i]);
   }
   const int n = int(even.photos.size());
-  for (int i = 0; i + 1 < n; ++i) even.pairs.push_back({uint16_t(i), uint16_t(i + 1)});
+  for (int i = 0; i + 1 < n; ++i) even.cells.push_back({uint16_t(i), uint16_t(i + 1)});
   // The ring closes when the photos go all the way round and the last held-out one lies between
   // the last kept one and the first.
   const bool closes = all.closed && all.photos.size() % 2 == 0;
-  if (closes) even.pairs.push_back({uint16_t(n - 1), 0});
+  if (closes) even.cells.push_back({uint16_t(n - 1), 0});
   even.closed = closes;
   const auto made = std::chrono::steady_clock::now();
   const Product product = product_from_photo_folder(even, PhotoProductOptions{}, {}, folder.string());

@@ -154,6 +154,52 @@ TEST_F(TurntableE2ETest, AShopOwnersPhotosBecomeAProductACustomerTurnsWithoutABy
   EXPECT_LT(second_visit, first_visit / 10);
 }
 
+TEST_F(TurntableE2ETest, RowsOfPhotosTurnUpAndDownAClientTurnedUpSeesTheUpperRow) {
+  // A studio's three rows (SPEC T17): 12 photos at each of three camera heights, a folder a row.
+  const fs::path dir = output_dir("turntable-rows");
+  const std::vector<int> elevations = {0, 25, 50};
+  for (size_t r = 0; r < elevations.size(); ++r) {
+    const fs::path row = dir / "photos" / ("row" + std::to_string(r + 1));
+    fs::create_directories(row);
+    Process render("inkwire-render", {"--mesh", kDuck.string(), "--style", "default", "--view", "0," + std::to_string(elevations[r]) + ",1.4",
+                                      "--frames", "12", "--size", "256x256", "--backdrop", "#ffffff", "--out", (row / "IMG_%04d.png").string()},
+                   dir / "render.log");
+    ASSERT_EQ(render.wait(), 0) << render.output();
+  }
+  Process add("inkwire-server", {"add-product", "duck", "--photos", (dir / "photos").string(), "--step", "-30", "--elevations", "0,25,50",
+                                 "--data", (dir / "data").string()},
+              dir / "add.log");
+  ASSERT_EQ(add.wait(), 0) << add.output();
+  EXPECT_EQ(count_lines_starting(add.output(), "pair "), 2 * 2 * 12) << add.output();  // two triangles a quad
+  EXPECT_NE(add.output().find("stored product 'duck': 36 photos 256x256"), std::string::npos) << add.output();
+
+  ServerUnderTest server(dir, {{"sessions", nlohmann::json::array()}});
+  // Turned up to the top row, the client shows the top row's photo, not the bottom one's.
+  auto up = product_client(server, "duck", dir, "up", 1, "0,50", true);
+  ASSERT_EQ(up->wait(), 0) << up->output();
+  const Image top = load_image(client_frame(dir, "up", 0));
+  const double top_db = psnr(top, load_image(dir / "photos" / "row3" / "IMG_0000.png"));
+  const double bottom_db = psnr(top, load_image(dir / "photos" / "row1" / "IMG_0000.png"));
+  std::printf("turned up to 50 degrees: %.2f dB against the top row's photo, %.2f dB against the bottom row's\n", top_db, bottom_db);
+  EXPECT_GE(top_db, 33.0);
+  EXPECT_GT(top_db, bottom_db + 6.0);
+  // Between four photos (15 degrees round, 12.5 up): closer to the truth than the nearest photo.
+  auto between = product_client(server, "duck", dir, "between", 1, "-15,12.5", true);
+  ASSERT_EQ(between->wait(), 0) << between->output();
+  const fs::path truth_file = dir / "truth-between.png";
+  Process render("inkwire-render", {"--mesh", kDuck.string(), "--style", "default", "--view", "-15,12.5,1.4", "--size", "256x256",
+                                    "--backdrop", "#ffffff", "--out", truth_file.string()},
+                 dir / "truth.log");
+  ASSERT_EQ(render.wait(), 0) << render.output();
+  const Image truth = load_image(truth_file), view = load_image(client_frame(dir, "between", 0));
+  double nearest_db = 0;
+  for (const char* photo : {"row1/IMG_0000.png", "row1/IMG_0001.png", "row2/IMG_0000.png", "row2/IMG_0001.png"})
+    nearest_db = std::max(nearest_db, psnr(load_image(dir / "photos" / photo), truth));
+  const double tween_db = psnr(view, truth);
+  std::printf("between two rows and two photos: tween %.2f dB, the best of the four photos %.2f dB\n", tween_db, nearest_db);
+  EXPECT_GT(tween_db, nearest_db + 1.0);
+}
+
 TEST_F(TurntableE2ETest, ARestartedServerMakesNothingAgainAndACorruptedFileIsRefusedNotServed) {
   const fs::path dir = output_dir("turntable-restart");
   const std::vector<std::string> add_args = {"add-product", "duck", "--mesh", kDuck.string(), "--samples", "12", "--size", "128",

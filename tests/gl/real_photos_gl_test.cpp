@@ -108,7 +108,7 @@ TEST(RealPhotosGLTest, MidwayViewsOfAPhotographedProductMoveDetailInsteadOfFadin
   std::vector<float> azimuths;
   for (int i = 0; i < kept; ++i) azimuths.push_back(float(i) * 360.0f / float(kept));
   PhotoProductOptions options;
-  options.step_degrees = 360.0f / float(kept);  // evenly spaced: this test is about the warp
+  options.layout.step_degrees = 360.0f / float(kept);  // evenly spaced: this test is about the warp
   const Product product = product_from_photos(photograph(truck, azimuths, size, "photos"), options);
   ASSERT_TRUE(product.matted);
   TweenRenderer renderer;
@@ -149,7 +149,7 @@ TEST(RealPhotosGLTest, MidwayViewsKeepTheProductsShadowAndDropTheBackdrop) {
   std::vector<float> azimuths;
   for (int i = 0; i < kept; ++i) azimuths.push_back(float(i) * 360.0f / float(kept));
   PhotoProductOptions options;
-  options.step_degrees = 360.0f / float(kept);
+  options.layout.step_degrees = 360.0f / float(kept);
   const Product product = product_from_photos(photograph(truck, azimuths, size, "shadowed", studio, true), options);
   ASSERT_TRUE(product.matted);
   TweenRenderer renderer;

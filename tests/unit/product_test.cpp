@@ -74,46 +74,90 @@ fs::path photo_folder(const std::string& name, int count, int w = 96, int h = 64
 }  // namespace
 
 TEST(ProductTest, APhotoFolderIsReadInFileNameOrderRoundAFullTurn) {
-  const PhotoFolder f = read_photo_folder(photo_folder("turn", 8), 0, 0, 512);
+  const PhotoFolder f = read_photo_folder(photo_folder("turn", 8), {});
   ASSERT_EQ(f.photos.size(), 8u);
   EXPECT_EQ(f.names.front(), "IMG_0000.png");
   EXPECT_TRUE(f.closed);
-  EXPECT_EQ(f.pairs.size(), 8u);  // the last photo pairs with the first
+  EXPECT_EQ(f.cells.size(), 8u);  // the last photo pairs with the first
   EXPECT_NEAR(glm::degrees(std::acos(glm::dot(f.directions[0], f.directions[1]))), 45.0f, 0.01f);
   // Over a half-turn arc: open, 7 pairs.
-  const PhotoFolder arc = read_photo_folder(photo_folder("arc", 8), 0, 180, 512);
+  const PhotoFolder arc = read_photo_folder(photo_folder("arc", 8), {.arc_degrees = 180});
   EXPECT_FALSE(arc.closed);
-  EXPECT_EQ(arc.pairs.size(), 7u);
+  EXPECT_EQ(arc.cells.size(), 7u);
   // Scaled to the longer side.
-  EXPECT_EQ(read_photo_folder(photo_folder("small", 3, 200, 100), 0, 0, 64).photos[0].width, 64);
+  EXPECT_EQ(read_photo_folder(photo_folder("small", 3, 200, 100), {.max_side = 64}).photos[0].width, 64);
 }
 
 TEST(ProductTest, BadFoldersAreRefusedWithTheFileNamed) {
-  EXPECT_NE(test::error_of([] { read_photo_folder(fresh_dir("none") / "missing", 0, 0, 512); }).find("is not a folder"), std::string::npos);
-  EXPECT_NE(test::error_of([] { read_photo_folder(photo_folder("two", 2), 0, 0, 512); }).find("at least 3"), std::string::npos);
+  EXPECT_NE(test::error_of([] { read_photo_folder(fresh_dir("none") / "missing", {}); }).find("is not a folder"), std::string::npos);
+  EXPECT_NE(test::error_of([] { read_photo_folder(photo_folder("two", 2), {}); }).find("at least 3"), std::string::npos);
   {
     const fs::path dir = photo_folder("other", 4);
     std::ofstream(dir / "notes.docx") << "price list";
-    EXPECT_NE(test::error_of([&] { read_photo_folder(dir, 0, 0, 512); }).find("notes.docx is not a photo"), std::string::npos);
+    EXPECT_NE(test::error_of([&] { read_photo_folder(dir, {}); }).find("notes.docx is not a photo"), std::string::npos);
     // Hidden files and text notes are not photos but are no trouble either.
     fs::remove(dir / "notes.docx");
     std::ofstream(dir / ".DS_Store") << "x";
     std::ofstream(dir / "readme.txt") << "x";
-    EXPECT_EQ(read_photo_folder(dir, 0, 0, 512).photos.size(), 4u);
+    EXPECT_EQ(read_photo_folder(dir, {}).photos.size(), 4u);
   }
   {
     const fs::path dir = photo_folder("broken", 4);
     std::ofstream(dir / "IMG_0002.png", std::ios::trunc) << "\x89PNG not really";
-    EXPECT_NE(test::error_of([&] { read_photo_folder(dir, 0, 0, 512); }).find("IMG_0002.png cannot be read"), std::string::npos);
+    EXPECT_NE(test::error_of([&] { read_photo_folder(dir, {}); }).find("IMG_0002.png cannot be read"), std::string::npos);
   }
   {
     const fs::path dir = photo_folder("mixed", 4);
     write_photo(studio_photo(64, 96, 0, 9), dir / "IMG_0003.png");  // portrait among landscapes
-    EXPECT_NE(test::error_of([&] { read_photo_folder(dir, 0, 0, 512); }).find("IMG_0003.png is 64x96, not the shape"), std::string::npos);
+    EXPECT_NE(test::error_of([&] { read_photo_folder(dir, {}); }).find("IMG_0003.png is 64x96, not the shape"), std::string::npos);
     write_photo(studio_photo(192, 128, 0, 9), dir / "IMG_0003.png");  // the same shape, larger: scaled
-    EXPECT_EQ(read_photo_folder(dir, 0, 0, 512).photos[3].width, 96);
+    EXPECT_EQ(read_photo_folder(dir, {}).photos[3].width, 96);
   }
-  EXPECT_NE(test::error_of([] { read_photo_folder(photo_folder("steps", 8), 60, 0, 512); }).find("more than once round"), std::string::npos);
+  EXPECT_NE(test::error_of([] { read_photo_folder(photo_folder("steps", 8), {.step_degrees = 60}); }).find("more than once round"), std::string::npos);
+}
+
+TEST(ProductTest, RowsOfPhotosAreReadFromRowFoldersOrByCountIntoTrianglesBetweenRows) {
+  // Three rows of six, in folders row1 (the lowest camera) to row3.
+  const fs::path dir = fresh_dir("rows");
+  for (int r = 1; r <= 3; ++r) fs::rename(photo_folder("row-" + std::to_string(r), 6), dir / ("row" + std::to_string(r)));
+  const PhotoFolder f = read_photo_folder(dir, {});
+  ASSERT_EQ(f.rows, 3);
+  ASSERT_EQ(f.columns(), 6);
+  EXPECT_EQ(f.names[6], "row2/IMG_0000.png");
+  EXPECT_TRUE(f.closed);
+  // Level, then 15 degrees apart; every row turns from azimuth 0 in the same steps.
+  EXPECT_NEAR(glm::degrees(std::asin(f.directions[0].y)), 0.0f, 1e-3f);
+  EXPECT_NEAR(glm::degrees(std::asin(f.directions[13].y)), 30.0f, 1e-3f);
+  EXPECT_NEAR(glm::degrees(std::atan2(f.directions[13].x, f.directions[13].z)), 60.0f, 1e-3f);
+  // Two triangles a quad, six quads round each of the two gaps between rows; every triangle
+  // has two photos of one row (its first two) and one of the next or the one before.
+  ASSERT_EQ(f.cells.size(), 24u);
+  for (const auto& cell : f.cells) {
+    ASSERT_EQ(cell.size(), 3u);
+    EXPECT_EQ(cell[0] / 6, cell[1] / 6);
+    EXPECT_EQ(std::abs(cell[2] / 6 - cell[0] / 6), 1);
+  }
+  // Given elevations; the same files in one folder with --rows.
+  const PhotoFolder given = read_photo_folder(dir, {.elevations = {-10, 20, 50}});
+  EXPECT_NEAR(glm::degrees(std::asin(given.directions[17].y)), 50.0f, 1e-3f);
+  const fs::path flat = fresh_dir("rows-flat");
+  for (const std::string& name : f.names) fs::copy_file(dir / name, flat / (name.substr(0, 4) + name.substr(5)));
+  const PhotoFolder counted = read_photo_folder(flat, {.rows = 3});
+  EXPECT_EQ(counted.rows, 3);
+  EXPECT_EQ(counted.cells, f.cells);
+  // What does not fit is refused with the reason.
+  EXPECT_NE(test::error_of([&] { read_photo_folder(flat, {.rows = 4}); }).find("do not make 4 rows of one length"), std::string::npos);
+  EXPECT_NE(test::error_of([&] { read_photo_folder(dir, {.rows = 2}); }).find("holds 3 row folders"), std::string::npos);
+  EXPECT_NE(test::error_of([&] { read_photo_folder(dir, {.elevations = {0, 10}}); }).find("2 elevations given for 3 rows"), std::string::npos);
+  EXPECT_NE(test::error_of([&] { read_photo_folder(dir, {.elevations = {0, 30, 20}}); }).find("each higher"), std::string::npos);
+  fs::remove(dir / "row3" / "IMG_0005.png");
+  EXPECT_NE(test::error_of([&] { read_photo_folder(dir, {}); }).find("row 3 holds 5 photos and row 1 6"), std::string::npos);
+  fs::rename(dir / "row3", dir / "row4");
+  EXPECT_NE(test::error_of([&] { read_photo_folder(dir, {}); }).find("but no row3"), std::string::npos);
+  fs::copy_file(flat / "row1IMG_0000.png", dir / "stray.png");
+  EXPECT_NE(test::error_of([&] { read_photo_folder(dir, {}); }).find("stray.png is beside row folders"), std::string::npos);
+  fs::create_directory(flat / "extra");
+  EXPECT_NE(test::error_of([&] { read_photo_folder(flat, {}); }).find("extra is not a photo"), std::string::npos);
 }
 
 TEST(ProductTest, PhotosAreTurnedUprightByTheirExifOrientation) {

@@ -180,14 +180,11 @@ TweenRenderer::View TweenRenderer::plan(const FrameState& frame) {
   const TweenCell& cell = model_.data.cells[size_t(at.cell)];
   const bool pair = cell.is_pair();
   const int n = int(cell.samples.size());
-  // Until every sample of the view's cell is there (and the cell holds the nearest of those that
-  // are), the nearest sample that is there shows.
-  bool whole = true, holds_nearest = false;
-  for (uint16_t s : cell.samples) {
-    whole = whole && textures_[s] != nullptr;
-    holds_nearest = holds_nearest || (!fallback.sources.empty() && textures_[s].get() == fallback.sources[0].image);
-  }
-  if (!whole || !holds_nearest) {
+  // Until every sample of the view's cell is there, the nearest sample that is there shows. (Not
+  // "the cell holds the nearest sample": between rows of photos the nearest can be the quad's
+  // corner across the diagonal, outside the triangle that holds the view.)
+  const bool whole = std::all_of(cell.samples.begin(), cell.samples.end(), [&](uint16_t s) { return textures_[s] != nullptr; });
+  if (!whole) {
     last_cell_ = -1;
     return fallback;
   }

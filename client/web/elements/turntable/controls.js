@@ -1,9 +1,16 @@
-// <inkwire-turntable>'s controls (SPEC W2): drag with mouse, touch or pen (with inertia), wheel
-// or pinch to zoom, arrow keys step one photo. Handlers are added with the connection's
+// <inkwire-turntable>'s controls (SPEC W2): drag with mouse, touch or pen (with inertia; up and
+// down as far as the product has rows of photos, SPEC T17), wheel or pinch to zoom, arrow keys
+// step one photo left and right, one row up and down. Handlers are added with the connection's
 // AbortSignal and go when the element leaves the page (STYLE 17), so an element moved in the
 // page turns once as far, never twice.
 
 const kDegreesPerPixel = 0.4;  // as the C++ window turns
+
+function nearestIndex(values, value) {
+  let best = 0;
+  values.forEach((v, i) => { if (Math.abs(v - value) < Math.abs(values[best] - value)) best = i; });
+  return best;
+}
 
 export const ControlsMixin = (Base) => class extends Base {
   connectedCallback() {
@@ -32,7 +39,8 @@ export const ControlsMixin = (Base) => class extends Base {
         if (before > 0) this.setZoom(this.zoom * (after / before));
         return;
       }
-      const dx = e.clientX - p.x, dt = Math.max((e.timeStamp - p.t) / 1000, 1e-3);
+      const dx = e.clientX - p.x, dy = e.clientY - p.y, dt = Math.max((e.timeStamp - p.t) / 1000, 1e-3);
+      this.elevation = this.withinRows(this.elevation + dy * kDegreesPerPixel);
       this.azimuth = this._azimuth - dx * kDegreesPerPixel;
       // Inertia follows the last moments of the drag, at most a turn a second.
       this.velocity = Math.min(Math.max(0.7 * this.velocity + 0.3 * ((-dx * kDegreesPerPixel) / dt), -360), 360);
@@ -50,16 +58,37 @@ export const ControlsMixin = (Base) => class extends Base {
       this.setZoom(this.zoom * Math.pow(0.9, Math.sign(e.deltaY)));
     }, { passive: false, signal });
     this.addEventListener('keydown', (e) => {
-      if (e.key !== 'ArrowLeft' && e.key !== 'ArrowRight' || !this.snapshot) return;
+      if (!e.key.startsWith('Arrow') || !this.snapshot) return;
       e.preventDefault();
       this.touched = true;
       this.velocity = 0;
+      if (e.key === 'ArrowUp' || e.key === 'ArrowDown') {
+        const rows = this.rowElevations(), i = nearestIndex(rows, this.elevation);
+        this.elevation = rows[Math.min(Math.max(i + (e.key === 'ArrowUp' ? 1 : -1), 0), rows.length - 1)];
+        this.redraw();
+        return;
+      }
       const dirs = this.snapshot.product.directions, d = this.direction();
       let nearest = 0;
       dirs.forEach((s, i) => { if (s[0] * d[0] + s[2] * d[2] > dirs[nearest][0] * d[0] + dirs[nearest][2] * d[2]) nearest = i; });
       const next = dirs[(nearest + (e.key === 'ArrowRight' ? 1 : -1) + dirs.length) % dirs.length];
       this.azimuth = (Math.atan2(next[0], next[2]) * 180) / Math.PI;
     }, options);
+  }
+
+  // The product's rows' elevations (degrees, lowest first): one for a single ring, a few for
+  // rows, many on a geodesic sphere. Directions travel as i16: rows within half a degree are one.
+  rowElevations() {
+    const heights = this.snapshot.product.directions.map((d) => (Math.asin(Math.min(Math.max(d[1], -1), 1)) * 180) / Math.PI);
+    heights.sort((a, b) => a - b);
+    return heights.reduce((rows, h) => (rows.length && h - rows[rows.length - 1] < 0.5 ? rows : [...rows, h]), []);
+  }
+
+  // `elevation` kept where there are photos to synthesise the view from.
+  withinRows(elevation) {
+    if (!this.snapshot) return 0;
+    const rows = this.rowElevations();
+    return Math.min(Math.max(elevation, rows[0]), rows[rows.length - 1]);
   }
 
   setZoom(zoom) {

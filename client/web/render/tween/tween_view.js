@@ -103,9 +103,8 @@ export class TweenView {
     const fallback = this.nearestLoaded(direction);
     if (at.cell < 0) return fallback;
     const cell = this.cells[at.cell], pair = cell.samples.length === 2;
-    const whole = cell.samples.every((s) => this.textures[s]);
-    const holdsNearest = fallback && cell.samples.some((s) => this.textures[s] === fallback.sources[0].texture);
-    if (!whole || !holdsNearest) {
+    // Until every sample of the cell is there, the nearest that is (as tween_renderer.cpp).
+    if (!cell.samples.every((s) => this.textures[s])) {
       this.lastCell = -1;
       return fallback;
     }
