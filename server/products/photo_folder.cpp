@@ -104,21 +104,6 @@ std::vector<float> row_elevations(const PhotoLayout& layout, int rows) {
   return out;
 }
 
-// Triangles between neighbouring rows of `columns` photos: each quad of two photos in row r and
-// the two above them split along one diagonal. A triangle's first sample is the one its control
-// points are found from (to its row neighbour and to the photo above or below it).
-std::vector<std::vector<uint16_t>> row_triangles(int rows, int columns, bool closed) {
-  std::vector<std::vector<uint16_t>> cells;
-  for (int r = 0; r + 1 < rows; ++r)
-    for (int c = 0; c < columns - (closed ? 0 : 1); ++c) {
-      const int next = (c + 1) % columns;
-      const auto at = [&](int row, int column) { return uint16_t(row * columns + column); };
-      cells.push_back({at(r, c), at(r, next), at(r + 1, c)});
-      cells.push_back({at(r + 1, next), at(r + 1, c), at(r, next)});
-    }
-  return cells;
-}
-
 }  // namespace
 
 Image load_upright_photo(const fs::path& file) {
@@ -142,6 +127,18 @@ Image load_upright_photo(const fs::path& file) {
   Image out(turned.cols, turned.rows);
   std::copy_n(turned.ptr<uint8_t>(0), out.pixels.size(), out.pixels.data());
   return out;
+}
+
+std::vector<std::vector<uint16_t>> row_triangles(int rows, int columns, bool closed) {
+  std::vector<std::vector<uint16_t>> cells;
+  for (int r = 0; r + 1 < rows; ++r)
+    for (int c = 0; c < columns - (closed ? 0 : 1); ++c) {
+      const int next = (c + 1) % columns;
+      const auto at = [&](int row, int column) { return uint16_t(row * columns + column); };
+      cells.push_back({at(r, c), at(r, next), at(r + 1, c)});
+      cells.push_back({at(r + 1, next), at(r + 1, c), at(r, next)});
+    }
+  return cells;
 }
 
 PhotoFolder read_photo_folder(const fs::path& folder, const PhotoLayout& layout) {

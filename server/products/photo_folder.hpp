@@ -44,6 +44,12 @@ struct PhotoFolder {
 // first, a file that is not a photo, steps that do not fit, rows of different lengths.
 PhotoFolder read_photo_folder(const std::filesystem::path& folder, const PhotoLayout& layout);
 
+// Triangles between neighbouring rows of `columns` photos (photo r * columns + c is row r's c-th):
+// each quad of two photos in row r and the two above them split along one diagonal. A
+// triangle's first two samples are neighbours in one row, its third in the next row or the
+// one before; its control points are found from the first.
+std::vector<std::vector<uint16_t>> row_triangles(int rows, int columns, bool closed);
+
 // A photo turned upright by its EXIF orientation (1-8), as a viewer shows it.
 Image load_upright_photo(const std::filesystem::path& file);
 

@@ -178,24 +178,59 @@ Image without_watermark_corner(Image image, glm::u8vec3 colour) {
 // product over the photo's own backdrop colour, and the optical-flow interpolation of the two
 // photos (everything on the client: the quality reference). Midway views are written beside
 // the truth for looking at: [truth | spin | cross-fade | tween | flow] in DIR/turntable-NAME-K.png.
+// Which photos of a set make the product and which are held out: every other photo of a row
+// (and with rows, every other row: the held-out rows lie between kept ones, so their views are
+// tweened up and down as well as round).
+struct HeldOut {
+  PhotoFolder kept;
+  std::vector<size_t> truths;  // indices into the set of the held-out photos within the kept ones' reach
+  bool closes = false;
+};
+
+HeldOut hold_out(const PhotoFolder& all) {
+  HeldOut h;
+  const int columns = all.columns(), kept_columns = (columns + 1) / 2, kept_rows = (all.rows + 1) / 2;
+  const int last_row = 2 * (kept_rows - 1);  // the highest kept row: views above it have nothing to come from
+  // The ring closes when the photos go all the way round and the last held-out one lies between
+  // the last kept one and the first.
+  h.closes = all.closed && columns % 2 == 0;
+  for (int r = 0; r < all.rows; ++r)
+    for (int c = 0; c < columns; ++c) {
+      const size_t i = size_t(r * columns + c);
+      if (r % 2 == 0 && c % 2 == 0) {
+        h.kept.names.push_back(all.names[i]);
+        h.kept.photos.push_back(all.photos[i]);
+        h.kept.directions.push_back(all.directions[i]);
+      } else if (r <= last_row && (h.closes || c < 2 * (kept_columns - 1))) {
+        h.truths.push_back(i);
+      }
+    }
+  h.kept.rows = kept_rows;
+  h.kept.closed = h.closes;
+  if (kept_rows > 1) {
+    h.kept.cells = row_triangles(kept_rows, kept_columns, h.closes);
+  } else {
+    for (int i = 0; i + 1 < kept_columns; ++i) h.kept.cells.push_back({uint16_t(i), uint16_t(i + 1)});
+    if (h.closes) h.kept.cells.push_back({uint16_t(kept_columns - 1), 0});
+  }
+  return h;
+}
+
+// Real photos: a folder's even photos made into a product as add-product makes one, the odd ones
+// held out as the truth (each lies between product photos; with rows, the odd rows too). Per
+// held-out photo: the spin viewer's nearest product photo as it was shot, a cross-fade and the
+// tween of the stored product over the photo's own backdrop colour, and the optical-flow
+// interpolation of the two nearest product photos (everything on the client: the quality
+// reference). Views are written beside the truth for looking at:
+// [truth | spin | cross-fade | tween | flow] in DIR/turntable-NAME-K.png.
 std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const fs::path& output_dir) {
   const std::string name = folder.filename().empty() ? folder.parent_path().filename().string() : folder.filename().string();
   const PhotoFolder all = read_photo_folder(folder, {});
-  PhotoFolder even;
-  for (size_t i = 0; i < all.photos.size(); i += 2) {
-    even.names.push_back(all.names[i]);
-    even.photos.push_back(all.photos[i]);
-    even.directions.push_back(all.directions[i]);
-  }
+  const HeldOut held = hold_out(all);
+  const PhotoFolder& even = held.kept;
   const int n = int(even.photos.size());
-  for (int i = 0; i + 1 < n; ++i) even.cells.push_back({uint16_t(i), uint16_t(i + 1)});
-  // The ring closes when the photos go all the way round and the last held-out one lies between
-  // the last kept one and the first.
-  const bool closes = all.closed && all.photos.size() % 2 == 0;
-  if (closes) even.cells.push_back({uint16_t(n - 1), 0});
-  even.closed = closes;
   const auto made = std::chrono::steady_clock::now();
-  const Product product = product_from_photo_folder(even, PhotoProductOptions{}, {}, folder.string());
+  const Product product = product_from_photo_folder(held.kept, PhotoProductOptions{}, {}, folder.string());
   const double seconds_to_make = std::chrono::duration<double>(std::chrono::steady_clock::now() - made).count();
   const fs::path data = fs::temp_directory_path() / ("inkwire-bench-photos-" + std::to_string(::getpid()));
   fs::remove_all(data);
@@ -219,9 +254,7 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
     s.psnr.push_back(psnr(view, truth));
     s.ssim.push_back(ssim(view, truth));
   };
-  for (size_t k = 1; k < all.photos.size(); k += 2) {
-    const int before = int(k / 2), after = (before + 1) % n;
-    if (after == 0 && !closes) continue;  // past the last product photo: nothing to tween from
+  for (const size_t k : held.truths) {
     const glm::vec3 backdrop = backdrop_colour(all.photos[k]);
     const glm::u8vec3 colour(backdrop);
     const Image truth = without_watermark_corner(all.photos[k], colour);
@@ -230,16 +263,18 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
     frame.viewport = {model.data.width, model.data.height};
     frame.camera.position = d * model.distance_diagonals * kSceneDiagonal;
     frame.camera.target = glm::vec3(0.0f);
-    // Where the held-out view lies between its two product photos.
-    const float to_before = std::acos(std::clamp(glm::dot(d, even.directions[size_t(before)]), -1.0f, 1.0f));
-    const float to_after = std::acos(std::clamp(glm::dot(d, even.directions[size_t(after)]), -1.0f, 1.0f));
-    const float t = to_before / std::max(to_before + to_after, 1e-6f);
-    const Image& nearest = all.photos[size_t(2 * (t <= 0.5f ? before : after))];
+    // The two product photos nearest the held-out view, and where it lies between them.
+    std::vector<int> order(size_t(n), 0);
+    std::iota(order.begin(), order.end(), 0);
+    const auto angle_to = [&](int i) { return std::acos(std::clamp(glm::dot(d, even.directions[size_t(i)]), -1.0f, 1.0f)); };
+    std::partial_sort(order.begin(), order.begin() + 2, order.end(), [&](int l, int r) { return angle_to(l) < angle_to(r); });
+    const int before = order[0], after = order[1];
+    const float t = angle_to(before) / std::max(angle_to(before) + angle_to(after), 1e-6f);
+    const Image& nearest = even.photos[size_t(before)];
     const Image spin_view = without_watermark_corner(nearest, colour);
     const Image fade_view = without_watermark_corner(over_colour(synthesised(renderer, canvas, frame, "crossfade", "sum"), colour, true), colour);
     const Image tween_view = without_watermark_corner(over_colour(synthesised(renderer, canvas, frame, "bilinear", "matte"), colour, true), colour);
-    const Image flow_view =
-        without_watermark_corner(flow_interpolation(all.photos[size_t(2 * before)], all.photos[size_t(2 * after)], t), colour);
+    const Image flow_view = without_watermark_corner(flow_interpolation(even.photos[size_t(before)], even.photos[size_t(after)], t), colour);
     score(spin, spin_view, truth);
     score(fade, fade_view, truth);
     score(tween, tween_view, truth);

@@ -5,7 +5,9 @@ Debian's chromium-driver and python3-selenium, against a real inkwire-server on 
 The element loads a product and draws its first view after one photo; at azimuths 0, 7.5, 37.5
 and 180 degrees its canvas matches the C++ headless client's frame of the same view (PSNR >= 35
 dB: the browser's software GL and llvmpipe differ in rounding, the browser's JPEG decoder in the
-last bit); a drag turns the view and sends nothing; in presenter mode a following element and a
+last bit); a drag turns the view and sends nothing; on a product photographed in three rows a
+drag down turns it up (as far as the top row, matching the C++ client's view there) and the arrow
+keys step one row; in presenter mode a following element and a
 following C++ client show the presenting element's view. Run by ctest with the build's bin folder:
   turntable_browser_test.py BIN_DIR OUT_DIR
 Skips (exit 0 with a message) when chromium, chromedriver or selenium is missing."""
@@ -35,6 +37,14 @@ data = os.path.join(OUT, "data")
 shutil.rmtree(data, ignore_errors=True)
 subprocess.run([f"{BIN}/inkwire-server", "add-product", "duck", "--mesh", DUCK, "--size", str(SIZE), "--data", data, "--editor-token", "sh0p-0wner"],
                check=True, stdout=subprocess.DEVNULL)
+# A studio's three rows of photos (SPEC T17): 12 photos at 0, 25 and 50 degrees up.
+for row, elevation in enumerate((0, 25, 50), start=1):
+    folder = os.path.join(OUT, "rows", f"row{row}")
+    os.makedirs(folder, exist_ok=True)
+    subprocess.run([f"{BIN}/inkwire-render", "--mesh", DUCK, "--view", f"0,{elevation},1.4", "--frames", "12", "--size", f"{SIZE}x{SIZE}",
+                    "--backdrop", "#ffffff", "--out", os.path.join(folder, "IMG_%04d.png")], check=True, stdout=subprocess.DEVNULL)
+subprocess.run([f"{BIN}/inkwire-server", "add-product", "rows", "--photos", os.path.join(OUT, "rows"), "--step", "-30",
+                "--elevations", "0,25,50", "--data", data], check=True, stdout=subprocess.DEVNULL)
 server = Server(BIN, OUT, data, {"sessions": [], "http": "127.0.0.1:0"})
 tcp, http = server.tcp, server.http
 driver = None
@@ -76,6 +86,42 @@ try:
     check(abs(after - before) >= 30, f"a drag of 100 pixels turns the view ({before:.1f} -> {after:.1f} degrees, with inertia)")
     check(driver.execute_script(f"const s = {element}.session; return [s.bytesSent, s.bytesReceived];") == [sent, received],
           "the drag sent and received nothing")
+
+    # One ring of photos: up and down there is nothing to turn to.
+    ActionChains(driver).move_to_element(canvas).click_and_hold().move_by_offset(0, 50).release().perform()
+    check(driver.execute_script(f"return {element}.elevation") == 0, "a drag down on one ring of photos keeps the view level")
+
+    # Rows: a drag down turns the view up, as far as the top row; the arrow keys step one row.
+    rows = "document.getElementById('rows')"
+    driver.execute_script(f"""const e = document.createElement('inkwire-turntable');
+      e.setAttribute('session', 'rows'); e.setAttribute('auto-rotate', 'off'); e.id = 'rows';
+      e.style.cssText = 'width:{SIZE}px;height:{SIZE}px'; document.body.prepend(e);""")
+    end = time.time() + 60
+    while time.time() < end and not driver.execute_script(f"return {rows}.hasAttribute('loaded')"):
+        time.sleep(0.1)
+    check(driver.execute_script(f"return {rows}.hasAttribute('loaded')"), "the element loads a product in three rows")
+    rows_canvas = driver.execute_script(f"return {rows}.canvas")
+    ActionChains(driver).move_to_element(rows_canvas).click_and_hold().move_by_offset(0, 25).move_by_offset(0, 25).perform()
+    held = driver.execute_script(f"return [{rows}.azimuth, {rows}.elevation]")
+    ActionChains(driver).release().perform()
+    check(abs(held[0]) < 0.01 and abs(held[1] - 20) < 0.01, f"a drag of 50 pixels down turns the view 20 degrees up ({held[1]:.2f}), not round")
+    png = driver.execute_script(f"const e = {rows}; e.azimuth = -15; e.draw(); return e.canvas.toDataURL('image/png');")
+    browser_png = os.path.join(OUT, "browser-rows.png")
+    with open(browser_png, "wb") as f:
+        f.write(base64.b64decode(png.split(",", 1)[1]))
+    client_png = os.path.join(OUT, "client-rows.png")
+    subprocess.run([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{tcp}", "--session", "rows", "--headless", "--frames", "1",
+                    "--view", "-15,20", "--size", f"{SIZE}x{SIZE}", "--wait-for-product", "--out", client_png,
+                    "--cache", os.path.join(OUT, "cache-rows")], check=True, stderr=subprocess.DEVNULL)
+    db = psnr(read_image(browser_png, OUT), read_image(client_png, OUT))
+    check(db >= 35.0, f"between rows (azimuth -15, 20 up) the browser's view matches the C++ client's at {db:.2f} dB (>= 35)")
+    ActionChains(driver).move_to_element(rows_canvas).click_and_hold().move_by_offset(0, 60).move_by_offset(0, 60).release().perform()
+    check(abs(driver.execute_script(f"return {rows}.elevation") - 50) < 0.01, "dragged further, the view stops at the top row (50 degrees)")
+    driver.execute_script(f"{rows}.focus()")
+    ActionChains(driver).send_keys("\ue015").perform()  # arrow down
+    stepped = driver.execute_script(f"return {rows}.elevation")
+    check(abs(stepped - 25) < 0.01, f"the down arrow steps one row down ({stepped:.2f} degrees)")
+    driver.execute_script(f"{rows}.remove()")
 
     # Lifecycle (STYLE 17): moved in the page, the element's handlers are there once, so the same
     # drag turns it as far as before (twice as far when a re-connection added them again). The
