@@ -8,7 +8,7 @@ nlohmann::json frame_log_line(SessionSync& sync, const SessionClient& client, lo
   const auto now_us = std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
   nlohmann::json line = {{"frame", frame}, {"revision", sync.view().revision()}, {"style", sync.view().style()}, {"monotonic_us", now_us}};
   if (const TurntableView* t = sync.view().turntable())
-    line["product"] = {{"azimuth", sync.view().orbit().azimuth}, {"samples_loaded", t->samples_loaded()},
+    line["product"] = {{"azimuth", sync.view().orbit().azimuth}, {"elevation", sync.view().orbit().elevation}, {"samples_loaded", t->samples_loaded()},
                        {"cells_loaded", t->cells_loaded()}, {"bytes_sent", client.bytes_sent()},
                        {"bytes_received", client.bytes_received()}};
   if (client.refusals() > 0) line["refused"] = {{"count", client.refusals()}, {"reason", client.refusal()}};

@@ -69,18 +69,22 @@ void WindowInput::attach(GLFWwindow* window) {
     ++in.events;
     if (button != GLFW_MOUSE_BUTTON_LEFT) return;
     if (action == GLFW_PRESS && ImGui::GetIO().WantCaptureMouse) return;  // a click on the panel
+    // The drag starts where the pointer was when pressed: the last position the motion events
+    // gave, not glfwGetCursorPos(), which asks the X server where the pointer is now and loses
+    // the moves already queued behind the press (a quick drag turned half as far, or not at all).
     in.orbit.dragging = action == GLFW_PRESS;
-    glfwGetCursorPos(w, &in.orbit.last_x, &in.orbit.last_y);
+    if (!in.orbit.pointer_seen) glfwGetCursorPos(w, &in.orbit.last_x, &in.orbit.last_y), in.orbit.pointer_seen = true;
   });
   glfwSetCursorPosCallback(window, [](GLFWwindow* w, double x, double y) {
     WindowInput& in = input_of(w);
     ++in.events;
     Orbit& o = in.orbit;
-    if (!o.dragging) return;
-    o.azimuth -= float(x - o.last_x) * 0.4f;
-    o.elevation = std::clamp(o.elevation + float(y - o.last_y) * 0.4f, -85.0f, 85.0f);
-    o.last_x = x, o.last_y = y;
-    o.changed = true;
+    if (o.dragging) {
+      o.azimuth -= float(x - o.last_x) * 0.4f;
+      o.elevation = std::clamp(o.elevation + float(y - o.last_y) * 0.4f, -85.0f, 85.0f);
+      o.changed = true;
+    }
+    o.last_x = x, o.last_y = y, o.pointer_seen = true;
   });
   glfwSetScrollCallback(window, [](GLFWwindow* w, double, double dy) {
     WindowInput& in = input_of(w);

@@ -16,6 +16,7 @@ struct Orbit {
   bool dragging = false;
   bool changed = false;  // moved by the user since the last frame
   double last_x = 0, last_y = 0;
+  bool pointer_seen = false;  // a motion event has given last_x, last_y
 
   void from(const protocol::CameraPose& pose);
 };

@@ -3,7 +3,9 @@ real GLFW window on llvmpipe, real key presses (xdotool, through the X server's 
 screen grabbed by ffmpeg's x11grab. Checks that Tab and Shift-Tab switch the style on screen,
 that an arrow key turns the view, that the docked panel covers at most 35% of a 640x480 window
 by default, and that an idle window of a still style uses under 5% of a core over 5 s. On a
-product: P presents the window's view (a client that follows shows it), F follows a presenter.
+product: P presents the window's view (a client that follows shows it), F follows a presenter;
+on a product in three rows the Up and Down arrows step a row and a drag down turns the view up,
+no further than the top row.
 
 Usage: client_window_test.py BIN_DIR OUT_DIR   (skips with a message without a display,
 xdotool or ffmpeg)."""
@@ -70,6 +72,14 @@ EDITOR = "sh0p-0wner"  # the product's editor token: only its editors present
 if os.path.exists(DUCK):  # a product for presenter mode, made as a shop owner would
     subprocess.run([f"{BIN}/inkwire-server", "add-product", "duck", "--mesh", DUCK, "--samples", "12", "--size", "128",
                     "--data", os.path.join(OUT, "data"), "--editor-token", EDITOR], check=True, stdout=subprocess.DEVNULL)
+    # Three rows of six photos, at 0, 25 and 50 degrees up (SPEC T17).
+    for row, elevation in enumerate((0, 25, 50), start=1):
+        folder = os.path.join(OUT, "rows", f"row{row}")
+        os.makedirs(folder)
+        subprocess.run([f"{BIN}/inkwire-render", "--mesh", DUCK, "--view", f"0,{elevation},1.4", "--frames", "6", "--size", "128x128",
+                        "--backdrop", "#ffffff", "--out", os.path.join(folder, "IMG_%04d.png")], check=True, stdout=subprocess.DEVNULL)
+    subprocess.run([f"{BIN}/inkwire-server", "add-product", "rows", "--photos", os.path.join(OUT, "rows"), "--step", "-60",
+                    "--elevations", "0,25,50", "--data", os.path.join(OUT, "data")], check=True, stdout=subprocess.DEVNULL)
 server = Server(BIN, OUT, os.path.join(OUT, "data"), config)
 frame_log = os.path.join(OUT, "frames.jsonl")
 env = dict(os.environ, XDG_CONFIG_HOME=os.path.join(OUT, "config"))  # the panel's first-run state
@@ -152,6 +162,32 @@ try:
             time.sleep(0.2)
         checks.check(abs(on_the_circle(window_azimuth() - presented)) < 0.01,
                      f"F follows: the window turned to {window_azimuth():.1f} degrees, the presenter's {presented:.1f}")
+
+        # Rows: Up and Down step a row; a drag down turns the view up, as far as the top row.
+        client.terminate()
+        client.wait(timeout=10)
+        rows_log = os.path.join(OUT, "rows.jsonl")
+        client = subprocess.Popen([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{server.tcp}", "--session", "rows",
+                                   "--size", f"{WIDTH}x{HEIGHT}", "--cache", os.path.join(OUT, "cache"), "--frame-log", rows_log],
+                                  stderr=client_log, env=env)
+        wait_for(lambda: os.path.exists(rows_log) and any(line["product"]["samples_loaded"] == 18 for line in log_lines(rows_log)),
+                 60, "the product in rows in the window")
+        elevation = lambda: log_lines(rows_log)[-1]["product"]["elevation"]
+        key("Up")
+        time.sleep(0.5)
+        checks.check(abs(elevation() - 25) < 0.01, f"Up steps one row up: {elevation():.1f} degrees (25)")
+        key("Down", "Down")
+        time.sleep(0.5)
+        checks.check(abs(elevation()) < 0.01, f"Down twice: the lowest row, and no further: {elevation():.1f} degrees (0)")
+        # A quick drag turns as far as a slow one: the moves queued behind the press count too.
+        subprocess.run(["xdotool", "mousemove", "--sync", "200", "150", "sleep", "0.3", "mousedown", "1", "mousemove", "--sync", "200", "200",
+                        "mousemove", "--sync", "200", "250", "mouseup", "1"], check=True)
+        time.sleep(0.5)
+        checks.check(abs(elevation() - 40) < 0.01, f"a drag of 100 pixels down turns the view 40 degrees up: {elevation():.1f}")
+        subprocess.run(["xdotool", "mousemove", "--sync", "200", "100", "sleep", "0.3", "mousedown", "1", "mousemove", "--sync", "200", "300",
+                        "mouseup", "1"], check=True)
+        time.sleep(0.5)
+        checks.check(abs(elevation() - 50) < 0.01, f"dragged further, the view stops at the top row: {elevation():.1f} degrees (50)")
 finally:
     client.terminate()
     client.wait(timeout=10)
