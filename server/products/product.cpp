@@ -25,10 +25,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Verified dense matches between photos, each pair computed once while it is needed (a row of
-// triangles asks for every pair between the rows twice, one after the other; a pair read the
-// other way is the same matches reversed). Only the last few are kept: at 2048 pixels a side a
-// pair's flows take 150 MB.
+// Verified dense matches between photos, each pair computed once while it is needed: between two
+// rows, a quad's second triangle and the next quad's first share the pair up the column between
+// them, read the other way (the same matches reversed). Only the last two pairs are kept: at 2048
+// pixels a side a pair's flows and masks take 75 MB.
 class MatchCache {
  public:
   MatchCache(const std::vector<Image>& photos, const DenseMatchOptions& options) : photos_(photos), options_(options) {}
@@ -44,7 +44,7 @@ class MatchCache {
   }
 
  private:
-  static constexpr size_t kKept = 6;  // a quad's four pairs and the next quad's shared one
+  static constexpr size_t kKept = 2;  // a triangle's two pairs
   struct Entry {
     int a, b;
     DenseMatches matches;

@@ -156,16 +156,6 @@ cv::Mat warp_flow(const std::vector<Landmark>& points, cv::Size size) {
   return flow;
 }
 
-std::vector<Landmark> distil_control_points(const DenseMatches& matches, const Image& a, std::vector<Landmark> anchors,
-                                            const DistilOptions& options) {
-  std::vector<Track> tracks;
-  for (const Landmark& l : anchors) tracks.push_back({l.source, {l.target}});
-  std::vector<Landmark> out;
-  for (const Track& t : distil_tracks({&matches}, a, std::move(tracks), options))
-    out.push_back({.source = t.source, .target = t.targets[0], .match = 1.0f});
-  return out;
-}
-
 std::vector<Track> distil_tracks(const std::vector<const DenseMatches*>& flows, const Image& a, std::vector<Track> points,
                                  const DistilOptions& options) {
   if (flows.empty()) throw Error("distilling control points needs at least one flow");

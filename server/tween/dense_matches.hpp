@@ -49,19 +49,16 @@ struct DistilOptions {
   int points_per_round = 24;     // added before the error is measured again
 };
 
-// Control points for the pair: `anchors` (outline points, kept as they are) plus points from the
-// verified flow where the warp through the points so far errs most (error x detail).
-std::vector<Landmark> distil_control_points(const DenseMatches& matches, const Image& a, std::vector<Landmark> anchors,
-                                            const DistilOptions& options = {});
-
-// A point of photo a followed into several other photos (a triangle of a view sphere: a's row
-// neighbour and the photo above or below).
+// A point of photo a followed into the other photos of its cell (a pair's second photo; a
+// triangle's row neighbour and the photo above or below).
 struct Track {
   glm::vec2 source;
   std::vector<glm::vec2> targets;  // one per flow, in the flows' order
 };
-// The same for a's flows into several photos at once: a pixel counts where every flow is
-// verified, and errs by the worst of its warps.
+// Control points for a cell from a's verified flows into its other photos: `anchors` (outline
+// points, kept as they are, first) plus points where the warps through the points so far err
+// most (error x detail). A pixel counts where every flow is verified, and errs by the worst of
+// its warps.
 std::vector<Track> distil_tracks(const std::vector<const DenseMatches*>& flows, const Image& a, std::vector<Track> anchors,
                                  const DistilOptions& options = {});
 

@@ -35,16 +35,19 @@ Image textured_disc() {
   return out;
 }
 
-// Where a pixel of the first photo is in the second: a shift that varies across the object.
-cv::Vec2f motion(float x, float y) { return {6.0f + 4.0f * std::sin(y / 40.0f), 2.0f * std::cos(x / 50.0f)}; }
+// Where a pixel of the first photo is in the second: a shift that varies across the object (a
+// third photo: `scale` times it).
+cv::Vec2f motion(float x, float y, float scale = 1.0f) {
+  return scale * cv::Vec2f(6.0f + 4.0f * std::sin(y / 40.0f), 2.0f * std::cos(x / 50.0f));
+}
 
 // `a` moved by motion() (sampled backward through its inverse, close enough for smooth motion).
-Image moved(const Image& a) {
+Image moved(const Image& a, float scale = 1.0f) {
   cv::Mat map(kSize, kSize, CV_32FC2);
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x) {
-      const cv::Vec2f m = motion(float(x), float(y));
-      const cv::Vec2f back = motion(float(x) - m[0], float(y) - m[1]);
+      const cv::Vec2f m = motion(float(x), float(y), scale);
+      const cv::Vec2f back = motion(float(x) - m[0], float(y) - m[1], scale);
       map.at<cv::Vec2f>(y, x) = {float(x) - back[0], float(y) - back[1]};
     }
   const cv::Mat source(kSize, kSize, CV_8UC4, const_cast<uint8_t*>(a.pixels.data()));
@@ -79,34 +82,43 @@ TEST(DenseMatchesTest, FlowFollowsATexturedObjectAndIsKeptOnlyWhereVerified) {
   EXPECT_LT(error / kept, 0.5);
 }
 
-TEST(DenseMatchesTest, AFewPointsCarryTheFlowAndGoWhereTheWarpWouldMissIt) {
-  const Image a = textured_disc(), b = moved(a);
-  const DenseMatches m = dense_matches(a, b);
+TEST(DenseMatchesTest, AFewPointsCarryTheFlowsAndGoWhereTheWarpWouldMissThem) {
+  // A triangle's three photos: b moved one way, c (the row above, say) the other way and less.
+  const Image a = textured_disc(), b = moved(a), c = moved(a, -0.6f);
+  const DenseMatches to_b = dense_matches(a, b), to_c = dense_matches(a, c);
   DistilOptions options;
   options.max_points = 120;
-  const std::vector<Landmark> points = distil_control_points(m, a, {}, options);
+  const std::vector<Track> points = distil_tracks({&to_b, &to_c}, a, {}, options);
   EXPECT_LE(points.size(), size_t(options.max_points));
   EXPECT_GE(points.size(), size_t(12));
-  // The warp through the points follows the true motion inside the object.
-  const cv::Mat warp = warp_flow(points, {kSize, kSize});
-  double error = 0, none = 0;
-  int n = 0;
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x) {
-      if (std::hypot(x - 128.0, y - 128.0) > 80.0) continue;
-      const cv::Vec2f w = warp.at<cv::Vec2f>(y, x), truth = motion(float(x), float(y));
-      error += std::hypot(w[0] - truth[0], w[1] - truth[1]);
-      none += std::hypot(truth[0], truth[1]);
-      ++n;
-    }
-  std::printf("%zu points: warp error %.3f px (moving nothing: %.3f px)\n", points.size(), error / n, none / n);
-  EXPECT_LT(error / n, 0.6);
+  // The warp through the points follows each true motion inside the object.
+  for (const float scale : {1.0f, -0.6f}) {
+    std::vector<Landmark> through;
+    for (const Track& t : points) through.push_back({.source = t.source, .target = t.targets[scale > 0 ? 0 : 1], .match = 1});
+    const cv::Mat warp = warp_flow(through, {kSize, kSize});
+    double error = 0, none = 0;
+    int n = 0;
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        if (std::hypot(x - 128.0, y - 128.0) > 80.0) continue;
+        const cv::Vec2f w = warp.at<cv::Vec2f>(y, x), truth = motion(float(x), float(y), scale);
+        error += std::hypot(w[0] - truth[0], w[1] - truth[1]);
+        none += std::hypot(truth[0], truth[1]);
+        ++n;
+      }
+    std::printf("%zu points, motion x %.1f: warp error %.3f px (moving nothing: %.3f px)\n", points.size(), scale, error / n, none / n);
+    EXPECT_LT(error / n, 0.6) << "motion x " << scale;
+  }
   // Anchors are kept as they are, first.
-  const Landmark anchor{.source = {20, 20}, .target = {21, 20}, .match = 1};
-  const std::vector<Landmark> with_anchor = distil_control_points(m, a, {anchor}, options);
+  const Track anchor{.source = {20, 20}, .targets = {{21, 20}, {19, 20}}};
+  const std::vector<Track> with_anchor = distil_tracks({&to_b, &to_c}, a, {anchor}, options);
   ASSERT_FALSE(with_anchor.empty());
   EXPECT_EQ(with_anchor.front().source, anchor.source);
-  EXPECT_EQ(with_anchor.front().target, anchor.target);
+  EXPECT_EQ(with_anchor.front().targets, anchor.targets);
+  // Read the other way, the same matches lead back.
+  const DenseMatches back = reversed(to_b);
+  EXPECT_EQ(cv::norm(back.forward, to_b.backward, cv::NORM_INF), 0.0);
+  EXPECT_EQ(cv::norm(back.reliable, to_b.reliable_backward, cv::NORM_INF), 0.0);
 }
 
 TEST(DenseMatchesTest, FlowInterpolationPutsTheObjectHalfWay) {

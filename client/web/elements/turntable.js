@@ -2,7 +2,7 @@
 // one script tag (SPEC W2, CONTRACTS.md). It downloads the product progressively (each photo's
 // matte and photo, nearest the view first; a first view after one photo; a progress bar), then
 // synthesises every view locally (render/tween/tween_view.js). Drag with mouse, touch or pen
-// (with inertia), wheel or pinch to zoom, arrow keys step one photo, auto-spin until the first
+// (with inertia; up and down on rows), wheel or pinch to zoom, arrow keys step one photo or row, auto-spin until the first
 // touch (not under prefers-reduced-motion), fullscreen, sized by its container at the device
 // pixel ratio. Turning it sends nothing. Attributes: server, session, token, azimuth,
 // auto-rotate ("off" to stop it), and presenter mode (off unless set): `present` sends this
