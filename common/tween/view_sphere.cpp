@@ -86,6 +86,8 @@ glm::vec3 halfway_direction(const glm::vec3& a, const glm::vec3& b) {
 
 namespace {
 
+constexpr float kInside = 1e-3f;  // radians past a pair's end, or barycentric weight below 0, still inside
+
 float angle_between(const glm::vec3& a, const glm::vec3& b) {
   return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
 }
@@ -113,6 +115,7 @@ CellLocation locate_view(const TweenData& data, const glm::vec3& direction) {
       const float miss = outside + std::abs(glm::dot(d, n)) * 1e-3f;  // prefer the ring the view is nearest
       if (miss < best_miss) {
         best_miss = miss;
+        best.inside = outside <= kInside;
         best.cell = int(i);
         best.t = std::clamp(theta / total, 0.0f, 1.0f);
         best.weights = {1.0f - best.t, best.t, 0.0f};
@@ -128,6 +131,7 @@ CellLocation locate_view(const TweenData& data, const glm::vec3& direction) {
       const float miss = std::max({0.0f, -w.x, -w.y, -w.z});
       if (miss < best_miss) {
         best_miss = miss;
+        best.inside = miss <= kInside;
         best.cell = int(i);
         w = glm::max(w, glm::vec3(0.0f));
         w /= (w.x + w.y + w.z);

@@ -41,6 +41,7 @@ struct CellLocation {
   int cell = -1;  // -1 when no cell holds the direction
   float t = 0.0f;  // pairs: 0 at the first sample, 1 at the second
   std::array<float, 3> weights{1.0f, 0.0f, 0.0f};
+  bool inside = false;  // the view lies within the cell (not past an open ring's end, above the top row, ...)
 };
 CellLocation locate_view(const TweenData& data, const glm::vec3& direction);
 

@@ -263,14 +263,18 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
     frame.viewport = {model.data.width, model.data.height};
     frame.camera.position = d * model.distance_diagonals * kSceneDiagonal;
     frame.camera.target = glm::vec3(0.0f);
-    // The two product photos nearest the held-out view, and where it lies between them.
-    std::vector<int> order(size_t(n), 0);
-    std::iota(order.begin(), order.end(), 0);
+    // The two product photos the held-out view lies between (round one ring: its neighbours in
+    // the ring; among rows: the two nearest), and where it lies between them.
     const auto angle_to = [&](int i) { return std::acos(std::clamp(glm::dot(d, even.directions[size_t(i)]), -1.0f, 1.0f)); };
-    std::partial_sort(order.begin(), order.begin() + 2, order.end(), [&](int l, int r) { return angle_to(l) < angle_to(r); });
-    const int before = order[0], after = order[1];
+    int before = int(k) / 2, after = (before + 1) % n;
+    if (all.rows > 1) {
+      std::vector<int> order(size_t(n), 0);
+      std::iota(order.begin(), order.end(), 0);
+      std::partial_sort(order.begin(), order.begin() + 2, order.end(), [&](int l, int r) { return angle_to(l) < angle_to(r); });
+      before = order[0], after = order[1];
+    }
     const float t = angle_to(before) / std::max(angle_to(before) + angle_to(after), 1e-6f);
-    const Image& nearest = even.photos[size_t(before)];
+    const Image& nearest = even.photos[size_t(t <= 0.5f ? before : after)];
     const Image spin_view = without_watermark_corner(nearest, colour);
     const Image fade_view = without_watermark_corner(over_colour(synthesised(renderer, canvas, frame, "crossfade", "sum"), colour, true), colour);
     const Image tween_view = without_watermark_corner(over_colour(synthesised(renderer, canvas, frame, "bilinear", "matte"), colour, true), colour);

@@ -155,7 +155,15 @@ TEST(TweenDataTest, ViewsFindTheirRingPairAndSphereTriangle) {
     const CellLocation at = locate_view(ring, view);
     ASSERT_EQ(at.cell, 2);
     EXPECT_NEAR(at.t, 0.5f, 1e-4f);
+    EXPECT_TRUE(at.inside);
   }
+  // Half a ring (photos 0..12, no pair closing it): a view from behind is past its end.
+  TweenData half = ring;
+  half.cells.resize(12);
+  EXPECT_TRUE(locate_view(half, ring_directions(24)[7]).inside);
+  const CellLocation behind = locate_view(half, ring_directions(24)[18]);
+  EXPECT_FALSE(behind.inside);
+  EXPECT_TRUE(behind.t == 0.0f || behind.t == 1.0f);
   const ViewSphere sphere = geodesic_sphere(1);
   TweenData s;
   s.width = s.height = 64;
@@ -166,6 +174,7 @@ TEST(TweenDataTest, ViewsFindTheirRingPairAndSphereTriangle) {
     const glm::vec3 view = glm::normalize(glm::vec3(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1)));
     const CellLocation at = locate_view(s, view);
     ASSERT_GE(at.cell, 0);
+    EXPECT_TRUE(at.inside);  // the sphere is covered
     // The weights rebuild the view's direction through the triangle's plane.
     glm::vec3 rebuilt(0.0f);
     for (int k = 0; k < 3; ++k) {

@@ -180,11 +180,18 @@ TweenRenderer::View TweenRenderer::plan(const FrameState& frame) {
   const TweenCell& cell = model_.data.cells[size_t(at.cell)];
   const bool pair = cell.is_pair();
   const int n = int(cell.samples.size());
-  // Until every sample of the view's cell is there, the nearest sample that is there shows. (Not
-  // "the cell holds the nearest sample": between rows of photos the nearest can be the quad's
-  // corner across the diagonal, outside the triangle that holds the view.)
-  const bool whole = std::all_of(cell.samples.begin(), cell.samples.end(), [&](uint16_t s) { return textures_[s] != nullptr; });
-  if (!whole) {
+  // Until every sample of the view's cell is there, the nearest sample that is there shows; so it
+  // does outside every cell (past an open ring's end, above the top row), and for a pair that
+  // does not hold the nearest sample (a view off a wobbling calibrated ring, located in a pair
+  // beside its own: on templeRing 0.6 dB better than that pair's tween). Not for triangles:
+  // between rows the nearest photo can be the quad's corner across the diagonal, outside the
+  // triangle that holds the view.
+  bool whole = true, holds_nearest = false;
+  for (uint16_t s : cell.samples) {
+    whole = whole && textures_[s] != nullptr;
+    holds_nearest = holds_nearest || (!fallback.sources.empty() && textures_[s].get() == fallback.sources[0].image);
+  }
+  if (!whole || !at.inside || (cell.is_pair() && !holds_nearest)) {
     last_cell_ = -1;
     return fallback;
   }

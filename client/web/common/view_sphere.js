@@ -1,17 +1,19 @@
 // Where a view direction falls among a product's cells, mirroring common/tween/view_sphere.cpp
 // locate_view(): the cell, and the weight of each of its samples. For a pair, the angle
 // fraction t of the view projected onto the pair's great circle; for a triangle, the
-// barycentric coordinates of the view ray through the triangle's plane.
+// barycentric coordinates of the view ray through the triangle's plane; `inside` when the view
+// lies within its cell (not past the end of an open ring or above the top row).
 const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
 const norm = (a) => Math.hypot(a[0], a[1], a[2]);
 const normalize = (a) => { const l = norm(a); return [a[0] / l, a[1] / l, a[2] / l]; };
 const angleBetween = (a, b) => Math.atan2(norm(cross(a, b)), dot(a, b));
+const kInside = 1e-3;  // radians past a pair's end, or barycentric weight below 0, still inside
 
 // `cells`: [{samples: [...]}, ...] (null for cells not there yet); `directions`: per sample.
 export function locateView(directions, cells, direction) {
   const d = normalize(direction);
-  const best = { cell: -1, t: 0, weights: [1, 0, 0] };
+  const best = { cell: -1, t: 0, weights: [1, 0, 0], inside: false };
   let bestMiss = 1e9;
   cells.forEach((cell, i) => {
     if (!cell) return;
@@ -25,9 +27,11 @@ export function locateView(directions, cells, direction) {
       inPlane = normalize(inPlane);
       const total = angleBetween(a, b);
       const theta = Math.atan2(dot(cross(a, inPlane), n), dot(a, inPlane));
-      const miss = Math.max(0, -theta, theta - total) + Math.abs(dot(d, n)) * 1e-3;
+      const outside = Math.max(0, -theta, theta - total);
+      const miss = outside + Math.abs(dot(d, n)) * 1e-3;  // prefer the ring the view is nearest
       if (miss < bestMiss) {
         bestMiss = miss;
+        best.inside = outside <= kInside;
         best.cell = i;
         best.t = Math.min(Math.max(theta / total, 0), 1);
         best.weights = [1 - best.t, best.t, 0];
@@ -44,6 +48,7 @@ export function locateView(directions, cells, direction) {
       const miss = Math.max(0, -w[0], -w[1], -w[2]);
       if (miss < bestMiss) {
         bestMiss = miss;
+        best.inside = miss <= kInside;
         best.cell = i;
         w = w.map((x) => Math.max(x, 0));
         const s = w[0] + w[1] + w[2];

@@ -103,8 +103,11 @@ export class TweenView {
     const fallback = this.nearestLoaded(direction);
     if (at.cell < 0) return fallback;
     const cell = this.cells[at.cell], pair = cell.samples.length === 2;
-    // Until every sample of the cell is there, the nearest that is (as tween_renderer.cpp).
-    if (!cell.samples.every((s) => this.textures[s])) {
+    // Until every sample of the cell is there, outside every cell, or in a pair that does not
+    // hold the nearest sample, the nearest that is (as tween_renderer.cpp says why).
+    const whole = cell.samples.every((s) => this.textures[s]);
+    const holdsNearest = fallback && cell.samples.some((s) => this.textures[s] === fallback.sources[0].texture);
+    if (!whole || !at.inside || (pair && !holdsNearest)) {
       this.lastCell = -1;
       return fallback;
     }
