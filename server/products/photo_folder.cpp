@@ -153,6 +153,7 @@ PhotoFolder read_photo_folder(const fs::path& folder, const PhotoLayout& layout)
   if (!listing.row_folders.empty()) {
     if (!listing.photos.empty())
       throw Error(listing.photos.front().string() + " is beside row folders: put every photo in its row's folder (row1, row2, ...)");
+    if (listing.calibrated) throw Error(folder.string() + ": a calibration file describes one ring of photos, not rows");
     for (size_t r = 0; r < listing.row_folders.size(); ++r)
       if (listing.row_folders[r].first != int(r) + 1)
         throw Error(folder.string() + " has row folders " + listing.row_folders[r].second.filename().string() + " but no row" +
@@ -196,7 +197,7 @@ PhotoFolder read_photo_folder(const fs::path& folder, const PhotoLayout& layout)
   if (n > 360) throw Error(folder.string() + " holds " + std::to_string(n) + " photos; at most 360 (one per degree)");
   out.rows = int(rows.size());
 
-  if (listing.calibrated && rows.size() == 1 && listing.row_folders.empty()) {
+  if (listing.calibrated) {
     // Neighbours in order; the last and the first too when the photos go all the way round (the
     // gap that closes the ring is no wider than one and a half of the others).
     std::vector<float> steps;

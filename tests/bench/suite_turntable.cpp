@@ -172,19 +172,12 @@ Image without_watermark_corner(Image image, glm::u8vec3 colour) {
   return image;
 }
 
-// Real photos: a folder's even photos made into a product as add-product makes one, the odd ones
-// held out as the truth (each lies between two product photos). Per held-out photo: the spin
-// viewer's nearest product photo as it was shot, a cross-fade and the tween of the stored
-// product over the photo's own backdrop colour, and the optical-flow interpolation of the two
-// photos (everything on the client: the quality reference). Midway views are written beside
-// the truth for looking at: [truth | spin | cross-fade | tween | flow] in DIR/turntable-NAME-K.png.
 // Which photos of a set make the product and which are held out: every other photo of a row
 // (and with rows, every other row: the held-out rows lie between kept ones, so their views are
 // tweened up and down as well as round).
 struct HeldOut {
   PhotoFolder kept;
   std::vector<size_t> truths;  // indices into the set of the held-out photos within the kept ones' reach
-  bool closes = false;
 };
 
 HeldOut hold_out(const PhotoFolder& all) {
@@ -193,7 +186,7 @@ HeldOut hold_out(const PhotoFolder& all) {
   const int last_row = 2 * (kept_rows - 1);  // the highest kept row: views above it have nothing to come from
   // The ring closes when the photos go all the way round and the last held-out one lies between
   // the last kept one and the first.
-  h.closes = all.closed && columns % 2 == 0;
+  h.kept.closed = all.closed && columns % 2 == 0;
   for (int r = 0; r < all.rows; ++r)
     for (int c = 0; c < columns; ++c) {
       const size_t i = size_t(r * columns + c);
@@ -201,17 +194,16 @@ HeldOut hold_out(const PhotoFolder& all) {
         h.kept.names.push_back(all.names[i]);
         h.kept.photos.push_back(all.photos[i]);
         h.kept.directions.push_back(all.directions[i]);
-      } else if (r <= last_row && (h.closes || c < 2 * (kept_columns - 1))) {
+      } else if (r <= last_row && (h.kept.closed || c < 2 * (kept_columns - 1))) {
         h.truths.push_back(i);
       }
     }
   h.kept.rows = kept_rows;
-  h.kept.closed = h.closes;
   if (kept_rows > 1) {
-    h.kept.cells = row_triangles(kept_rows, kept_columns, h.closes);
+    h.kept.cells = row_triangles(kept_rows, kept_columns, h.kept.closed);
   } else {
     for (int i = 0; i + 1 < kept_columns; ++i) h.kept.cells.push_back({uint16_t(i), uint16_t(i + 1)});
-    if (h.closes) h.kept.cells.push_back({uint16_t(kept_columns - 1), 0});
+    if (h.kept.closed) h.kept.cells.push_back({uint16_t(kept_columns - 1), 0});
   }
   return h;
 }
@@ -220,17 +212,17 @@ HeldOut hold_out(const PhotoFolder& all) {
 // held out as the truth (each lies between product photos; with rows, the odd rows too). Per
 // held-out photo: the spin viewer's nearest product photo as it was shot, a cross-fade and the
 // tween of the stored product over the photo's own backdrop colour, and the optical-flow
-// interpolation of the two nearest product photos (everything on the client: the quality
-// reference). Views are written beside the truth for looking at:
+// interpolation of the two product photos it lies between (everything on the client: the
+// quality reference). Views are written beside the truth for looking at:
 // [truth | spin | cross-fade | tween | flow] in DIR/turntable-NAME-K.png.
 std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const fs::path& output_dir) {
   const std::string name = folder.filename().empty() ? folder.parent_path().filename().string() : folder.filename().string();
   const PhotoFolder all = read_photo_folder(folder, {});
   const HeldOut held = hold_out(all);
-  const PhotoFolder& even = held.kept;
-  const int n = int(even.photos.size());
+  const PhotoFolder& kept = held.kept;
+  const int n = int(kept.photos.size());
   const auto made = std::chrono::steady_clock::now();
-  const Product product = product_from_photo_folder(held.kept, PhotoProductOptions{}, {}, folder.string());
+  const Product product = product_from_photo_folder(kept, PhotoProductOptions{}, {}, folder.string());
   const double seconds_to_make = std::chrono::duration<double>(std::chrono::steady_clock::now() - made).count();
   const fs::path data = fs::temp_directory_path() / ("inkwire-bench-photos-" + std::to_string(::getpid()));
   fs::remove_all(data);
@@ -265,7 +257,7 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
     frame.camera.target = glm::vec3(0.0f);
     // The two product photos the held-out view lies between (round one ring: its neighbours in
     // the ring; among rows: the two nearest), and where it lies between them.
-    const auto angle_to = [&](int i) { return std::acos(std::clamp(glm::dot(d, even.directions[size_t(i)]), -1.0f, 1.0f)); };
+    const auto angle_to = [&](int i) { return std::acos(std::clamp(glm::dot(d, kept.directions[size_t(i)]), -1.0f, 1.0f)); };
     int before = int(k) / 2, after = (before + 1) % n;
     if (all.rows > 1) {
       std::vector<int> order(size_t(n), 0);
@@ -274,11 +266,11 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
       before = order[0], after = order[1];
     }
     const float t = angle_to(before) / std::max(angle_to(before) + angle_to(after), 1e-6f);
-    const Image& nearest = even.photos[size_t(t <= 0.5f ? before : after)];
+    const Image& nearest = kept.photos[size_t(t <= 0.5f ? before : after)];
     const Image spin_view = without_watermark_corner(nearest, colour);
     const Image fade_view = without_watermark_corner(over_colour(synthesised(renderer, canvas, frame, "crossfade", "sum"), colour, true), colour);
     const Image tween_view = without_watermark_corner(over_colour(synthesised(renderer, canvas, frame, "bilinear", "matte"), colour, true), colour);
-    const Image flow_view = without_watermark_corner(flow_interpolation(even.photos[size_t(before)], even.photos[size_t(after)], t), colour);
+    const Image flow_view = without_watermark_corner(flow_interpolation(kept.photos[size_t(before)], kept.photos[size_t(after)], t), colour);
     score(spin, spin_view, truth);
     score(fade, fade_view, truth);
     score(tween, tween_view, truth);

@@ -2,9 +2,9 @@
 // one script tag (SPEC W2, CONTRACTS.md). It downloads the product progressively (each photo's
 // matte and photo, nearest the view first; a first view after one photo; a progress bar), then
 // synthesises every view locally (render/tween/tween_view.js). Drag with mouse, touch or pen
-// (with inertia; up and down on rows), wheel or pinch to zoom, arrow keys step one photo or row, auto-spin until the first
-// touch (not under prefers-reduced-motion), fullscreen, sized by its container at the device
-// pixel ratio. Turning it sends nothing. Attributes: server, session, token, azimuth,
+// (with inertia; up and down too on a product in rows), wheel or pinch to zoom, arrow keys step
+// one photo or one row, auto-spin until the first touch (not under prefers-reduced-motion),
+// fullscreen, sized by its container at the device pixel ratio. Turning it sends nothing. Attributes: server, session, token, azimuth,
 // auto-rotate ("off" to stop it), and presenter mode (off unless set): `present` sends this
 // view to the session as object poses, `follow` shows the newest view a presenter sent (a drag
 // turns it until the next); property azimuth (degrees); attribute `loaded` once every photo and
