@@ -39,6 +39,10 @@ TurntableOrbit TurntableOrbit::from_pose(const protocol::ObjectPose& pose) {
 
 TurntableView::TurntableView(const protocol::Snapshot& state) : product_(state.product) {
   if (product_.directions.size() < 2) throw Error("session '" + state.session + "' has no product to show");
+  // The rows' elevations, lowest first (directions travel as i16: rows within half a degree are one).
+  for (const glm::vec3& d : product_.directions) row_heights_.push_back(TurntableOrbit::from_direction(d).elevation);
+  std::sort(row_heights_.begin(), row_heights_.end());
+  row_heights_.erase(std::unique(row_heights_.begin(), row_heights_.end(), [](float a, float b) { return b - a < 0.5f; }), row_heights_.end());
   TweenModel header;
   header.data.width = product_.width;
   header.data.height = product_.height;
@@ -62,25 +66,14 @@ void TurntableView::set_style(const std::vector<std::string>& settings) {
   }
 }
 
-glm::vec2 TurntableView::elevation_range() const {
-  glm::vec2 range(90.0f, -90.0f);
-  for (const glm::vec3& d : product_.directions) {
-    const float e = TurntableOrbit::from_direction(d).elevation;
-    range = {std::min(range.x, e), std::max(range.y, e)};
-  }
-  return range;
-}
+glm::vec2 TurntableView::elevation_range() const { return {row_heights_.front(), row_heights_.back()}; }
 
 float TurntableView::row_elevation(float elevation, int rows) const {
-  std::vector<float> heights;  // the rows' elevations, lowest first (directions travel as i16: rows within half a degree are one)
-  for (const glm::vec3& d : product_.directions) heights.push_back(TurntableOrbit::from_direction(d).elevation);
-  std::sort(heights.begin(), heights.end());
-  heights.erase(std::unique(heights.begin(), heights.end(), [](float a, float b) { return b - a < 0.5f; }), heights.end());
-  const auto nearest = std::min_element(heights.begin(), heights.end(), [&](float a, float b) {
+  const auto nearest = std::min_element(row_heights_.begin(), row_heights_.end(), [&](float a, float b) {
     return std::abs(a - elevation) < std::abs(b - elevation);
   });
-  const long index = std::clamp(long(nearest - heights.begin()) + rows, 0L, long(heights.size()) - 1);
-  return heights[size_t(index)];
+  const long index = std::clamp(long(nearest - row_heights_.begin()) + rows, 0L, long(row_heights_.size()) - 1);
+  return row_heights_[size_t(index)];
 }
 
 int TurntableView::nearest_sample(const TurntableOrbit& orbit) const {

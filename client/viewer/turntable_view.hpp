@@ -79,6 +79,7 @@ class TurntableView {
   std::map<uint16_t, bool> cells_seen_;
   int loaded_ = 0;
   std::string error_;
+  std::vector<float> row_heights_;  // the samples' distinct elevations, lowest first
 };
 
 }  // namespace inkwire

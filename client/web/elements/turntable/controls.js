@@ -78,10 +78,14 @@ export const ControlsMixin = (Base) => class extends Base {
 
   // The product's rows' elevations (degrees, lowest first): one for a single ring, a few for
   // rows, many on a geodesic sphere. Directions travel as i16: rows within half a degree are one.
+  // Worked out once a product (every pointer move asks).
   rowElevations() {
-    const heights = this.snapshot.product.directions.map((d) => (Math.asin(Math.min(Math.max(d[1], -1), 1)) * 180) / Math.PI);
-    heights.sort((a, b) => a - b);
-    return heights.reduce((rows, h) => (rows.length && h - rows[rows.length - 1] < 0.5 ? rows : [...rows, h]), []);
+    const { directions } = this.snapshot.product;
+    if (this.rows?.directions !== directions) {
+      const heights = directions.map((d) => (Math.asin(Math.min(Math.max(d[1], -1), 1)) * 180) / Math.PI).sort((a, b) => a - b);
+      this.rows = { directions, elevations: heights.reduce((rows, h) => (rows.length && h - rows[rows.length - 1] < 0.5 ? rows : [...rows, h]), []) };
+    }
+    return this.rows.elevations;
   }
 
   // `elevation` kept where there are photos to synthesise the view from.
