@@ -145,7 +145,7 @@ template <class Stream>
 void serialise(Stream& s, AssetAnnounce& m) {
   s.hash(m.hash);
   s.u64(m.size);
-  enumeration(s, m.kind, 1, 6, "asset kind");
+  enumeration(s, m.kind, 1, kAssetKinds, "asset kind");
   s.text(m.name, kMaxName);
   if constexpr (Stream::reading) {
     check(m.size <= kMaxAssetBytes, "asset larger than 1 GiB");
@@ -190,8 +190,20 @@ void serialise(Stream& s, Product& m) {
   s.u16(m.cells);
   s.f32(m.distance_diagonals);
   s.f32(m.fov_y_degrees);
+  const size_t levels = s.count(m.levels.size(), kMaxZoomLevels, "zoom levels");
+  if constexpr (Stream::reading) m.levels.resize(levels);
+  for (ImageSize& level : m.levels) {
+    s.u16(level.width);
+    s.u16(level.height);
+  }
   if constexpr (Stream::reading) {
     const bool empty = m.directions.empty();
+    ImageSize below{m.width, m.height};
+    for (const ImageSize& level : m.levels) {
+      check(!empty && level.width > below.width && level.height > below.height && level.width <= 4095 && level.height <= 4095,
+            "a zoom level is not larger than the one below it, or over 4095");
+      below = level;
+    }
     check(empty ? m.width == 0 && m.height == 0 && m.cells == 0 : m.directions.size() >= 2, "product with fewer than 2 samples");
     check(empty || (m.width >= 1 && m.height >= 1 && m.width <= 4095 && m.height <= 4095), "product image size outside 1..4095");
     check(m.cells <= 4 * kMaxProductSamples, "product has too many tween cells");
@@ -333,8 +345,8 @@ SessionKind session_kind_from_string(const std::string& name) {
 }
 
 std::string to_string(AssetKind kind) {
-  static const char* names[] = {"mesh", "image", "samples", "tween", "landmarks", "matte"};
-  return unsigned(kind) >= 1 && unsigned(kind) <= 6 ? names[unsigned(kind) - 1] : "unknown";
+  static const char* names[] = {"mesh", "image", "samples", "tween", "landmarks", "matte", "zoom"};
+  return unsigned(kind) >= 1 && unsigned(kind) <= kAssetKinds ? names[unsigned(kind) - 1] : "unknown";
 }
 
 MessageType type_of(const Message& m) { return MessageType(m.index() + 1); }

@@ -18,7 +18,7 @@
 namespace inkwire::protocol {
 
 inline constexpr uint32_t kMagic = 0x574B4E49;  // the bytes "INKW" read as a little-endian u32
-inline constexpr uint16_t kVersion = 3;  // 2: snapshots describe a turntable's product; 3: calls, refused changes
+inline constexpr uint16_t kVersion = 4;  // 2: snapshots describe a turntable's product; 3: calls, refused changes; 4: zoom levels
 
 inline constexpr size_t kMaxName = 64;           // session, client and server names
 inline constexpr size_t kMaxToken = 128;
@@ -28,6 +28,7 @@ inline constexpr size_t kMaxSetting = 300;       // one KEY=VALUE
 inline constexpr size_t kMaxSettings = 64;
 inline constexpr size_t kMaxAssets = 1024;       // per session: a 360-photo product with mattes, plus its tween data
 inline constexpr size_t kMaxProductSamples = 360; // sample photos of one product (one per degree)
+inline constexpr size_t kMaxZoomLevels = 3;      // finer levels of a product's photos: 512 -> 1024 -> 2048, and one to spare
 inline constexpr size_t kMaxChunk = 64 * 1024;   // asset bytes per chunk
 inline constexpr size_t kMaxTween = 16 * 1024;   // one cell's tween data
 inline constexpr uint64_t kMaxAssetBytes = uint64_t(1) << 30;
@@ -47,8 +48,10 @@ enum class MessageType : uint16_t {
 inline constexpr uint16_t kMessageTypes = 23;
 
 enum class SessionKind : uint8_t { Scene = 1, Turntable = 2, Conference = 3 };
-// Samples: a product's sample photos in sample order; Matte: their mattes, in the same order.
-enum class AssetKind : uint8_t { Mesh = 1, Image = 2, Samples = 3, Tween = 4, Landmarks = 5, Matte = 6 };
+// Samples: a product's sample photos in sample order; Matte: their mattes, in the same order;
+// Zoom: the photos again at the product's finer levels, level after level, each in sample order.
+enum class AssetKind : uint8_t { Mesh = 1, Image = 2, Samples = 3, Tween = 4, Landmarks = 5, Matte = 6, Zoom = 7 };
+inline constexpr unsigned kAssetKinds = 7;
 enum class ErrorCode : uint16_t {
   BadVersion = 1, Malformed = 2, NoSession = 3, BadToken = 4, NotJoined = 5, NoAsset = 6,
   TooSlow = 7, ShuttingDown = 8, Refused = 9,
@@ -181,12 +184,19 @@ struct AssetChunk {
 // `distance_diagonals` bounding-box diagonals away with a `fov_y_degrees` field of view; the
 // photos are the session's Samples assets in sample order (and its Matte assets, if any), and
 // `cells` tween-data messages follow the snapshot. Empty (no directions) in other sessions.
+// `levels` (SPEC T18): the sizes of the photos' finer levels, each larger than the one before,
+// for zooming in; the session's Zoom assets hold them.
+struct ImageSize {
+  bool operator==(const ImageSize&) const = default;
+  uint16_t width = 0, height = 0;
+};
 struct Product {
   bool operator==(const Product&) const = default;
   uint16_t width = 0, height = 0;
   std::vector<glm::vec3> directions;
   uint16_t cells = 0;
   float distance_diagonals = 1.4f, fov_y_degrees = 45.0f;
+  std::vector<ImageSize> levels;
 };
 
 // Everything a client needs to draw a session: sent on join and whenever a client asks again.

@@ -64,13 +64,31 @@ class Statement {
 };
 
 // A state is a snapshot frame: read back through the same validating decoder as the wire.
-protocol::Snapshot decode_state(const protocol::Bytes& frame) {
+protocol::Snapshot decode_snapshot_frame(const protocol::Bytes& frame) {
   if (frame.size() < protocol::kHeaderBytes) throw Error("no state stored");
   const auto header = protocol::parse_header(frame.data());
   auto message = protocol::decode(header.type, frame.data() + protocol::kHeaderBytes, frame.size() - protocol::kHeaderBytes);
   auto* snapshot = std::get_if<protocol::Snapshot>(&message);
   if (!snapshot) throw Error("stored state is not a snapshot");
   return std::move(*snapshot);
+}
+
+// States stored by protocol version 3 end before the product's zoom levels (version 4): read as
+// none, so a server upgraded in place keeps its sessions.
+protocol::Snapshot decode_state(const protocol::Bytes& frame) {
+  try {
+    return decode_snapshot_frame(frame);
+  } catch (const protocol::ProtocolError& e) {
+    protocol::Bytes with_levels = frame;
+    with_levels.insert(with_levels.end(), {0, 0});
+    const uint32_t length = uint32_t(with_levels.size() - protocol::kHeaderBytes);
+    for (int k = 0; k < 4; ++k) with_levels[size_t(k)] = uint8_t(length >> (8 * k));
+    try {
+      return decode_snapshot_frame(with_levels);
+    } catch (const protocol::ProtocolError&) {
+      throw e;
+    }
+  }
 }
 
 // Flushes a file (or a folder's entries) to the disk, so a crash right after cannot leave a

@@ -43,7 +43,7 @@ ProductSource product_from_json(const SessionConfig& session, const nlohmann::js
   p.photo_options.layout.arc_degrees = j.value("arc", 0.0f);
   p.photo_options.layout.rows = j.value("rows", 0);
   p.photo_options.layout.elevations = j.value("elevations", std::vector<float>{});
-  p.photo_options.layout.max_side = j.value("max_side", 512);
+  p.photo_options.layout.max_side = j.value("max_side", 2048);
   p.photo_options.matte = j.value("matte", "auto");
   p.mesh_options.samples = j.value("samples", 24);
   p.mesh_options.size = j.value("size", 512);

@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
   add->add_option("--rows", layout.rows, "rings of photos at several camera heights, the files in order, lowest first (sub-folders row1, row2, ... need no --rows)")->needs(photos);
   add->add_option("--elevations", layout.elevations, "the rows' camera heights in degrees, lowest first, comma-separated (default: level, then 15 degrees apart)")
       ->delimiter(',')->needs(photos);
-  add->add_option("--max-side", layout.max_side, "photos are scaled to at most this many pixels a side (32..2048, default 512)")->needs(photos);
+  add->add_option("--max-side", layout.max_side, "photos are kept at most this many pixels a side, the finest zoom level (32..2048, default 2048); they are matched and first shown at most 512")->needs(photos);
   add->add_option("--matte", source.photo_options.matte, "auto: key a plain backdrop when there is one; key: refuse if not; none")
       ->needs(photos);
   add->add_option("--samples", source.mesh_options.samples, "samples on the ring (default 24)")->needs(mesh);

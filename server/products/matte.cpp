@@ -109,6 +109,29 @@ cv::Mat largest_piece(const cv::Mat& mask, int* area) {
   return labels == largest;
 }
 
+// Keys `photo` by `matte` (its alpha) and `floor` (where the floor layer is, 255): the
+// backdrop's part taken out of edge pixels, the floor layer divided by the backdrop's colour,
+// the rest white. Returns how many pixels the floor layer covers.
+int apply_key(Image& photo, const cv::Mat& matte, const cv::Mat& floor, const cv::Vec3f& backdrop) {
+  int layer_pixels = 0;
+  for (int y = 0; y < photo.height; ++y)
+    for (int x = 0; x < photo.width; ++x) {
+      uint8_t* p = photo.at(x, y);
+      p[3] = matte.at<uint8_t>(y, x);
+      if (p[3] >= 32 && p[3] < 255) {
+        // An edge pixel is part object, part backdrop: the backdrop's part taken out, or the
+        // object would wear a rim of the studio's colour on any other backdrop.
+        const float a = float(p[3]) / 255.0f;
+        for (int c = 0; c < 3; ++c) p[c] = uint8_t(std::clamp(std::round((float(p[c]) - (1.0f - a) * backdrop[c]) / a), 0.0f, 255.0f));
+      }
+      if (p[3] != 0) continue;
+      const bool layer = floor.at<uint8_t>(y, x) != 0;
+      layer_pixels += layer;
+      for (int c = 0; c < 3; ++c) p[c] = layer ? uint8_t(std::min(255.0f, std::round(float(p[c]) * 255.0f / std::max(backdrop[c], 1.0f)))) : 255;
+    }
+  return layer_pixels;
+}
+
 }  // namespace
 
 glm::vec3 backdrop_colour(const Image& photo) { return median_colour(border_pixels(photo)); }
@@ -169,25 +192,28 @@ MatteResult key_plain_background(Image& photo) {
   const cv::Mat floor = pieces_touching(unlike_backdrop(photo, backdrop, std::max(8.0f, 1.5f * noise)) & ~matte, near);
   cv::Mat soft = matte.clone();
   cv::GaussianBlur(soft, soft, {3, 3}, 0.7);  // a pixel of soft edge against stair steps
-  int layer_pixels = 0;
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      uint8_t* p = photo.at(x, y);
-      p[3] = soft.at<uint8_t>(y, x);
-      if (p[3] >= 32 && p[3] < 255) {
-        // An edge pixel is part object, part backdrop: the backdrop's part taken out, or the
-        // object would wear a rim of the studio's colour on any other backdrop.
-        const float a = float(p[3]) / 255.0f;
-        for (int c = 0; c < 3; ++c) p[c] = uint8_t(std::clamp(std::round((float(p[c]) - (1.0f - a) * backdrop[c]) / a), 0.0f, 255.0f));
-      }
-      if (p[3] != 0) continue;
-      const bool layer = floor.at<uint8_t>(y, x) != 0;
-      layer_pixels += layer;
-      for (int c = 0; c < 3; ++c) p[c] = layer ? uint8_t(std::min(255.0f, std::round(float(p[c]) * 255.0f / std::max(backdrop[c], 1.0f)))) : 255;
-    }
+  const int layer_pixels = apply_key(photo, soft, floor, backdrop);
   result.floor_fraction = double(layer_pixels) / double(w * h);
+  result.backdrop = median;
   result.keyed = true;
   return result;
+}
+
+void key_like(Image& larger, const Image& keyed, const glm::vec3& backdrop) {
+  const int w = larger.width, h = larger.height;
+  // The floor layer is where the keyed photo's matte is 0 and its colour not white.
+  cv::Mat matte(keyed.height, keyed.width, CV_8U), floor(keyed.height, keyed.width, CV_8U);
+  for (int y = 0; y < keyed.height; ++y)
+    for (int x = 0; x < keyed.width; ++x) {
+      const uint8_t* p = keyed.at(x, y);
+      matte.at<uint8_t>(y, x) = p[3];
+      floor.at<uint8_t>(y, x) = p[3] == 0 && (p[0] != 255 || p[1] != 255 || p[2] != 255) ? 255 : 0;
+    }
+  // Scaled as clients scale the matte they lay the level over (resized(), bilinear).
+  cv::resize(matte, matte, {w, h}, 0, 0, cv::INTER_LINEAR);
+  cv::resize(floor, floor, {w, h}, 0, 0, cv::INTER_LINEAR);
+  cv::threshold(floor, floor, 127, 255, cv::THRESH_BINARY);
+  apply_key(larger, matte, floor, cv::Vec3f(backdrop.r, backdrop.g, backdrop.b));
 }
 
 Image laid_on_white(const Image& keyed) {

@@ -16,6 +16,7 @@ struct MatteResult {
   std::string reason;        // why not, when not keyed
   double object_fraction = 0;  // share of the image the object covers
   double floor_fraction = 0;   // share of the image its floor layer (shadow, reflection) covers
+  glm::vec3 backdrop{0.0f};    // the backdrop's colour (RGB, 0-255), when keyed
 };
 
 // The backdrop's colour: the per-channel median of the photo's outer 2% (RGB, 0-255).
@@ -30,6 +31,11 @@ glm::vec3 backdrop_colour(const Image& photo);
 // to the object, white everywhere else). Clients lay that layer under the object's outline.
 // Leaves `photo` untouched and says why when the border is not plain or nothing stands out.
 MatteResult key_plain_background(Image& photo);
+
+// Keys `larger`, the same photo at a larger size (a zoom level, SPEC T18), as `keyed` was keyed
+// against `backdrop`: the matte and the floor layer scaled up (bilinear, as clients scale the
+// matte they lay the level over), not found again.
+void key_like(Image& larger, const Image& keyed, const glm::vec3& backdrop);
 
 // A keyed photo as it is stored and shown: the object laid on white by its matte, its floor layer
 // (the colours where the matte is 0) as it is. Opaque.

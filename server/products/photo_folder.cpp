@@ -104,6 +104,21 @@ std::vector<float> row_elevations(const PhotoLayout& layout, int rows) {
   return out;
 }
 
+Image load_photo(const fs::path& file) {
+  try {
+    return load_upright_photo(file);
+  } catch (const Error& e) {
+    throw Error(file.string() + " cannot be read: " + e.what());
+  }
+}
+
+// `photo` at `size`, opaque (photos are opaque until keyed).
+Image opaque_at(Image photo, glm::ivec2 size) {
+  if (photo.width != size.x || photo.height != size.y) photo = resized(photo, size.x, size.y);
+  for (size_t i = 3; i < photo.pixels.size(); i += 4) photo.pixels[i] = 255;
+  return photo;
+}
+
 }  // namespace
 
 Image load_upright_photo(const fs::path& file) {
@@ -127,6 +142,26 @@ Image load_upright_photo(const fs::path& file) {
   Image out(turned.cols, turned.rows);
   std::copy_n(turned.ptr<uint8_t>(0), out.pixels.size(), out.pixels.data());
   return out;
+}
+
+std::vector<glm::ivec2> zoom_levels(glm::ivec2 first, glm::ivec2 finest) {
+  // Sizes in proportion to the finest, so every level frames the photo alike.
+  const float first_scale = float(std::max(first.x, first.y)) / float(std::max(finest.x, finest.y));
+  std::vector<glm::ivec2> levels;
+  for (float scale = 2.0f * first_scale; scale < 1.0f; scale *= 2.0f)
+    levels.push_back({std::max(1, int(std::lround(float(finest.x) * scale))), std::max(1, int(std::lround(float(finest.y) * scale)))});
+  levels.push_back(finest);
+  const float kWorthALevel = 1.25f;
+  auto hardly_finer = [&](glm::ivec2 level, glm::ivec2 than) { return float(std::max(level.x, level.y)) < kWorthALevel * float(std::max(than.x, than.y)); };
+  if (hardly_finer(finest, first)) return {};
+  for (size_t i = 0; i + 1 < levels.size();)
+    if (hardly_finer(levels[i + 1], levels[i])) levels.erase(levels.begin() + long(i));
+    else ++i;
+  return levels;
+}
+
+Image read_photo_at(const PhotoFolder& photos, size_t index, glm::ivec2 size) {
+  return opaque_at(load_photo(photos.folder / photos.names.at(index)), size);
 }
 
 std::vector<std::vector<uint16_t>> row_triangles(int rows, int columns, bool closed) {
@@ -228,28 +263,26 @@ PhotoFolder read_photo_folder(const fs::path& folder, const PhotoLayout& layout)
     out.cells = row_triangles(out.rows, columns, out.closed);
   }
 
-  // Every photo upright and at the first one's shape, scaled to at most max_side.
+  // Every photo upright and at the first one's shape, scaled to the first level.
+  out.folder = folder;
   glm::ivec2 size(0);
   for (const std::string& name : out.names) {
     const fs::path file = folder / name;
-    Image photo;
-    try {
-      photo = load_upright_photo(file);
-    } catch (const Error& e) {
-      throw Error(file.string() + " cannot be read: " + e.what());
-    }
+    Image photo = load_photo(file);
     if (size.x == 0) {
-      const float scale = std::min(1.0f, float(layout.max_side) / float(std::max(photo.width, photo.height)));
-      size = {std::max(1, int(std::lround(photo.width * scale))), std::max(1, int(std::lround(photo.height * scale)))};
+      auto scaled = [&](int side) {
+        const float scale = std::min(1.0f, float(side) / float(std::max(photo.width, photo.height)));
+        return glm::ivec2(std::max(1, int(std::lround(photo.width * scale))), std::max(1, int(std::lround(photo.height * scale))));
+      };
+      size = scaled(std::min(layout.max_side, kFirstSide));
+      out.finest = scaled(layout.max_side);
     } else {
       const float aspect = float(photo.width) / float(photo.height), wanted = float(size.x) / float(size.y);
       if (std::abs(aspect / wanted - 1.0f) > 0.02f)
         throw Error(file.string() + " is " + std::to_string(photo.width) + "x" + std::to_string(photo.height) +
                     ", not the shape of the first photo (" + out.names[0] + ")");
     }
-    if (photo.width != size.x || photo.height != size.y) photo = resized(photo, size.x, size.y);
-    for (size_t i = 3; i < photo.pixels.size(); i += 4) photo.pixels[i] = 255;  // photos are opaque until keyed
-    out.photos.push_back(std::move(photo));
+    out.photos.push_back(opaque_at(std::move(photo), size));
   }
   return out;
 }

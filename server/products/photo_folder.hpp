@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "common/image.hpp"
@@ -26,12 +27,23 @@ struct PhotoLayout {
   float arc_degrees = 0;   // the turn from a row's first photo to its last; 0: a full turn
   int rows = 0;            // rings of photos in the folder, in file-name order; 0: the row folders there are, else 1
   std::vector<float> elevations;  // degrees, per row from the lowest; empty: level, then 15 degrees apart (less past 6 rows)
-  int max_side = 512;      // photos are scaled down to at most this many pixels a side
+  int max_side = 2048;     // photos are kept at most this many pixels a side (the finest zoom level)
 };
 
+// Zoom (SPEC T18): a product's photos are matched, keyed and first shown at most kFirstSide
+// pixels a side (a first view fetches one such photo); larger photos are also kept at finer
+// levels, each twice the one before, up to the photos' own size at most max_side, fetched by
+// clients only when zoomed in or full screen.
+inline constexpr int kFirstSide = 512;
+// The sizes of the finer levels above `first`, coarsest first, the last `finest`: doubling, and a
+// level within 1.25 times of the next left out (it would add bytes and little detail).
+std::vector<glm::ivec2> zoom_levels(glm::ivec2 first, glm::ivec2 finest);
+
 struct PhotoFolder {
+  std::filesystem::path folder;
   std::vector<std::string> names;       // file names (row folder included), row after row, each in ring order
-  std::vector<Image> photos;            // RGBA, all one size
+  std::vector<Image> photos;            // RGBA, all one size, at most kFirstSide pixels a side
+  glm::ivec2 finest{0};                 // their size at the layout's max_side (or their own, if smaller)
   std::vector<glm::vec3> directions;    // unit, from the object toward the camera
   std::vector<std::vector<uint16_t>> cells;  // neighbouring photos to tween between: pairs round one row, else triangles
   bool closed = false;                  // the rows go all the way round
@@ -52,5 +64,9 @@ std::vector<std::vector<uint16_t>> row_triangles(int rows, int columns, bool clo
 
 // A photo turned upright by its EXIF orientation (1-8), as a viewer shows it.
 Image load_upright_photo(const std::filesystem::path& file);
+
+// Photo `index` of `photos` read again, upright, scaled to `size`, opaque: as read_photo_folder
+// read it, at another size (a zoom level). Throws inkwire::Error naming the file.
+Image read_photo_at(const PhotoFolder& photos, size_t index, glm::ivec2 size);
 
 }  // namespace inkwire

@@ -12,6 +12,7 @@
 #include "client/render/tween/image_warper.hpp"
 #include "client/render/tween/mesh_samples.hpp"
 #include "common/error.hpp"
+#include "protocol/messages.hpp"
 #include "common/tween/view_sphere.hpp"
 #include "server/products/exposure.hpp"
 #include "server/products/matte.hpp"
@@ -122,12 +123,14 @@ Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions&
 
   // Mattes: every photo keyed, or none (a product whose samples disagree on having an outline
   // would show one only some of the way round).
+  std::vector<glm::vec3> backdrops;
   if (o.matte != "none") {
     std::vector<Image> keyed = photos.photos;
     std::string refusal;
     for (size_t i = 0; i < keyed.size() && refusal.empty(); ++i) {
       const MatteResult r = key_plain_background(keyed[i]);
       if (!r.keyed) refusal = (folder / photos.names[i]).string() + " cannot be keyed: " + r.reason;
+      backdrops.push_back(r.backdrop);
     }
     if (refusal.empty()) {
       photos.photos = std::move(keyed);
@@ -183,6 +186,23 @@ Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions&
   product.images = std::move(photos.photos);
   // Photos say nothing of the camera's distance; a view at the samples' own distance shows them
   // at their own scale, which is all zooming needs.
+  product.levels = zoom_levels({product.data.width, product.data.height}, photos.finest);
+  // A session lists at most kMaxAssets: the coarser finer levels give way first (zoomed in, the
+  // finest is what a customer came for).
+  const size_t n = product.images.size(), per_level = n, fixed = n * (product.matted ? 2 : 1) + 1;
+  while (!product.levels.empty() && fixed + per_level * product.levels.size() > protocol::kMaxAssets) product.levels.erase(product.levels.begin());
+  if (progress && !product.levels.empty()) {
+    std::string sizes;
+    for (const glm::ivec2& l : product.levels) sizes += (sizes.empty() ? "" : ", ") + std::to_string(l.x) + "x" + std::to_string(l.y);
+    progress(0, total, "zoom: photos " + std::to_string(product.data.width) + "x" + std::to_string(product.data.height) + " first, then " + sizes);
+  }
+  product.finer = [photos = PhotoFolder{.folder = photos.folder, .names = photos.names}, backdrops, gains,
+                   matted = product.matted](size_t index, const Image& first, glm::ivec2 size) {
+    Image photo = read_photo_at(photos, index, size);
+    if (matted) key_like(photo, first, backdrops[index]);
+    apply_gain(photo, gains[index]);
+    return photo;
+  };
   return product;
 }
 

@@ -20,6 +20,11 @@ struct Product {
   std::vector<Image> images;  // RGBA, data.width x data.height; alpha is the matte
   bool matted = false;        // false: the photos could not be keyed and are shown whole
   float distance_diagonals = 1.4f, fov_y_degrees = 45.0f;  // the samples' camera, for zooming
+  // Zoom (SPEC T18): the sizes of the photos' finer levels, coarsest first, and sample `index`
+  // at one of them, made as `first` (images[index]) was: keyed alike, its exposure evened alike.
+  // Read when stored, one photo at a time: a product's photos at 2048 pixels fill gigabytes.
+  std::vector<glm::ivec2> levels;
+  std::function<Image(size_t index, const Image& first, glm::ivec2 size)> finer;
 };
 
 // Called once per pair as it is done: e.g. "pair 3/24 (photo_03.jpg -> photo_04.jpg): 61 landmarks".

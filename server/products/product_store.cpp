@@ -60,7 +60,7 @@ std::string ProductSource::key() const {
     std::sort(files.begin(), files.end());
     for (const fs::path& f : files) text += " " + f.generic_string() + "=" + hash_of_file(photos / f);
   }
-  text += " format=4";  // bump when the way products are made changes
+  text += " format=5";  // bump when the way products are made changes (5: zoom levels)
   const ContentHash h = content_hash(text.data(), text.size());
   return to_hex(h);
 }
@@ -90,11 +90,26 @@ protocol::Snapshot store_product(AssetStore& store, const Product& product, cons
     }
   }
   state.assets.insert(state.assets.end(), mattes.begin(), mattes.end());
+  // Zoom levels (SPEC T18), level after level, each in sample order: every photo read again at
+  // its finest, then scaled down level by level.
+  std::vector<std::vector<protocol::AssetAnnounce>> levels(product.levels.size());
+  for (size_t i = 0; i < product.images.size() && !levels.empty(); ++i) {
+    const Image finest = product.finer(i, product.images[i], product.levels.back());
+    for (size_t l = 0; l < levels.size(); ++l) {
+      const glm::ivec2 size = product.levels[l];
+      const Image level = l + 1 == levels.size() ? finest : resized(finest, size.x, size.y);
+      std::snprintf(name, sizeof name, "sample-%03zu-%d.jpg", i, size.x);
+      levels[l].push_back(store.add_bytes(encode_image(product.matted ? laid_on_white(level) : level, "jpg", kJpegQuality),
+                                          AssetKind::Zoom, name));
+    }
+  }
+  for (const auto& level : levels) state.assets.insert(state.assets.end(), level.begin(), level.end());
   const std::vector<uint8_t> tween = encode_tween(product.data);
   state.assets.push_back(store.add_bytes(Bytes(tween.begin(), tween.end()), AssetKind::Tween, "tween.iktw"));
   state.product = {.width = uint16_t(product.data.width), .height = uint16_t(product.data.height),
                    .directions = quantised(product.data).directions, .cells = uint16_t(product.data.cells.size()),
-                   .distance_diagonals = product.distance_diagonals, .fov_y_degrees = product.fov_y_degrees};
+                   .distance_diagonals = product.distance_diagonals, .fov_y_degrees = product.fov_y_degrees, .levels = {}};
+  for (const glm::ivec2& l : product.levels) state.product.levels.push_back({uint16_t(l.x), uint16_t(l.y)});
   return state;
 }
 
@@ -127,17 +142,19 @@ std::vector<protocol::TweenData> product_tween_messages(const AssetStore& store,
   const protocol::Product& p = state.product;
   if (p.directions.empty()) throw Error("session '" + state.session + "' has no product");
   std::optional<TweenData> data;
-  size_t samples = 0, mattes = 0;
+  size_t samples = 0, mattes = 0, zoom = 0;
   for (const auto& asset : state.assets) {
     const Bytes bytes = store.read_verified(asset.hash);  // every file checked, not only the tween data
     if (asset.kind == AssetKind::Samples) ++samples;
     if (asset.kind == AssetKind::Matte) ++mattes;
+    if (asset.kind == AssetKind::Zoom) ++zoom;
     if (asset.kind == AssetKind::Tween) data = decode_tween(bytes);
   }
   if (!data) throw Error("product of '" + state.session + "' has no tween data");
-  if (samples != p.directions.size() || (mattes != 0 && mattes != samples))
-    throw Error("product of '" + state.session + "' lists " + std::to_string(samples) + " photos and " + std::to_string(mattes) +
-                " mattes for " + std::to_string(p.directions.size()) + " samples");
+  if (samples != p.directions.size() || (mattes != 0 && mattes != samples) || zoom != samples * p.levels.size())
+    throw Error("product of '" + state.session + "' lists " + std::to_string(samples) + " photos, " + std::to_string(mattes) +
+                " mattes and " + std::to_string(zoom) + " zoom photos for " + std::to_string(p.directions.size()) + " samples and " +
+                std::to_string(p.levels.size()) + " zoom levels");
   if (data->width != p.width || data->height != p.height || data->sample_count() != int(p.directions.size()) ||
       data->cells.size() != p.cells)
     throw Error("product of '" + state.session + "': its tween data does not match its photos");

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include <OpenImageIO/imageio.h>
+#include <sqlite3.h>
 #include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
@@ -14,6 +15,7 @@
 #include "common/error.hpp"
 #include "common/image_metrics.hpp"
 #include "common/random.hpp"
+#include "protocol/framing.hpp"
 #include "server/products/matte.hpp"
 #include "server/products/photo_folder.hpp"
 #include "server/products/product_store.hpp"
@@ -277,6 +279,87 @@ TEST(ProductTest, AStoredProductIsFoundByItsKeyAndCheckedAgainstItsHashes) {
   const fs::path file = data / "assets" / to_hex(tween->hash);
   std::fstream(file, std::ios::in | std::ios::out | std::ios::binary).seekp(10).put('\x7f');
   EXPECT_NE(test::error_of([&] { server::product_tween_messages(store, state); }).find("does not match its hash"), std::string::npos);
+}
+
+TEST(ProductTest, ZoomLevelsDoubleUpToThePhotosOwnSizeAndSkipWhatIsHardlyFiner) {
+  EXPECT_EQ(zoom_levels({512, 341}, {2048, 1365}), (std::vector<glm::ivec2>{{1024, 683}, {2048, 1365}}));
+  EXPECT_EQ(zoom_levels({512, 384}, {800, 600}), (std::vector<glm::ivec2>{{800, 600}}));
+  EXPECT_EQ(zoom_levels({512, 341}, {1200, 800}), (std::vector<glm::ivec2>{{1200, 800}}));  // 1024 is hardly coarser
+  EXPECT_TRUE(zoom_levels({512, 288}, {600, 338}).empty());                                 // hardly finer than the first
+  EXPECT_TRUE(zoom_levels({300, 300}, {300, 300}).empty());
+}
+
+// A shop's large photos (SPEC T18): matched and shown first at 512 pixels a side, kept at their
+// own size as a zoom level, keyed and evened as the first level is (the level scaled down is the
+// first level again), and found again by key.
+TEST(ProductTest, LargePhotosAreKeptAsAZoomLevelMadeAsTheFirstLevelIs) {
+  const fs::path data = fresh_dir("zoom-store");
+  server::AssetStore store(data);
+  server::ProductSource source;
+  source.photos = photo_folder("zoomed", 5, 1200, 800);
+  std::string said;
+  const protocol::Snapshot state = server::find_or_make_product(store, source, "big", [&](int, int, const std::string& line) {
+    if (line.starts_with("zoom")) said = line;
+  });
+  EXPECT_EQ(said, "zoom: photos 512x341 first, then 1200x800");
+  EXPECT_EQ(state.product.width, 512);
+  ASSERT_EQ(state.product.levels, (std::vector<protocol::ImageSize>{{1200, 800}}));
+  std::vector<protocol::AssetAnnounce> first, zoom;
+  for (const auto& a : state.assets) {
+    if (a.kind == protocol::AssetKind::Samples) first.push_back(a);
+    if (a.kind == protocol::AssetKind::Zoom) zoom.push_back(a);
+  }
+  ASSERT_EQ(zoom.size(), 5u);
+  for (size_t i = 0; i < zoom.size(); ++i) {
+    const Image fine = load_image_from_memory(store.read_verified(zoom[i].hash), zoom[i].name);
+    const Image coarse = load_image_from_memory(store.read_verified(first[i].hash), first[i].name);
+    ASSERT_EQ(fine.width, 1200);
+    // The same photo, keyed alike (white round it, the object's colours): alike at a quarter of
+    // the first level's size, where two JPEGs' ringing on the stripes averages out.
+    EXPECT_GT(psnr(resized(fine, 128, 85), resized(coarse, 128, 85)), 40.0) << zoom[i].name;  // the same photo, keyed alike
+    EXPECT_GT(zoom[i].size, 2 * first[i].size) << "the level holds more detail than the first";
+  }
+  EXPECT_EQ(server::product_tween_messages(store, state).size(), 5u);
+  // Kept no larger than asked: --max-side 600 is hardly finer than the first level, so none.
+  server::ProductSource small = source;
+  small.photo_options.layout.max_side = 600;
+  EXPECT_TRUE(server::find_or_make_product(store, small, "small", {}).product.levels.empty());
+}
+
+// A state stored by protocol version 3 ends before the product's zoom levels: a server upgraded
+// in place reads it as having none instead of dropping the session.
+TEST(ProductTest, ASessionStoredByTheLastProtocolVersionIsStillRead) {
+  const fs::path data = fresh_dir("old-state");
+  {
+    server::AssetStore store(data);
+    protocol::Snapshot state{.session = "review", .kind = protocol::SessionKind::Scene, .revision = 7};
+    state.style.renderer = "comic";
+    store.save_session({.token = "", .editor_token = "", .state = state});
+  }
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open((data / "catalogue.sqlite").c_str(), &db), SQLITE_OK);
+  {
+    sqlite3_stmt* read = nullptr;
+    sqlite3_prepare_v2(db, "SELECT state FROM sessions", -1, &read, nullptr);
+    ASSERT_EQ(sqlite3_step(read), SQLITE_ROW);
+    const auto* bytes = static_cast<const uint8_t*>(sqlite3_column_blob(read, 0));
+    protocol::Bytes frame(bytes, bytes + sqlite3_column_bytes(read, 0));
+    sqlite3_finalize(read);
+    frame.resize(frame.size() - 2);  // no zoom levels' count
+    const uint32_t length = uint32_t(frame.size() - protocol::kHeaderBytes);
+    for (int k = 0; k < 4; ++k) frame[size_t(k)] = uint8_t(length >> (8 * k));
+    sqlite3_stmt* write = nullptr;
+    sqlite3_prepare_v2(db, "UPDATE sessions SET state = ?", -1, &write, nullptr);
+    sqlite3_bind_blob(write, 1, frame.data(), int(frame.size()), SQLITE_TRANSIENT);
+    ASSERT_EQ(sqlite3_step(write), SQLITE_DONE);
+    sqlite3_finalize(write);
+  }
+  sqlite3_close(db);
+  server::AssetStore store(data);
+  const auto sessions = store.sessions();
+  ASSERT_EQ(sessions.size(), 1u);
+  EXPECT_EQ(sessions[0].state.style.renderer, "comic");
+  EXPECT_EQ(sessions[0].state.revision, 7u);
 }
 
 TEST(ProductTest, OutlinePointsFollowTheObjectsEndsRowByRow) {

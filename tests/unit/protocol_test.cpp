@@ -47,7 +47,8 @@ std::vector<Message> every_message() {
           Snapshot{.session = "demo", .kind = SessionKind::Turntable, .revision = 17, .assets = {asset, asset},
                    .style = style, .camera = camera, .object = object, .expression = expression,
                    .product = {.width = 512, .height = 384, .directions = {{0, 0, 1}, {1, 0, 0}, {0, 0, -1}, {-1, 0, 0}},
-                               .cells = 4, .distance_diagonals = 1.4f, .fov_y_degrees = 45}},
+                               .cells = 4, .distance_diagonals = 1.4f, .fov_y_degrees = 45,
+                               .levels = {{1024, 768}, {2048, 1536}}}},
           style,
           camera,
           object,
@@ -191,6 +192,13 @@ TEST(ProtocolTest, ValuesOutOfRangeAreRejected) {
   reject(product({.width = 5000, .height = 64, .directions = ring, .cells = 3}));                              // too large
   reject(product({.width = 0, .height = 0, .directions = {}, .cells = 3}));                                    // cells of nothing
   reject(product({.width = 64, .height = 64, .directions = ring, .cells = 3, .distance_diagonals = 0}));      // no distance
+  // Zoom levels (SPEC T18): each larger than the one below, at most 4095, only with photos.
+  reject(product({.width = 64, .height = 64, .directions = ring, .cells = 3, .levels = {{64, 128}}}));
+  reject(product({.width = 64, .height = 64, .directions = ring, .cells = 3, .levels = {{256, 256}, {128, 128}}}));
+  reject(product({.width = 64, .height = 64, .directions = ring, .cells = 3, .levels = {{4096, 4096}}}));
+  reject(product({.width = 0, .height = 0, .directions = {}, .cells = 0, .levels = {{64, 64}}}));
+  EXPECT_THROW(encode(product({.width = 64, .height = 64, .directions = ring, .cells = 3,
+                               .levels = std::vector<ImageSize>(kMaxZoomLevels + 1, ImageSize{128, 128})})), ProtocolError);
   Bytes bad_kind = encode(AssetAnnounce{.hash = {}, .size = 1, .kind = AssetKind::Mesh, .name = "a.off"});
   bad_kind[kHeaderBytes + 32 + 8] = 9;
   EXPECT_THROW(decode(MessageType::AssetAnnounce, bad_kind.data() + kHeaderBytes, bad_kind.size() - kHeaderBytes), ProtocolError);

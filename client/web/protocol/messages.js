@@ -5,7 +5,7 @@
 import { ProtocolError, ReadStream, WriteStream } from './streams.js';
 
 export const kMagic = 0x574b4e49;  // the bytes "INKW" read as a little-endian u32
-export const kVersion = 3;
+export const kVersion = 4;
 export const kMaxName = 64;
 export const kMaxToken = 128;
 export const kMaxReason = 512;
@@ -14,6 +14,7 @@ export const kMaxSetting = 300;
 export const kMaxSettings = 64;
 export const kMaxAssets = 1024;
 export const kMaxProductSamples = 360;
+export const kMaxZoomLevels = 3;
 export const kMaxChunk = 64 * 1024;
 export const kMaxTween = 16 * 1024;
 export const kMaxAssetBytes = 2 ** 30;
@@ -32,7 +33,8 @@ export const FaceSource = Object.freeze({ neutral: 0, camera: 1, voice: 2 });
 export const nameOf = (type) => Object.keys(MessageType).find((k) => MessageType[k] === type) ?? 'unknown';
 
 export const SessionKind = Object.freeze({ scene: 1, turntable: 2, conference: 3 });
-export const AssetKind = Object.freeze({ mesh: 1, image: 2, samples: 3, tween: 4, landmarks: 5, matte: 6 });
+export const AssetKind = Object.freeze({ mesh: 1, image: 2, samples: 3, tween: 4, landmarks: 5, matte: 6, zoom: 7 });
+export const kAssetKinds = 7;
 export const ErrorCode = Object.freeze({
   'bad-version': 1, malformed: 2, 'no-session': 3, 'bad-token': 4, 'not-joined': 5, 'no-asset': 6, 'too-slow': 7,
   'shutting-down': 8, refused: 9, 'not-allowed': 10,
@@ -144,7 +146,7 @@ function serialiseTweenData(s, m) {
 function serialiseAssetAnnounce(s, m) {
   m.hash = s.hash(m.hash ?? new Uint8Array(32));
   m.size = Number(s.u64(m.size ?? 0));
-  m.kind = enumeration(s, m.kind ?? 1, 1, 6, 'asset kind', 1);
+  m.kind = enumeration(s, m.kind ?? 1, 1, kAssetKinds, 'asset kind', 1);
   m.name = s.text(m.name ?? '', kMaxName);
   if (s.constructor.reading) {
     check(m.size <= kMaxAssetBytes, 'asset larger than 1 GiB');
@@ -184,8 +186,18 @@ function serialiseProduct(s, m) {
   m.cells = s.u16(m.cells ?? 0);
   m.distance_diagonals = s.f32(m.distance_diagonals ?? 1.4);
   m.fov_y_degrees = s.f32(m.fov_y_degrees ?? 45);
+  const levels = m.levels ?? [];
+  const nLevels = s.count(levels.length, kMaxZoomLevels, 'zoom levels');
+  m.levels = [];
+  for (let i = 0; i < nLevels; ++i) m.levels.push({ width: s.u16(levels[i]?.width ?? 0), height: s.u16(levels[i]?.height ?? 0) });
   if (s.constructor.reading) {
     const empty = m.directions.length === 0;
+    let below = { width: m.width, height: m.height };
+    for (const level of m.levels) {
+      check(!empty && level.width > below.width && level.height > below.height && level.width <= 4095 && level.height <= 4095,
+            'a zoom level is not larger than the one below it, or over 4095');
+      below = level;
+    }
     check(empty ? m.width === 0 && m.height === 0 && m.cells === 0 : m.directions.length >= 2, 'product with fewer than 2 samples');
     check(empty || (m.width >= 1 && m.height >= 1 && m.width <= 4095 && m.height <= 4095), 'product image size outside 1..4095');
     check(m.cells <= 4 * kMaxProductSamples, 'product has too many tween cells');
