@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
   app.add_option("--set", settings, "KEY=VALUE setting for --style (repeatable)");
   app.add_option("--view", view,
                  "after joining, move the session's camera: AZIMUTH,ELEVATION[,DISTANCE in diagonals]; in a turntable session, "
-                 "this client's own first view (AZIMUTH[,ELEVATION], nothing sent)");
+                 "this client's own first view (AZIMUTH[,ELEVATION[,ZOOM]], nothing sent)");
   app.add_flag("--wait-for-product", o.wait_for_product, "headless, turntable sessions: draw the first frame once every photo is there");
   app.add_flag("--present", o.present, "turntable sessions: send this client's view to the session for followers (window: P toggles)");
   app.add_flag("--follow", o.follow, "turntable sessions: show the view a presenter sends (window: F toggles)")->excludes("--present");
@@ -70,8 +70,9 @@ int main(int argc, char** argv) {
     if (!style.empty()) client.send(protocol::StyleChange{.renderer = style, .settings = settings});
     if (!view.empty() && !joined.product.directions.empty()) {
       // A product's view is the visitor's own (SPEC T13).
-      if (std::sscanf(view.c_str(), "%f,%f", &o.azimuth, &o.elevation) < 1 || std::abs(o.elevation) > 90.0f)
-        throw Error("--view '" + view + "' is not AZIMUTH[,ELEVATION] with elevation -90..90");
+      if (std::sscanf(view.c_str(), "%f,%f,%f", &o.azimuth, &o.elevation, &o.zoom) < 1 || std::abs(o.elevation) > 90.0f ||
+          !(o.zoom >= 0.5f && o.zoom <= 4.0f))
+        throw Error("--view '" + view + "' is not AZIMUTH[,ELEVATION[,ZOOM]] with elevation -90..90 and zoom 0.5..4");
     } else if (!view.empty()) {
       float az = 0, el = 0, dist = 1.4f;
       if (std::sscanf(view.c_str(), "%f,%f,%f", &az, &el, &dist) < 2 || dist <= 0.05f || dist > 1000.0f)

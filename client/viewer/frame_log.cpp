@@ -8,8 +8,10 @@ nlohmann::json frame_log_line(SessionSync& sync, const SessionClient& client, lo
   const auto now_us = std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
   nlohmann::json line = {{"frame", frame}, {"revision", sync.view().revision()}, {"style", sync.view().style()}, {"monotonic_us", now_us}};
   if (const TurntableView* t = sync.view().turntable())
-    line["product"] = {{"azimuth", sync.view().orbit().azimuth}, {"elevation", sync.view().orbit().elevation}, {"samples_loaded", t->samples_loaded()},
-                       {"cells_loaded", t->cells_loaded()}, {"bytes_sent", client.bytes_sent()},
+    line["product"] = {{"azimuth", sync.view().orbit().azimuth}, {"elevation", sync.view().orbit().elevation},
+                       {"zoom", sync.view().orbit().zoom}, {"samples_loaded", t->samples_loaded()},
+                       {"cells_loaded", t->cells_loaded()}, {"finer_loaded", t->finer_loaded()},
+                       {"finer_in_view", t->finer_in_view()}, {"bytes_sent", client.bytes_sent()},
                        {"bytes_received", client.bytes_received()}};
   if (client.refusals() > 0) line["refused"] = {{"count", client.refusals()}, {"reason", client.refusal()}};
   // A call's members as the page's element exposes them (CONTRACTS.md): name, speaking, expression.

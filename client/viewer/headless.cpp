@@ -55,10 +55,13 @@ int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& 
   // frame waits for the photo nearest its view, or for all of them when asked to.
   sync.view().orbit().azimuth = o.azimuth;
   sync.view().orbit().elevation = o.elevation;
+  sync.view().orbit().zoom = o.zoom;
   for (;;) {
     const bool changed = sync.poll();
-    const TurntableView* product = sync.view().turntable();
-    if (!product || product->complete() || (!o.wait_for_product && product->samples_loaded() > 0)) break;
+    TurntableView* product = sync.view().turntable();
+    if (product) product->set_display(o.size);
+    if (!product || (!o.wait_for_product && product->samples_loaded() > 0)) break;
+    if (product->complete() && !product->next_fetch(sync.view().orbit()) && !sync.fetching()) break;
     if (!client.connected()) throw Error("connection closed while the product was arriving");
     if (!changed) client.wait_for_update(client.updates(), std::chrono::milliseconds(sync.fetching() ? 2 : 50));
   }
@@ -84,6 +87,7 @@ int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& 
     } else {
       view.azimuth = o.azimuth + 360.0f * float(i) / float(o.frames);
       view.elevation = o.elevation;
+      view.zoom = o.zoom;
     }
     // A refused presenter stops: its views would only be refused again.
     if (o.present && sync.view().turntable() && client.refusals() == 0) client.send(view.pose(uint32_t(i + 1)));

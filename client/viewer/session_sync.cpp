@@ -1,5 +1,6 @@
 #include "client/viewer/session_sync.hpp"
 
+#include <algorithm>
 #include <optional>
 
 #include "common/error.hpp"
@@ -42,10 +43,8 @@ bool SessionSync::poll() {
   if (state_.kind == protocol::SessionKind::Conference) changed |= poll_call();
   if (TurntableView* t = view_.turntable()) {
     changed |= take_photo(*t);
-    if (!photo_.valid()) {
-      const int next = t->next_sample(view_.orbit());
-      if (next >= 0) fetch_photo(next);
-    }
+    if (!photo_.valid())
+      if (const auto next = t->next_fetch(view_.orbit())) fetch_photo(*next);
   }
   return changed;
 }
@@ -82,14 +81,18 @@ bool SessionSync::poll_call() {
   return changed;
 }
 
-void SessionSync::fetch_photo(int index) {
-  const protocol::AssetAnnounce* photo = nth_asset(state_, protocol::AssetKind::Samples, index);
-  const protocol::AssetAnnounce* matte = nth_asset(state_, protocol::AssetKind::Matte, index);
-  if (!photo) throw Error("the product lists no photo for sample " + std::to_string(index));
-  photo_ = std::async(std::launch::async, [this, index, photo = *photo, matte = matte ? std::optional(*matte) : std::nullopt] {
+void SessionSync::fetch_photo(TurntableView::PhotoFetch which) {
+  // A finer level's photos follow the first level's, level after level (protocol/SPEC.md).
+  const int samples = int(state_.product.directions.size());
+  const protocol::AssetAnnounce* photo = which.level == 0 ? nth_asset(state_, protocol::AssetKind::Samples, which.sample)
+                                                          : nth_asset(state_, protocol::AssetKind::Zoom, (which.level - 1) * samples + which.sample);
+  const protocol::AssetAnnounce* matte = nth_asset(state_, protocol::AssetKind::Matte, which.sample);
+  if (!photo)
+    throw Error("the product lists no photo for sample " + std::to_string(which.sample) + (which.level ? " at zoom level " + std::to_string(which.level) : ""));
+  photo_ = std::async(std::launch::async, [this, which, photo = *photo, matte = matte ? std::optional(*matte) : std::nullopt] {
     // The small matte first: the server sends the tween data once the first photo is out.
     const std::filesystem::path matte_file = matte ? client_.fetch_asset(*matte, cache_) : std::filesystem::path();
-    return FetchedPhoto{index, photo, TurntableView::sample_image(client_.fetch_asset(photo, cache_), matte_file)};
+    return FetchedPhoto{which, photo, TurntableView::sample_image(client_.fetch_asset(photo, cache_), matte_file)};
   });
 }
 
@@ -97,9 +100,8 @@ bool SessionSync::take_photo(TurntableView& product) {
   if (!photo_.valid() || photo_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return false;
   const FetchedPhoto fetched = photo_.get();
   // The session may have moved on to another product while the photo came.
-  const protocol::AssetAnnounce* listed = nth_asset(state_, protocol::AssetKind::Samples, fetched.index);
-  if (!listed || !(*listed == fetched.photo)) return false;
-  product.add_sample(fetched.index, fetched.image);
+  if (std::find(state_.assets.begin(), state_.assets.end(), fetched.photo) == state_.assets.end()) return false;
+  product.add_sample(fetched.which.sample, fetched.image, fetched.which.level);
   return true;
 }
 

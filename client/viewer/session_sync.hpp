@@ -39,9 +39,10 @@ class SessionSync {
   std::vector<std::filesystem::path> files_;
   uint64_t seen_ = ~uint64_t(0);
 
-  // A product's photo being fetched: which sample, the asset it was, and the image made of it.
+  // A product's photo being fetched: which sample at which level, the asset it was, and the
+  // image made of it.
   struct FetchedPhoto {
-    int index;
+    TurntableView::PhotoFetch which;
     protocol::AssetAnnounce photo;
     Image image;
   };
@@ -53,7 +54,7 @@ class SessionSync {
   std::map<uint16_t, std::vector<std::filesystem::path>> member_files_;
   std::deque<protocol::MemberFace> faces_waiting_;
   CallAudio audio_{std::chrono::steady_clock::now()};
-  void fetch_photo(int index);
+  void fetch_photo(TurntableView::PhotoFetch which);
   // Hands a fetched photo to the view; rethrows the error that stopped its fetch.
   bool take_photo(TurntableView& product);
 };

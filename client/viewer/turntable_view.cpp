@@ -87,8 +87,25 @@ int TurntableView::nearest_sample(const TurntableOrbit& orbit) const {
   return best;
 }
 
-int TurntableView::next_sample(const TurntableOrbit& orbit) const {
+int TurntableView::wanted_level(const TurntableOrbit& orbit) const {
+  const float shown = float(display_.y) * orbit.zoom;  // the photos' height on the display (TurntableView::draw)
+  if (shown <= kLevelSlack * float(product_.height)) return 0;
+  for (size_t l = 0; l < product_.levels.size(); ++l)
+    if (shown <= kLevelSlack * float(product_.levels[l].height)) return int(l) + 1;
+  return int(product_.levels.size());
+}
+
+std::optional<TurntableView::PhotoFetch> TurntableView::next_fetch(const TurntableOrbit& orbit) const {
   const glm::vec3 d = orbit.direction();
+  std::vector<int> drawn_from = renderer_.view_samples(d);
+  std::sort(drawn_from.begin(), drawn_from.end(), [&](int a, int b) {
+    return glm::dot(product_.directions[size_t(a)], d) > glm::dot(product_.directions[size_t(b)], d);
+  });
+  for (int s : drawn_from)
+    if (!has_[size_t(s)]) return PhotoFetch{s, 0};
+  if (const int level = wanted_level(orbit); level > 0)
+    for (int s : drawn_from)
+      if (const auto it = finer_level_.find(s); it == finer_level_.end() || it->second < level) return PhotoFetch{s, level};
   int best = -1;
   float best_cos = -2.0f;
   for (size_t i = 0; i < product_.directions.size(); ++i) {
@@ -96,7 +113,8 @@ int TurntableView::next_sample(const TurntableOrbit& orbit) const {
     const float c = glm::dot(product_.directions[i], d);
     if (c > best_cos) best_cos = c, best = int(i);
   }
-  return best;
+  if (best < 0) return std::nullopt;
+  return PhotoFetch{best, 0};
 }
 
 glm::vec2 TurntableView::sample_angles(int index) const {
@@ -107,9 +125,12 @@ glm::vec2 TurntableView::sample_angles(int index) const {
 Image TurntableView::sample_image(const std::filesystem::path& photo, const std::filesystem::path& matte) {
   Image image = load_image(photo);
   if (!matte.empty()) {
-    const Image alpha = load_image(matte);
-    if (alpha.width != image.width || alpha.height != image.height)
-      throw Error(matte.filename().string() + ": the matte's size differs from its photo's");
+    Image alpha = load_image(matte);
+    const float aspect = float(image.width) / float(image.height), own = float(alpha.width) / float(alpha.height);
+    if (alpha.width > image.width || alpha.height > image.height || std::abs(aspect / own - 1.0f) > 0.01f)
+      throw Error(matte.filename().string() + ": the matte's size does not fit its photo's");
+    // A finer level is laid on white by its first-level matte scaled up so (server/products/matte.cpp key_like).
+    if (alpha.width != image.width || alpha.height != image.height) alpha = resized(alpha, image.width, image.height);
     // The photo is stored laid over white (as a shop shows it): where the matte covers a pixel
     // in part, the object's own colour is what is left once the white is taken out.
     for (size_t i = 0; i < image.pixels.size(); i += 4) {
@@ -123,11 +144,31 @@ Image TurntableView::sample_image(const std::filesystem::path& photo, const std:
   return image;
 }
 
-void TurntableView::add_sample(int index, const Image& image) {
+void TurntableView::add_sample(int index, const Image& image, int level) {
   if (index < 0 || index >= samples()) throw Error("sample " + std::to_string(index) + " is not in the product");
-  renderer_.set_sample(index, image);
-  if (!has_[size_t(index)]) ++loaded_;
-  has_[size_t(index)] = true;
+  if (level < 0 || level > int(product_.levels.size())) throw Error("the product has no zoom level " + std::to_string(level));
+  const glm::ivec2 size = level == 0 ? glm::ivec2(product_.width, product_.height)
+                                     : glm::ivec2(product_.levels[size_t(level - 1)].width, product_.levels[size_t(level - 1)].height);
+  if (image.width != size.x || image.height != size.y)
+    throw Error("sample " + std::to_string(index) + " at level " + std::to_string(level) + " is " + std::to_string(image.width) + "x" +
+                std::to_string(image.height) + ", not " + std::to_string(size.x) + "x" + std::to_string(size.y));
+  if (level == 0) {
+    renderer_.set_sample(index, image);
+    if (!has_[size_t(index)]) ++loaded_;
+    has_[size_t(index)] = true;
+    return;
+  }
+  renderer_.set_finer_sample(index, image);
+  finer_level_[index] = level;
+  if (int(finer_level_.size()) > kFinerKept) {
+    // Zoomed-in views turn slowly: the sample farthest from this one is needed last.
+    const glm::vec3 here = product_.directions[size_t(index)];
+    const auto farthest = std::min_element(finer_level_.begin(), finer_level_.end(), [&](const auto& a, const auto& b) {
+      return glm::dot(product_.directions[size_t(a.first)], here) < glm::dot(product_.directions[size_t(b.first)], here);
+    });
+    renderer_.drop_finer_sample(farthest->first);
+    finer_level_.erase(farthest);
+  }
 }
 
 void TurntableView::add_cells(const std::map<uint16_t, protocol::Bytes>& cells) {
@@ -143,6 +184,8 @@ void TurntableView::add_cells(const std::map<uint16_t, protocol::Bytes>& cells) 
 }
 
 void TurntableView::draw(glm::ivec2 viewport, const TurntableOrbit& orbit) {
+  display_ = viewport;
+  renderer_.use_finer(wanted_level(orbit) > 0);
   FrameState f;
   f.viewport = viewport;
   const float distance = product_.distance_diagonals * kSceneDiagonal / std::max(orbit.zoom, 0.05f);

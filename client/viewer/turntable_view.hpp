@@ -5,6 +5,7 @@
 // own: turning it sends nothing. Needs a current GL context.
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 
 #include <glm/vec2.hpp>
@@ -37,14 +38,33 @@ class TurntableView {
   // Starts on the product a snapshot describes. Throws inkwire::Error if it is malformed.
   TurntableView(const protocol::Snapshot& state);
 
-  // The sample to fetch next: the nearest to `orbit`'s view that is not there yet, or -1.
-  int next_sample(const TurntableOrbit& orbit) const;
+  // A photo to fetch: sample `sample` at `level` (0 the first level, l > 0 the product's
+  // levels[l - 1], SPEC T18).
+  struct PhotoFetch {
+    int sample = -1, level = 0;
+    bool operator==(const PhotoFetch&) const = default;
+  };
+  // What to fetch next for `orbit`'s view on the display last drawn (or set_display()): the
+  // first level of the photos the view is drawn from, then their finer level when the view shows
+  // them larger than the first (wanted_level()), then the other photos' first level, nearest
+  // first; nothing when all of that is there.
+  std::optional<PhotoFetch> next_fetch(const TurntableOrbit& orbit) const;
+  // The level `orbit`'s view needs on the display: 0 while the first level is shown at most
+  // kLevelSlack times its size, else the smallest level that is not, else the finest.
+  int wanted_level(const TurntableOrbit& orbit) const;
+  static constexpr float kLevelSlack = 1.25f;
+  void set_display(glm::ivec2 viewport) { display_ = viewport; }
   // A sample photo made ready to draw, with its matte when the product has them (empty path if
-  // not). Touches no GL, so it runs where the photo was fetched, off the render thread. Throws
-  // inkwire::Error naming the file if it cannot be used.
+  // not; a finer level's photo takes its first-level matte scaled up). Touches no GL, so it runs
+  // where the photo was fetched, off the render thread. Throws inkwire::Error naming the file if
+  // it cannot be used.
   static Image sample_image(const std::filesystem::path& photo, const std::filesystem::path& matte);
-  // Sample `index` (an image from sample_image()) is there.
-  void add_sample(int index, const Image& image);
+  // Sample `index` at `level` (an image from sample_image(), of that level's size) is there. At
+  // most kFinerKept samples keep a finer level: the one farthest from this one gives way.
+  void add_sample(int index, const Image& image, int level = 0);
+  static constexpr int kFinerKept = 6;
+  int finer_loaded() const { return int(finer_level_.size()); }
+  int finer_in_view() const { return renderer_.finer_in_view(); }  // of the last view's photos
   // Cells of tween data not seen before are decoded and added; a malformed one is refused
   // (error() says why) and the views it would serve show the nearest photo.
   void add_cells(const std::map<uint16_t, protocol::Bytes>& cells);
@@ -76,6 +96,8 @@ class TurntableView {
   protocol::Product product_;
   TweenRenderer renderer_;
   std::vector<bool> has_;
+  std::map<int, int> finer_level_;  // samples holding a finer level: which
+  glm::ivec2 display_{0};
   std::map<uint16_t, bool> cells_seen_;
   int loaded_ = 0;
   std::string error_;

@@ -21,10 +21,11 @@ struct ViewerOptions {
   std::string frame_log;     // optional JSON lines: one per frame drawn, with the revision it shows
   std::string gl = "osmesa"; // headless GL backend
   int msaa = 4;              // multisamples per pixel: antialiased edges (1 = off)
-  // Turntable sessions: the visitor's own first view (azimuth, elevation in degrees); headless,
-  // the view then turns a full circle over the frames. Nothing of it is sent.
-  float azimuth = 0.0f, elevation = 0.0f;
-  bool wait_for_product = false;  // headless: the first frame waits for every photo and cell
+  // Turntable sessions: the visitor's own first view (azimuth, elevation in degrees, zoom: 1 the
+  // photos' own scale); headless, the view then turns a full circle over the frames. Nothing of
+  // it is sent.
+  float azimuth = 0.0f, elevation = 0.0f, zoom = 1.0f;
+  bool wait_for_product = false;  // headless: the first frame waits for every photo and cell, and the zoom level it needs
   // Presenter mode, off by default: this client's view of a product goes to the session as
   // object poses (present), or this client shows the view a presenter sends (follow).
   bool present = false, follow = false;

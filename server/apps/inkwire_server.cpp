@@ -43,11 +43,22 @@ int add_product(const std::string& name, const server::ProductSource& source, co
   for (const auto& s : store.sessions())
     if (s.state.session == name) token = s.token, editor = editor_token.empty() ? s.editor_token : editor;
   store.save_session({.token = token, .editor_token = editor, .state = state});
-  uint64_t bytes = 0;
-  for (const auto& a : state.assets) bytes += a.size;
-  std::printf("%s product '%s': %zu photos %dx%d, %u tween cells, %llu bytes in %s\n", made ? "stored" : "already stored:",
-              name.c_str(), state.product.directions.size(), state.product.width, state.product.height, unsigned(state.product.cells),
-              static_cast<unsigned long long>(bytes), store.dir().c_str());
+  // What a customer fetches to turn it (photos, mattes, tween data), and each zoom level apart
+  // (fetched only zoomed in, a few photos at a time).
+  const size_t samples = state.product.directions.size();
+  uint64_t first = 0;
+  std::vector<uint64_t> levels(state.product.levels.size(), 0);
+  size_t zoomed = 0;
+  for (const auto& a : state.assets)
+    if (a.kind == protocol::AssetKind::Zoom) levels[zoomed++ / samples] += a.size;
+    else first += a.size;
+  std::string zoom;
+  for (size_t l = 0; l < levels.size(); ++l)
+    zoom += "; zoom level " + std::to_string(state.product.levels[l].width) + "x" + std::to_string(state.product.levels[l].height) + ": " +
+            std::to_string(levels[l]) + " bytes";
+  std::printf("%s product '%s': %zu photos %dx%d, %u tween cells, %llu bytes%s; in %s\n", made ? "stored" : "already stored:",
+              name.c_str(), samples, state.product.width, state.product.height, unsigned(state.product.cells),
+              static_cast<unsigned long long>(first), zoom.c_str(), store.dir().c_str());
   return 0;
 }
 

@@ -200,6 +200,68 @@ TEST_F(TurntableE2ETest, RowsOfPhotosTurnUpAndDownAClientTurnedUpSeesTheUpperRow
   EXPECT_GT(tween_db, nearest_db + 1.0);
 }
 
+TEST_F(TurntableE2ETest, LargePhotosAreFetchedAtAFinerLevelOnlyWhenZoomedInAndShowTheirDetail) {
+  // A studio's photos at 1024 pixels (SPEC T18): kept as a zoom level above the 512-pixel first one.
+  const fs::path dir = output_dir("turntable-zoom");
+  const fs::path photos = dir / "photos";
+  fs::create_directories(photos);
+  Process render("inkwire-render", {"--mesh", kDuck.string(), "--style", "default", "--view", "0,0,1.4", "--frames", "12",
+                                    "--size", "1024x1024", "--backdrop", "#ffffff", "--out", (photos / "IMG_%04d.png").string()},
+                 dir / "render.log");
+  ASSERT_EQ(render.wait(), 0) << render.output();
+  Process add("inkwire-server", {"add-product", "duck", "--photos", photos.string(), "--step", "-30", "--data", (dir / "data").string()},
+              dir / "add.log");
+  ASSERT_EQ(add.wait(), 0) << add.output();
+  EXPECT_NE(add.output().find("12 photos 512x512"), std::string::npos) << add.output();
+  EXPECT_NE(add.output().find("zoom level 1024x1024"), std::string::npos) << add.output();
+
+  ServerUnderTest server(dir, {{"sessions", nlohmann::json::array()}});
+  SessionClient peek(server.address(), "peek");
+  const protocol::Snapshot state = peek.join("duck", "");
+  ASSERT_EQ(state.product.levels, (std::vector<protocol::ImageSize>{{1024, 1024}}));
+  std::vector<protocol::AssetAnnounce> zoom_photos;
+  for (const auto& a : state.assets)
+    if (a.kind == protocol::AssetKind::Zoom) zoom_photos.push_back(a);
+  ASSERT_EQ(zoom_photos.size(), 12u);
+  auto fetched_zoom_photos = [&](const std::string& cache) {
+    AssetCache held(dir / cache);
+    return std::count_if(zoom_photos.begin(), zoom_photos.end(), [&](const auto& a) { return held.has(a); });
+  };
+  auto last_log = [&](const std::string& name) {
+    std::ifstream in(dir / (name + ".jsonl"));
+    nlohmann::json line;
+    for (std::string text; std::getline(in, text);) line = nlohmann::json::parse(text)["product"];
+    return line;
+  };
+
+  // Not zoomed in (256 pixels shows the 512-pixel photos at half their size; zoomed twice, at
+  // theirs): every first-level photo, no finer one.
+  for (const std::string zoom : {"1", "2"}) {
+    auto client = product_client(server, "duck", dir, "zoom" + zoom, 1, "0,0," + zoom, true);
+    ASSERT_EQ(client->wait(), 0) << client->output();
+    EXPECT_EQ(last_log("zoom" + zoom)["samples_loaded"], 12);
+    EXPECT_EQ(last_log("zoom" + zoom)["finer_loaded"], 0);
+    EXPECT_EQ(fetched_zoom_photos("cache-zoom" + zoom), 0) << "zoom " << zoom;
+  }
+  // Zoomed in four times: the photo is shown at 1024 pixels, the finer level of the photos the
+  // view is drawn from is fetched (and no other), and the view shows the detail the photo has.
+  auto zoomed = product_client(server, "duck", dir, "zoom4", 1, "0,0,4", true);
+  ASSERT_EQ(zoomed->wait(), 0) << zoomed->output();
+  EXPECT_GE(last_log("zoom4")["finer_in_view"], 1);
+  const auto fetched = fetched_zoom_photos("cache-zoom4");
+  EXPECT_GE(fetched, 1);
+  EXPECT_LE(fetched, 3);
+  // What the 256-pixel window shows: the middle of the photo at 1024 pixels.
+  const Image truth = cropped(load_image(photos / "IMG_0000.png"), 384, 384, 256, 256);
+  const Image view = load_image(client_frame(dir, "zoom4", 0));
+  AssetCache held(dir / "cache-zoom4");
+  const Image first_level = resized(cropped(stored_photo(state, held, 0), 192, 192, 128, 128), 256, 256);
+  const double zoomed_db = psnr(view, truth), first_db = psnr(first_level, truth);
+  std::printf("zoomed in 4 times: %.2f dB against the photo; the first level scaled up %.2f dB; %ld of 12 finer photos fetched\n",
+              zoomed_db, first_db, long(fetched));
+  EXPECT_GT(zoomed_db, first_db + 2.0);
+}
+
 TEST_F(TurntableE2ETest, ARestartedServerMakesNothingAgainAndACorruptedFileIsRefusedNotServed) {
   const fs::path dir = output_dir("turntable-restart");
   const std::vector<std::string> add_args = {"add-product", "duck", "--mesh", kDuck.string(), "--samples", "12", "--size", "128",

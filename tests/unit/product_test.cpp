@@ -332,7 +332,9 @@ TEST(ProductTest, ASessionStoredByTheLastProtocolVersionIsStillRead) {
   const fs::path data = fresh_dir("old-state");
   {
     server::AssetStore store(data);
-    protocol::Snapshot state{.session = "review", .kind = protocol::SessionKind::Scene, .revision = 7};
+    protocol::Snapshot state;
+    state.session = "review";
+    state.revision = 7;
     state.style.renderer = "comic";
     store.save_session({.token = "", .editor_token = "", .state = state});
   }

@@ -27,7 +27,7 @@ gl::Texture make_sample_texture(const Image& image) {
   return gl::Texture::from_image(premultiplied, {.repeat = false, .mipmaps = false, .linear = true});
 }
 
-Image matte_sample(const Image& image) {
+Image matte_sample(const Image& image, float scale) {
   const int w = image.width, h = image.height;
   cv::Mat inside(h, w, CV_8U), outside(h, w, CV_8U);
   for (int y = 0; y < h; ++y)
@@ -51,14 +51,15 @@ Image matte_sample(const Image& image) {
       // The outline lies half a pixel beyond the last pixel of either side; a pixel the matte
       // covers in part is that far across it, so a sample shown as it is keeps its soft edge.
       const int alpha = image.at(x, y)[3];
-      float d = in ? to_background.at<float>(y, x) - 0.5f : 0.5f - to_object.at<float>(y, x);
+      float d = (in ? to_background.at<float>(y, x) - 0.5f : 0.5f - to_object.at<float>(y, x)) / scale;
       if (alpha > 0 && alpha < 255 && std::abs(d) <= 1.0f) d = float(alpha) / 255.0f - 0.5f;
       uint8_t* p = out.at(x, y);
-      // Too little of the object in it to trust its colour: the nearest object pixel's, on the
-      // soft edge and up to kBleedPixels out (the blend reads a sample's colour only where it
-      // sees the object or nearly); further out the colour is the floor layer on white (SPEC
-      // T16), kept.
-      if (alpha < 32 && (alpha > 0 || to_object.at<float>(y, x) <= kBleedPixels)) {
+      // Too little of the object in it to trust its colour: the nearest object pixel's, up to
+      // kBleedPixels out (the blend reads a sample's colour only where it sees the object or
+      // nearly); further out the colour is the floor layer on white (SPEC T16), kept, soft edge
+      // or not: a finer level's scaled-up soft edge reaches further, and colour bled there
+      // would show as floor (yellow dots along a zoomed-in outline).
+      if (alpha < 32 && to_object.at<float>(y, x) <= kBleedPixels * scale) {
         const cv::Point src = object_pixel_of_label[size_t(nearest_object.at<int>(y, x))];
         if (src.x >= 0) std::copy_n(image.at(src.x, src.y), 3, p);
       }
@@ -73,8 +74,8 @@ Image without_floor(Image sample) {
   return sample;
 }
 
-gl::Texture make_matte_texture(const Image& image) {
-  return gl::Texture::from_image(matte_sample(image), {.repeat = false, .mipmaps = false, .linear = true});
+gl::Texture make_matte_texture(const Image& image, float scale) {
+  return gl::Texture::from_image(matte_sample(image, scale), {.repeat = false, .mipmaps = false, .linear = true});
 }
 
 ImageWarper::ImageWarper(int width, int height)
@@ -145,7 +146,7 @@ void ImageWarper::blend(int mesh, const glm::vec3& position_weights, std::span<c
     static constexpr const char* kSampler[] = {"samples[0]", "samples[1]", "samples[2]"};
     static constexpr const char* kSize[] = {"sample_size[0]", "sample_size[1]", "sample_size[2]"};
     program.set(kSampler[k], int(k));
-    program.set(kSize[k], glm::vec2(s.image->width(), s.image->height()));
+    program.set(kSize[k], glm::vec2(s.image->width(), s.image->height()) / s.scale);
     s.image->bind(GLuint(k));
   }
   program.set("position_weights", position_weights);
@@ -212,7 +213,7 @@ void ImageWarper::begin(OverlapMode overlap) {
   warp_.set("sample_image", 0);
 }
 
-void ImageWarper::pass(int mesh, const gl::Texture& sample, const glm::vec3& position_weights, int source, float weight) {
+void ImageWarper::pass(int mesh, const gl::Texture& sample, const glm::vec3& position_weights, int source, float weight, float scale) {
   if (!caller_) throw Error("ImageWarper::pass(): called outside begin()/end()");
   const Mesh& m = meshes_.at(size_t(mesh));
   float depth = 0.0f;
@@ -224,7 +225,7 @@ void ImageWarper::pass(int mesh, const gl::Texture& sample, const glm::vec3& pos
   warp_.set("position_weights", position_weights);
   warp_.set("source", std::clamp(source, 0, 2));
   warp_.set("weight", weight);
-  warp_.set("sample_size", glm::vec2(sample.width(), sample.height()));
+  warp_.set("sample_size", glm::vec2(sample.width(), sample.height()) / scale);
   warp_.set("depth", depth);
   sample.bind(0);
   m.vao.bind();

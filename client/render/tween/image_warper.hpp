@@ -31,6 +31,7 @@ struct WarpSource {
   const gl::Texture* image;
   int position;  // which stored position of each control point (0-2) lies in `image`
   float weight;
+  float scale = 1.0f;  // texels of `image` per control-point pixel: a finer zoom level's (SPEC T18) 2, 4
 };
 
 // A sample image as the warper reads it: premultiplied alpha, linear filtering, no wrap.
@@ -41,13 +42,15 @@ gl::Texture make_sample_texture(const Image& image);
 // white (the sample's own colours where its matte is 0: a shadow, or white), alpha the signed
 // distance to the outline (0.5 on it, +-1 at kMatteRange pixels inside / outside), so it
 // interpolates under a warp and a blend.
+// A finer zoom level of a sample (`scale` texels per pixel of the sample's first level) keeps
+// distances and the bleed in first-level pixels, so levels blend with one another.
 inline constexpr float kMatteRange = 16.0f;
 inline constexpr float kBleedPixels = 1.5f;
-Image matte_sample(const Image& image);
+Image matte_sample(const Image& image, float scale = 1.0f);
 // A sample with no floor layer, as matte_sample() reads one: white where its matte is 0 (a
 // render leaves black there, which would read as a black floor).
 Image without_floor(Image sample);
-gl::Texture make_matte_texture(const Image& image);
+gl::Texture make_matte_texture(const Image& image, float scale = 1.0f);
 
 class ImageWarper {
  public:
@@ -76,8 +79,8 @@ class ImageWarper {
   // transparent black.
   void begin(OverlapMode overlap);
   // Adds `sample` warped: vertices at position_weights . (p0, p1, p2), texels read at
-  // p[source] (pixels of `sample`, which may be larger than the view), colour times `weight`.
-  void pass(int mesh, const gl::Texture& sample, const glm::vec3& position_weights, int source, float weight);
+  // p[source] x scale (pixels of `sample`, which may be larger than the view), colour times `weight`.
+  void pass(int mesh, const gl::Texture& sample, const glm::vec3& position_weights, int source, float weight, float scale = 1.0f);
   // Ends the view and rebinds the caller's framebuffer and viewport.
   void end();
 

@@ -62,6 +62,7 @@ void TweenRenderer::configure(const StyleParams& p) {
     // The textures follow the compose mode (matte samples carry distances, not alpha).
     for (size_t i = 0; i < model_.images.size() && i < textures_.size(); ++i)
       if (textures_[i]) set_sample(int(i), model_.images[i]);
+    for (auto& [index, finer] : finer_) set_finer_sample(index, finer.image);
   }
   matte_ = matte;
   if (sample_style_ == "tween") throw Error("sample_style cannot be tween itself");
@@ -126,6 +127,54 @@ void TweenRenderer::set_sample(int index, const Image& image) {
   textures_[size_t(index)] = std::make_unique<gl::Texture>(matte_ ? make_matte_texture(image) : make_sample_texture(image));
 }
 
+void TweenRenderer::set_finer_sample(int index, const Image& image) {
+  if (index < 0 || index >= model_.data.sample_count()) throw Error("tween: sample " + std::to_string(index) + " is not in the model");
+  const float scale = float(image.height) / float(model_.data.height);
+  const float aspect = float(image.width) / float(image.height), own = float(model_.data.width) / float(model_.data.height);
+  if (scale <= 1.0f || std::abs(aspect / own - 1.0f) > 0.01f)
+    throw Error("tween: a finer level of sample " + std::to_string(index) + " is " + std::to_string(image.width) + "x" +
+                std::to_string(image.height) + ", not larger than " + std::to_string(model_.data.width) + "x" +
+                std::to_string(model_.data.height) + " and of its shape");
+  last_view_ = {};  // it may point at the texture about to go
+  Finer& finer = finer_[index];
+  if (&finer.image != &image) finer.image = image;
+  finer.scale = scale;
+  finer.texture = std::make_unique<gl::Texture>(matte_ ? make_matte_texture(image, scale) : make_sample_texture(image));
+}
+
+void TweenRenderer::drop_finer_sample(int index) {
+  last_view_ = {};
+  finer_.erase(index);
+}
+
+float TweenRenderer::finer_scale(int index) const {
+  const auto it = finer_.find(index);
+  return it == finer_.end() ? 0.0f : it->second.scale;
+}
+
+int TweenRenderer::finer_in_view() const {
+  return int(std::count_if(last_view_.sources.begin(), last_view_.sources.end(), [](const WarpSource& w) { return w.scale > 1.0f; }));
+}
+
+std::vector<int> TweenRenderer::view_samples(const glm::vec3& direction) const {
+  std::vector<int> out;
+  const CellLocation at = locate_view(model_.data, direction);
+  if (at.cell >= 0 && at.inside)
+    for (uint16_t s : model_.data.cells[size_t(at.cell)].samples) out.push_back(s);
+  int nearest = 0;
+  const glm::vec3 d = glm::normalize(direction);
+  for (int i = 1; i < model_.data.sample_count(); ++i)
+    if (glm::dot(glm::normalize(model_.data.directions[size_t(i)]), d) > glm::dot(glm::normalize(model_.data.directions[size_t(nearest)]), d)) nearest = i;
+  if (std::find(out.begin(), out.end(), nearest) == out.end()) out.push_back(nearest);
+  return out;
+}
+
+WarpSource TweenRenderer::source_of(int index, int position, float weight) const {
+  if (use_finer_)
+    if (const auto it = finer_.find(index); it != finer_.end()) return {it->second.texture.get(), position, weight, it->second.scale};
+  return {textures_[size_t(index)].get(), position, weight};
+}
+
 void TweenRenderer::add_cell(TweenCell cell) {
   for (uint16_t s : cell.samples)
     if (s >= model_.data.sample_count()) throw Error("tween: a cell names sample " + std::to_string(s) + " of " + std::to_string(model_.data.sample_count()));
@@ -147,6 +196,7 @@ void TweenRenderer::upload() {
   warper_->set_matte(matte_);
   textures_.clear();
   textures_.resize(model_.images.size());
+  finer_.clear();
   for (size_t i = 0; i < model_.images.size(); ++i)
     if (!model_.images[i].empty()) set_sample(int(i), model_.images[i]);
   meshes_.clear();
@@ -165,7 +215,8 @@ TweenRenderer::View TweenRenderer::nearest_loaded(const glm::vec3& direction) {
       best = c;
       view.mesh = plain_mesh_;
       view.positions = {1.0f, 0.0f, 0.0f};
-      view.sources = {WarpSource{textures_[size_t(i)].get(), 0, 1.0f}};
+      view.sources = {source_of(i, 0, 1.0f)};
+      view.sample = i;
     }
   }
   return view;
@@ -189,7 +240,7 @@ TweenRenderer::View TweenRenderer::plan(const FrameState& frame) {
   bool whole = true, holds_nearest = false;
   for (uint16_t s : cell.samples) {
     whole = whole && textures_[s] != nullptr;
-    holds_nearest = holds_nearest || (!fallback.sources.empty() && textures_[s].get() == fallback.sources[0].image);
+    holds_nearest = holds_nearest || s == fallback.sample;
   }
   if (!whole || !at.inside || (cell.is_pair() && !holds_nearest)) {
     last_cell_ = -1;
@@ -197,9 +248,7 @@ TweenRenderer::View TweenRenderer::plan(const FrameState& frame) {
   }
   // Which stored position of a point belongs to the cell's k-th sample, and where the view puts it.
   auto slot = [&](int k) { return pair ? 2 * k : k; };
-  auto source = [&](int k, int position, float weight) {
-    return WarpSource{textures_[cell.samples[size_t(k)]].get(), position, weight};
-  };
+  auto source = [&](int k, int position, float weight) { return source_of(cell.samples[size_t(k)], position, weight); };
   auto own_positions = [&](int k) {
     glm::vec3 w(0.0f);
     w[slot(k)] = 1.0f;
@@ -253,7 +302,7 @@ void TweenRenderer::draw(const FrameState& frame) {
   }
   warper_->begin(overlap_);
   for (const WarpSource& s : last_view_.sources) {
-    warper_->pass(last_view_.mesh, *s.image, last_view_.positions, s.position, s.weight);
+    warper_->pass(last_view_.mesh, *s.image, last_view_.positions, s.position, s.weight, s.scale);
     ++last_passes_;
   }
   warper_->end();
@@ -266,6 +315,9 @@ std::map<std::string, double> TweenRenderer::counters() const {
   c["passes"] = last_passes_;
   c["cell"] = last_cell_;
   c["samples_loaded"] = samples_loaded();
+  // Zoom (SPEC T18): finer levels held, and how many of the last view's samples were drawn from one.
+  c["finer_samples"] = double(finer_.size());
+  c["finer_in_view"] = finer_in_view();
   // Measured when asked (rarely), not each time a cell arrives: the model's tween data as the
   // codec writes it, per cell.
   if (warper_ && !model_.data.cells.empty())

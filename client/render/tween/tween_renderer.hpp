@@ -11,6 +11,7 @@
 // (on a sphere, bilinear and trilinear both warp all three samples of the triangle).
 // A view is drawn in one pass reading every contributing sample (the default), or as the study
 // drew it: one pass per sample into an off-screen view, laid over the frame afterwards.
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -52,6 +53,19 @@ class TweenRenderer final : public Renderer {
   void set_sample(int index, const Image& image);
   void add_cell(TweenCell cell);
   int samples_loaded() const;
+  // Zoom (SPEC T18): sample `index` at a finer level (larger, of the sample's shape, framed
+  // alike; with its matte scaled up), drawn instead of the first level while use_finer() is on.
+  // Throws inkwire::Error if the index or the shape is wrong.
+  void set_finer_sample(int index, const Image& image);
+  void drop_finer_sample(int index);
+  void use_finer(bool use) { use_finer_ = use; }
+  // How many texels of sample `index`'s finer level a first-level pixel holds; 0 without one.
+  float finer_scale(int index) const;
+  // How many of the last view's samples were drawn from a finer level.
+  int finer_in_view() const;
+  // The samples a view from `direction` (from the object toward the eye) is drawn from once they
+  // are there: its cell's and the nearest sample.
+  std::vector<int> view_samples(const glm::vec3& direction) const;
   const TweenModel& model() const { return model_; }
   void draw(const FrameState& frame) override;
   std::map<std::string, double> counters() const override;
@@ -60,12 +74,16 @@ class TweenRenderer final : public Renderer {
   Image last_view() const;
 
  private:
-  // What a view is made of: the cell's mesh drawn at `positions`, read from `sources`.
+  // What a view is made of: the cell's mesh drawn at `positions`, read from `sources`; a single
+  // sample drawn as it is says which.
   struct View {
     int mesh = -1;
     glm::vec3 positions{0.0f};
     std::vector<WarpSource> sources;
+    int sample = -1;
   };
+  // Sample `index` as a view reads it: its finer level while finer views are asked for.
+  WarpSource source_of(int index, int position, float weight) const;
   void build_from_mesh();
   void upload();
   View plan(const FrameState& frame);
@@ -81,6 +99,13 @@ class TweenRenderer final : public Renderer {
   TweenModel model_;
   std::unique_ptr<ImageWarper> warper_;
   std::vector<std::unique_ptr<gl::Texture>> textures_;  // per sample; null until its image is there
+  struct Finer {
+    Image image;  // kept to make the texture again when the compose mode changes
+    std::unique_ptr<gl::Texture> texture;
+    float scale = 1.0f;
+  };
+  std::map<int, Finer> finer_;  // by sample
+  bool use_finer_ = false;
   std::vector<int> meshes_;  // per cell
   int plain_mesh_ = -1;      // the border alone: a sample drawn as it is
   bool matte_ = true;

@@ -30,8 +30,10 @@ function nearestSeeds(seed, w, h) {
 }
 
 // `photo`: RGBA bytes of a photo laid over white; `matte`: its matte's grey bytes (RGBA, red
-// used) or null (no matte: the photo is all object). Returns the RGBA bytes of the warp's texture.
-export function matteSample(photo, matte, w, h) {
+// used) or null (no matte: the photo is all object), of the photo's size. `scale`: a finer zoom
+// level's texels per first-level pixel (SPEC T18), whose distances and bleed stay in first-level
+// pixels. Returns the RGBA bytes of the warp's texture.
+export function matteSample(photo, matte, w, h, scale = 1) {
   const n = w * h, out = new Uint8ClampedArray(photo);
   const alpha = new Uint8Array(n);
   for (let i = 0; i < n; ++i) {
@@ -45,10 +47,10 @@ export function matteSample(photo, matte, w, h) {
   const colour = new Uint8ClampedArray(out);
   for (let i = 0; i < n; ++i) {
     const a = alpha[i];
-    let d = inside[i] ? toBackground.dist[i] - 0.5 : 0.5 - toObject.dist[i];
+    let d = (inside[i] ? toBackground.dist[i] - 0.5 : 0.5 - toObject.dist[i]) / scale;
     if (!Number.isFinite(d)) d = inside[i] ? kMatteRange : -kMatteRange;
     if (a > 0 && a < 255 && Math.abs(d) <= 1) d = a / 255 - 0.5;
-    if (a < 32 && toObject.near[i] >= 0 && (a > 0 || toObject.dist[i] <= kBleedPixels)) for (let c = 0; c < 3; ++c) out[4 * i + c] = colour[4 * toObject.near[i] + c];
+    if (a < 32 && toObject.near[i] >= 0 && toObject.dist[i] <= kBleedPixels * scale) for (let c = 0; c < 3; ++c) out[4 * i + c] = colour[4 * toObject.near[i] + c];
     out[4 * i + 3] = Math.round(Math.min(Math.max(0.5 + d / (2 * kMatteRange), 0), 1) * 255);
   }
   return out;
