@@ -45,6 +45,13 @@ for row, elevation in enumerate((0, 25, 50), start=1):
                     "--backdrop", "#ffffff", "--out", os.path.join(folder, "IMG_%04d.png")], check=True, stdout=subprocess.DEVNULL)
 subprocess.run([f"{BIN}/inkwire-server", "add-product", "rows", "--photos", os.path.join(OUT, "rows"), "--step", "-30",
                 "--elevations", "0,25,50", "--data", data], check=True, stdout=subprocess.DEVNULL)
+# A studio's photos at 1024 pixels (SPEC T18): shown first at 512, with a zoom level at 1024.
+zoom_photos = os.path.join(OUT, "zoom-photos")
+os.makedirs(zoom_photos, exist_ok=True)
+subprocess.run([f"{BIN}/inkwire-render", "--mesh", DUCK, "--view", "0,0,1.4", "--frames", "12", "--size", "1024x1024",
+                "--backdrop", "#ffffff", "--out", os.path.join(zoom_photos, "IMG_%04d.png")], check=True, stdout=subprocess.DEVNULL)
+subprocess.run([f"{BIN}/inkwire-server", "add-product", "zoom", "--photos", zoom_photos, "--step", "-30", "--data", data],
+               check=True, stdout=subprocess.DEVNULL)
 server = Server(BIN, OUT, data, {"sessions": [], "http": "127.0.0.1:0"})
 tcp, http = server.tcp, server.http
 driver = None
@@ -122,6 +129,39 @@ try:
     stepped = driver.execute_script(f"return {rows}.elevation")
     check(abs(stepped - 25) < 0.01, f"the down arrow steps one row down ({stepped:.2f} degrees)")
     driver.execute_script(f"{rows}.remove()")
+
+    # Zoom (SPEC T18): not zoomed in, no finer photo is fetched; zoomed in four times, the finer
+    # level of the photos the view is drawn from is, and the view matches the C++ client's.
+    zoomed = "document.getElementById('zoom')"
+    driver.execute_script(f"""const e = document.createElement('inkwire-turntable');
+      e.setAttribute('session', 'zoom'); e.setAttribute('auto-rotate', 'off'); e.id = 'zoom';
+      e.style.cssText = 'width:{SIZE}px;height:{SIZE}px'; document.body.prepend(e);""")
+    end = time.time() + 60
+    while time.time() < end and not driver.execute_script(f"return {zoomed}.hasAttribute('loaded')"):
+        time.sleep(0.1)
+    check(driver.execute_script(f"return {zoomed}.hasAttribute('loaded')"), "the element loads a product with a zoom level")
+    fetched_zoom = f"""const e = {zoomed}, hex = (h) => Array.from(h, (b) => b.toString(16).padStart(2, '0')).join('');
+      return e.snapshot.assets.filter((a) => a.kind === 7 && e.session.receivedBy.has(hex(a.hash))).length;"""
+    time.sleep(0.5)
+    check(driver.execute_script(fetched_zoom) == 0, "not zoomed in, no finer photo is fetched")
+    driver.execute_script(f"{zoomed}.setZoom(4)")
+    end = time.time() + 30
+    while time.time() < end and driver.execute_script(f"return {zoomed}.view.finerInView") < 2:
+        time.sleep(0.1)
+        driver.execute_script(f"{zoomed}.redraw()")
+    fetched = driver.execute_script(fetched_zoom)
+    check(1 <= fetched <= 3, f"zoomed in four times, the finer photos the view is drawn from are fetched ({fetched} of 12)")
+    png = driver.execute_script(f"const e = {zoomed}; e.draw(); return e.canvas.toDataURL('image/png');")
+    browser_png = os.path.join(OUT, "browser-zoom.png")
+    with open(browser_png, "wb") as f:
+        f.write(base64.b64decode(png.split(",", 1)[1]))
+    client_png = os.path.join(OUT, "client-zoom.png")
+    subprocess.run([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{tcp}", "--session", "zoom", "--headless", "--frames", "1",
+                    "--view", "0,0,4", "--size", f"{SIZE}x{SIZE}", "--wait-for-product", "--out", client_png,
+                    "--cache", os.path.join(OUT, "cache-zoom")], check=True, stderr=subprocess.DEVNULL)
+    db = psnr(read_image(browser_png, OUT), read_image(client_png, OUT))
+    check(db >= 35.0, f"zoomed in four times the browser's view matches the C++ client's at {db:.2f} dB (>= 35)")
+    driver.execute_script(f"{zoomed}.remove()")
 
     # Lifecycle (STYLE 17): moved in the page, the element's handlers are there once, so the same
     # drag turns it as far as before (twice as far when a re-connection added them again). The

@@ -71,6 +71,9 @@ export class InkwireTurntable extends PresenterMixin(AutoSpinMixin(ControlsMixin
     if (!this.gl || !this.view) return;
     this.present();
     const [width, height] = this.beginFrame();
+    this.displayHeight = height;
+    this.view.useFiner = this.wantedLevel() > 0;
+    if (this.wake) this.wake(), this.wake = null;  // the view may need photos it did not
     if (this.view.draw([width, height], this.direction(), this.zoom) && this.firstViewPhotos === undefined) {
       // What the first view waited for, for measuring: photos, milliseconds since start.
       this.firstViewPhotos = this.view.samplesLoaded;

@@ -4,11 +4,13 @@
 // there. A mixin over SessionElement (STYLE 13: one feature a file, as <model-viewer> does).
 import { decodeTweenCell } from '../../common/tween_data.js';
 import { AssetKind, bytesBy } from '../../net/session.js';
-import { matteSample } from '../../render/tween/matte_sample.js';
+import { matteSample, scaledMatte } from '../../render/tween/matte_sample.js';
 import { loadTweenShaders, TweenView } from '../../render/tween/tween_view.js';
 import { decodeImage } from '../session_element.js';
 
-// A product photo or matte's RGBA bytes, checked against the product's size.
+const kLevelSlack = 1.25;  // turntable_view.hpp kLevelSlack
+
+// A product photo or matte's RGBA bytes, checked against the size it should have.
 async function pixels(bytes, width, height) {
   const image = await decodeImage(bytes);
   if (image.width !== width || image.height !== height) throw new Error(`a photo is ${image.width}x${image.height}, not ${width}x${height}`);
@@ -64,29 +66,65 @@ export const LoadingMixin = (Base) => class extends Base {
     return [Math.cos(el) * Math.sin(az), Math.sin(el), Math.cos(el) * Math.cos(az)];
   }
 
-  // Photos one at a time, the nearest to the current view first; each drawn as it comes.
+  // The zoom level the view needs (turntable_view.cpp wanted_level()): 0 while the first level
+  // is shown at most kLevelSlack times its size, else the smallest level that is not, else the
+  // finest. The display's height is in device pixels, from the last frame drawn.
+  wantedLevel() {
+    const { height, levels } = this.snapshot.product, shown = (this.displayHeight ?? 0) * this.zoom;
+    if (shown <= kLevelSlack * height) return 0;
+    const enough = levels.findIndex((l) => shown <= kLevelSlack * l.height);
+    return enough < 0 ? levels.length : enough + 1;
+  }
+
+  // What to fetch next (turntable_view.cpp next_fetch()): the first level of the photos the view
+  // is drawn from, then their finer level when the view needs one, then the other photos' first
+  // level, nearest the view first; null when all of that is there.
+  nextFetch() {
+    const d = this.direction(), directions = this.snapshot.product.directions;
+    const near = (i) => directions[i][0] * d[0] + directions[i][1] * d[1] + directions[i][2] * d[2];
+    const drawnFrom = this.view.viewSamples(d).sort((a, b) => near(b) - near(a));
+    const first = drawnFrom.find((s) => !this.view.textures[s]);
+    if (first !== undefined) return { sample: first, level: 0 };
+    const level = this.wantedLevel();
+    const finer = level > 0 ? drawnFrom.find((s) => this.view.finerLevel(s) < level) : undefined;
+    if (finer !== undefined) return { sample: finer, level };
+    let next = -1, best = -2;
+    directions.forEach((_, i) => {
+      if (!this.view.textures[i] && near(i) > best) best = near(i), next = i;
+    });
+    return next < 0 ? null : { sample: next, level: 0 };
+  }
+
+  // Photos one at a time, as nextFetch() says; each drawn as it comes. With nothing to fetch it
+  // waits for the next frame drawn (a turn, a zoom, a resize may need more).
   async download(session) {
     const { product, assets } = this.snapshot;
     const nth = (kind) => assets.filter((a) => a.kind === kind);
-    const photos = nth(AssetKind.samples), mattes = nth(AssetKind.matte);
-    const have = new Array(product.directions.length).fill(false);
+    const photos = nth(AssetKind.samples), mattes = nth(AssetKind.matte), zoom = nth(AssetKind.zoom);
+    const n = product.directions.length;
     for (;;) {
-      const d = this.direction();
-      let next = -1, best = -2;
-      product.directions.forEach((s, i) => {
-        const c = s[0] * d[0] + s[1] * d[1] + s[2] * d[2];
-        if (!have[i] && c > best) best = c, next = i;
-      });
-      if (next < 0 || this.session !== session) break;
-      const matte = mattes[next] ? await pixels(await session.fetchAsset(mattes[next]), product.width, product.height) : null;
-      const photoBytes = await session.fetchAsset(photos[next]);
+      if (this.session !== session) return;
+      const next = this.nextFetch();
+      if (!next) {
+        await new Promise((resolve) => { this.wake = resolve; });
+        continue;
+      }
+      const { sample, level } = next;
+      const size = level === 0 ? product : product.levels[level - 1];
+      const photo = level === 0 ? photos[sample] : zoom[(level - 1) * n + sample];
+      if (!photo) throw new Error(`the product lists no photo for sample ${sample}${level ? ` at zoom level ${level}` : ''}`);
+      let matte = mattes[sample] ? await pixels(await session.fetchAsset(mattes[sample]), product.width, product.height) : null;
+      const photoBytes = await session.fetchAsset(photo);
       // What the first view waits for: the snapshot, one matte and one photo (the tween data the
       // server sends after that photo is for the views between photos).
-      if (this.firstViewBytes === undefined) this.firstViewBytes = bytesBy(session, photos[next]);
-      const photo = await pixels(photoBytes, product.width, product.height);
+      if (this.firstViewBytes === undefined) this.firstViewBytes = bytesBy(session, photo);
+      const rgba = await pixels(photoBytes, size.width, size.height);
       if (this.session !== session) return;
-      this.view.setSample(next, matteSample(photo, matte, product.width, product.height));
-      have[next] = true;
+      // A finer level is laid on white by its first-level matte scaled up (server/products/matte.cpp key_like).
+      if (matte && level > 0) matte = scaledMatte(matte, product.width, product.height, size.width, size.height);
+      const texture = matteSample(rgba, matte, size.width, size.height, size.height / product.height);
+      if (level === 0) this.view.setSample(sample, texture);
+      else this.view.setFiner(sample, level, texture);
       this.progress();
       this.redraw();
     }

@@ -55,3 +55,21 @@ export function matteSample(photo, matte, w, h, scale = 1) {
   }
   return out;
 }
+
+// A first-level matte's grey bytes (RGBA, red used) scaled up to a finer level's `W` x `H`
+// bilinearly, as cv::resize (INTER_LINEAR) scales it for the server and the C++ client: each
+// target pixel's centre mapped back into the source, clamped at the border.
+export function scaledMatte(matte, w, h, W, H) {
+  const out = new Uint8ClampedArray(W * H * 4);
+  const sx = w / W, sy = h / H;
+  for (let Y = 0; Y < H; ++Y) {
+    const fy = Math.min(Math.max((Y + 0.5) * sy - 0.5, 0), h - 1), y0 = Math.floor(fy), y1 = Math.min(y0 + 1, h - 1), ty = fy - y0;
+    for (let X = 0; X < W; ++X) {
+      const fx = Math.min(Math.max((X + 0.5) * sx - 0.5, 0), w - 1), x0 = Math.floor(fx), x1 = Math.min(x0 + 1, w - 1), tx = fx - x0;
+      const top = matte[4 * (y0 * w + x0)] * (1 - tx) + matte[4 * (y0 * w + x1)] * tx;
+      const bottom = matte[4 * (y1 * w + x0)] * (1 - tx) + matte[4 * (y1 * w + x1)] * tx;
+      out[4 * (Y * W + X)] = Math.round(top * (1 - ty) + bottom * ty);
+    }
+  }
+  return out;
+}

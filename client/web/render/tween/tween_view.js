@@ -31,6 +31,8 @@ export async function loadTweenShaders() {
   return { vertex: await get('blend.vert'), fragment: await get('blend.frag') };
 }
 
+const kFinerKept = 6;  // samples keeping a finer level (turntable_view.hpp kFinerKept)
+
 export class TweenView {
   // `product`: a snapshot's product block; `shaders`: from loadTweenShaders().
   constructor(gl, product, shaders) {
@@ -38,6 +40,11 @@ export class TweenView {
     this.product = product;
     this.programs = [1, 2, 3].map((n) => program(gl, shaders.vertex, shaders.fragment, [`SAMPLES ${n}`, 'MATTE', `MATTE_RANGE ${kMatteRange.toFixed(1)}`, `BLEED ${kBleedPixels.toFixed(1)}`]));
     this.textures = new Array(product.directions.length).fill(null);
+    // Zoom (SPEC T18): samples holding a finer level, index -> {texture, level}; drawn from while
+    // useFiner is on (turntable_view.cpp add_sample: at most kFinerKept, the farthest gives way).
+    this.finer = new Map();
+    this.useFiner = false;
+    this.finerInView = 0;
     this.cells = new Array(product.cells).fill(null);
     this.meshes = new Array(product.cells).fill(null);
     this.plain = this.upload(buildWarpMesh({ samples: [0, 1], points: [] }, product.width, product.height));
@@ -69,7 +76,44 @@ export class TweenView {
 
   // `rgba`: the sample's matte texture bytes (matteSample()).
   setSample(index, rgba) {
-    const gl = this.gl, { width, height } = this.product;
+    this.textures[index] = this.texture(rgba, this.product.width, this.product.height);
+  }
+
+  // Sample `index` at zoom level `level` (1: the product's levels[0]), `rgba` of its size.
+  setFiner(index, level, rgba) {
+    const { width, height } = this.product.levels[level - 1];
+    const before = this.finer.get(index);
+    if (before) this.gl.deleteTexture(before.texture);
+    this.finer.set(index, { texture: this.texture(rgba, width, height), level });
+    if (this.finer.size <= kFinerKept) return;
+    // Zoomed-in views turn slowly: the sample farthest from this one is needed last.
+    const here = this.product.directions[index], dot = (d) => d[0] * here[0] + d[1] * here[1] + d[2] * here[2];
+    const [farthest] = [...this.finer.keys()].sort((a, b) => dot(this.product.directions[a]) - dot(this.product.directions[b]));
+    this.gl.deleteTexture(this.finer.get(farthest).texture);
+    this.finer.delete(farthest);
+  }
+
+  finerLevel(index) { return this.finer.get(index)?.level ?? 0; }
+
+  // Sample `index` as the view reads it: its finer level while finer views are asked for.
+  textureOf(index) { return (this.useFiner && this.finer.get(index)?.texture) || this.textures[index]; }
+
+  // The samples a view from `direction` is drawn from once they are there: its cell's and the
+  // nearest (tween_renderer.cpp view_samples()).
+  viewSamples(direction) {
+    const at = locateView(this.product.directions, this.cells, direction);
+    const out = at.cell >= 0 && at.inside ? [...this.cells[at.cell].samples] : [];
+    let nearest = 0, best = -2;
+    this.product.directions.forEach((d, i) => {
+      const c = d[0] * direction[0] + d[1] * direction[1] + d[2] * direction[2];
+      if (c > best) best = c, nearest = i;
+    });
+    if (!out.includes(nearest)) out.push(nearest);
+    return out;
+  }
+
+  texture(rgba, width, height) {
+    const gl = this.gl;
     const texture = gl.createTexture();
     gl.bindTexture(gl.TEXTURE_2D, texture);
     gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
@@ -77,7 +121,7 @@ export class TweenView {
     for (const [k, v] of [[gl.TEXTURE_MIN_FILTER, gl.LINEAR], [gl.TEXTURE_MAG_FILTER, gl.LINEAR], [gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE],
                           [gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE]])
       gl.texParameteri(gl.TEXTURE_2D, k, v);
-    this.textures[index] = texture;
+    return texture;
   }
 
   addCell(index, cell) {
@@ -94,7 +138,7 @@ export class TweenView {
       const d = this.product.directions[i], c = (d[0] * direction[0] + d[1] * direction[1] + d[2] * direction[2]) / Math.hypot(...direction);
       if (c > bestCos) bestCos = c, best = i;
     });
-    return best < 0 ? null : { mesh: this.plain, positions: [1, 0, 0], sources: [{ texture: this.textures[best], slot: 0, weight: 1 }] };
+    return best < 0 ? null : { mesh: this.plain, positions: [1, 0, 0], sources: [{ sample: best, slot: 0, weight: 1 }], sample: best };
   }
 
   plan(direction) {
@@ -106,7 +150,7 @@ export class TweenView {
     // Until every sample of the cell is there, outside every cell, or in a pair that does not
     // hold the nearest sample, the nearest that is (as tween_renderer.cpp says why).
     const whole = cell.samples.every((s) => this.textures[s]);
-    const holdsNearest = fallback && cell.samples.some((s) => this.textures[s] === fallback.sources[0].texture);
+    const holdsNearest = fallback && cell.samples.includes(fallback.sample);
     if (!whole || !at.inside || (pair && !holdsNearest)) {
       this.lastCell = -1;
       return fallback;
@@ -114,7 +158,7 @@ export class TweenView {
     return {
       mesh: this.meshes[at.cell],
       positions: pair ? pathWeights(at.t) : at.weights,
-      sources: cell.samples.map((s, k) => ({ texture: this.textures[s], slot: pair ? 2 * k : k, weight: at.weights[k] })),
+      sources: cell.samples.map((s, k) => ({ sample: s, slot: pair ? 2 * k : k, weight: at.weights[k] })),
     };
   }
 
@@ -139,6 +183,7 @@ export class TweenView {
     // Image pixel (y down) -> window pixel in rect (y up) -> clip space.
     const toClip = [(2 * rect[2]) / (width * viewport[0]), (-2 * rect[3]) / (height * viewport[1]), (2 * rect[0]) / viewport[0] - 1,
                     (2 * (rect[1] + rect[3])) / viewport[1] - 1];
+    this.finerInView = this.useFiner ? view.sources.filter((s) => this.finer.has(s.sample)).length : 0;
     const p = this.programs[view.sources.length - 1];
     const at = this.locations(p);
     gl.useProgram(p);
@@ -147,7 +192,7 @@ export class TweenView {
       source[k] = s.slot;
       weights[k] = s.weight;
       gl.activeTexture(gl.TEXTURE0 + k);
-      gl.bindTexture(gl.TEXTURE_2D, s.texture);
+      gl.bindTexture(gl.TEXTURE_2D, this.textureOf(s.sample));
       gl.uniform1i(at[`sample${k}`], k);
     });
     gl.uniform3fv(at.position_weights, view.positions);
