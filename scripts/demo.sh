@@ -11,7 +11,7 @@
 # OUT_DIR/network/ (a server, a viewer recording a shared
 # session while a director client changes its style and camera, a turntable session, and a
 # conference whose client rebuilds the speaker's face from expression codes; products turned by
-# customers: turntable.mp4, duck-product.mp4 from a folder of photos, temple-product.mp4 from the
+# customers: turntable.mp4, duck-product.mp4 from a folder of photos (duck-product-zoomed.mp4 zoomed in), temple-product.mp4 from the
 # real temple photos when ../shared/data is there), OUT_DIR/call/call.mp4 (a call between two
 # members' own faces and voices, recorded with its sound by a listener).
 set -euo pipefail
@@ -158,10 +158,11 @@ cat > "$out/network/server.json" <<EOF
 EOF
 # A shop owner's product: studio photos of the duck turning on a turntable in front of white, every
 # 15 degrees (the view's azimuth falls as the object turns: --step -15), put on the server with one
-# command. With ../shared/data beside the checkout, the real temple photos become a product too.
+# command; at 1024 pixels they are shown first at 512 and kept at 1024 for zooming in. With
+# ../shared/data beside the checkout, the real temple photos become a product too.
 rm -rf "$out/network/duck-photos" && mkdir -p "$out/network/duck-photos"
 "$bin/inkwire-render" --mesh /usr/share/assimp/models/Collada/duck.dae --style default --view 0,0,1.4 --frames 24 \
-  --size 512x512 --backdrop '#ffffff' --out "$out/network/duck-photos/IMG_%04d.jpg"
+  --size 1024x1024 --backdrop '#ffffff' --out "$out/network/duck-photos/IMG_%04d.jpg"
 "$bin/inkwire-server" add-product duck --photos "$out/network/duck-photos" --step -15 --data "$out/network/server-data" \
   > "$out/network/add-product-duck.log"
 if [[ -d "$here/../shared/data/templeRing" ]]; then
@@ -199,6 +200,9 @@ say "customers turn products put on the server from photos (network/*-product.mp
   --out "$out/network/turntable.mp4" --frame-log "$out/network/turntable.jsonl" 2>> "$out/network/viewer.log"
 "${client[@]}" --session duck --name customer --view 0 --frames 96 --fps 24 --size 512x512 \
   --out "$out/network/duck-product.mp4" --frame-log "$out/network/duck-product.jsonl" 2>> "$out/network/viewer.log"
+# Zoomed in three times: the client fetches the 1024-pixel photos of the views it shows.
+"${client[@]}" --session duck --name zoomed-customer --view 0,0,3 --frames 48 --fps 24 --size 512x512 --wait-for-product \
+  --out "$out/network/duck-product-zoomed.mp4" --frame-log "$out/network/duck-product-zoomed.jsonl" 2>> "$out/network/viewer.log"
 if [[ -d "$here/../shared/data/templeRing" ]]; then
   "${client[@]}" --session temple --name customer --view 0 --frames 120 --fps 24 --size 384x512 --wait-for-product \
     --out "$out/network/temple-product.mp4" 2>> "$out/network/viewer.log"
@@ -274,4 +278,4 @@ kill -TERM "$a_pid" "$b_pid" && wait "$a_pid" "$b_pid" || true
 kill "$broker_pid" && wait "$broker_pid" || true
 trap - EXIT
 
-echo "demo: wrote $out/contact-sheet.png, $out/shade-maps.png, $out/paintings.png, $out/styles/, $out/turntable-*.mp4, $out/painted-video.mp4, $out/tween-methods.png, $out/tween/, $out/conference/ (input | reconstruction | painted, with bytes sent in the .json) and $out/network/ (viewer.mp4: a shared session followed over the network; turntable.mp4 and duck-product.mp4: products turned by a customer, every in-between view synthesised; $out/web/: the product and the conference in a browser; conference.mp4 and conference-painted.mp4: a speaker's face rebuilt from expression codes; instances/viewer-on-b.mp4: a session shared by two server instances through Redis) and $out/call/call.mp4 (a call between two members, with its sound)"
+echo "demo: wrote $out/contact-sheet.png, $out/shade-maps.png, $out/paintings.png, $out/styles/, $out/turntable-*.mp4, $out/painted-video.mp4, $out/tween-methods.png, $out/tween/, $out/conference/ (input | reconstruction | painted, with bytes sent in the .json) and $out/network/ (viewer.mp4: a shared session followed over the network; turntable.mp4 and duck-product.mp4: products turned by a customer, every in-between view synthesised, duck-product-zoomed.mp4 zoomed in on its finer photos; $out/web/: the product and the conference in a browser; conference.mp4 and conference-painted.mp4: a speaker's face rebuilt from expression codes; instances/viewer-on-b.mp4: a session shared by two server instances through Redis) and $out/call/call.mp4 (a call between two members, with its sound)"

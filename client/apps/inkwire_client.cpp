@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
   app.add_option("--view", view,
                  "after joining, move the session's camera: AZIMUTH,ELEVATION[,DISTANCE in diagonals]; in a turntable session, "
                  "this client's own first view (AZIMUTH[,ELEVATION[,ZOOM]], nothing sent)");
-  app.add_flag("--wait-for-product", o.wait_for_product, "headless, turntable sessions: draw the first frame once every photo is there");
+  app.add_flag("--wait-for-product", o.wait_for_product, "headless, turntable sessions: draw the first frame once every photo is there, and the zoom level its view needs");
   app.add_flag("--present", o.present, "turntable sessions: send this client's view to the session for followers (window: P toggles)");
   app.add_flag("--follow", o.follow, "turntable sessions: show the view a presenter sends (window: F toggles)")->excludes("--present");
   app.add_option("--frame-log", o.frame_log, "write one JSON line per frame drawn (frame, revision, style, time; the window adds its panel's place)");

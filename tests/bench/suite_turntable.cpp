@@ -187,6 +187,8 @@ HeldOut hold_out(const PhotoFolder& all) {
   // The ring closes when the photos go all the way round and the last held-out one lies between
   // the last kept one and the first.
   h.kept.closed = all.closed && columns % 2 == 0;
+  h.kept.folder = all.folder;
+  h.kept.finest = all.finest;
   for (int r = 0; r < all.rows; ++r)
     for (int c = 0; c < columns; ++c) {
       const size_t i = size_t(r * columns + c);
@@ -290,6 +292,22 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
   rows[2].counters["bytes_per_pair"] = double(tween_bytes) / double(std::max<size_t>(product.data.cells.size(), 1));
   rows[2].counters["tween_share"] = double(tween_bytes) / double(photo_bytes + matte_bytes + tween_bytes);
   rows[2].counters["seconds_to_make"] = seconds_to_make;
+  // Zoom (SPEC T18): each finer level's size and bytes, fetched only zoomed in (a few photos of
+  // it at a time), so not in the share above.
+  std::vector<uint64_t> level_bytes(state.product.levels.size(), 0);
+  size_t zoomed = 0;
+  for (const auto& a : state.assets)
+    if (a.kind == protocol::AssetKind::Zoom) level_bytes[zoomed++ / size_t(n)] += a.size;
+  std::string levels_said = "first level " + std::to_string(product.data.width) + "x" + std::to_string(product.data.height) + " " +
+                            std::to_string(photo_bytes / uint64_t(n)) + " B a photo";
+  for (size_t l = 0; l < level_bytes.size(); ++l) {
+    const std::string key = "level" + std::to_string(l + 1);
+    rows[2].counters[key + "_side"] = double(std::max(state.product.levels[l].width, state.product.levels[l].height));
+    rows[2].counters[key + "_bytes_per_photo"] = double(level_bytes[l]) / double(n);
+    levels_said += ", " + std::to_string(state.product.levels[l].width) + "x" + std::to_string(state.product.levels[l].height) + " " +
+                   std::to_string(level_bytes[l] / uint64_t(n)) + " B a photo";
+  }
+  std::fprintf(stderr, "inkwire-bench: turntable %s zoom levels: %s\n", name.c_str(), levels_said.c_str());
   std::fprintf(stderr, "inkwire-bench: turntable %s (%zu held out): spin %.2f dB, cross-fade %.2f dB, tween %.2f dB, flow %.2f dB, %.0f B a pair\n",
                name.c_str(), spin.psnr.size(), Scores::mean(spin.psnr), Scores::mean(fade.psnr), Scores::mean(tween.psnr),
                Scores::mean(flow.psnr), rows[2].counters["bytes_per_pair"]);
