@@ -9,6 +9,10 @@ import sys
 import time
 
 
+# The wire protocol's version, as the C++ codec writes it in the golden frames the JS codec checks.
+PROTOCOL_VERSION = json.load(open(os.path.join(os.path.dirname(__file__), "..", "golden", "protocol-frames.json")))["version"]
+
+
 def skip(reason):
     print(f"SKIPPED: {reason}")
     sys.exit(0)

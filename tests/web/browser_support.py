@@ -5,7 +5,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
-from inkwire_test import Checks, Server, psnr, read_image, skip  # noqa: E402,F401  (re-exported for the tests)
+from inkwire_test import PROTOCOL_VERSION, Checks, Server, psnr, read_image, skip  # noqa: E402,F401  (re-exported for the tests)
 
 try:
     from selenium import webdriver

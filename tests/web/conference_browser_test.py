@@ -16,7 +16,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from browser_support import Checks, Server, chromium, psnr, read_image, skip  # skips without the browser
+from browser_support import PROTOCOL_VERSION, Checks, Server, chromium, psnr, read_image, skip  # skips without the browser
 
 BIN, OUT = sys.argv[1], sys.argv[2]
 PHOTO = "/usr/share/doc/libdlib19.1/examples/faces/Tom_Cruise_avp_2014_4.jpg"  # 565x800
@@ -56,7 +56,7 @@ first.stop()
 # The director is the call's editor: only an editor may set the session's expression.
 server = Server(BIN, OUT, data, {"sessions": [{"name": "meeting", "kind": "conference", "editor_token": "d1rector"}], "http": "127.0.0.1:0"})
 director = socket.create_connection(("127.0.0.1", server.tcp))
-director.sendall(frame(1, struct.pack("<IH", 0x574B4E49, 3) + text("director")) + frame(6, text("meeting") + text("d1rector")))
+director.sendall(frame(1, struct.pack("<IH", 0x574B4E49, PROTOCOL_VERSION) + text("director")) + frame(6, text("meeting") + text("d1rector")))
 driver = None
 element = "document.querySelector('inkwire-conference')"
 

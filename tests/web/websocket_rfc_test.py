@@ -11,14 +11,14 @@ import struct
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
-from inkwire_test import Checks, Server, skip  # noqa: E402
+from inkwire_test import PROTOCOL_VERSION, Checks, Server, skip  # noqa: E402
 
 try:
     import websockets
 except ImportError:
     skip("python3-websockets is not installed (scripts/setup.sh installs it)")
 
-MAGIC, VERSION = 0x574B4E49, 3
+MAGIC, VERSION = 0x574B4E49, PROTOCOL_VERSION
 HELLO, WELCOME, ERROR, JOIN, SNAPSHOT = 1, 2, 3, 6, 8
 
 
