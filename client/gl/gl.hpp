@@ -60,7 +60,6 @@
   X(PFNGLDELETETEXTURESPROC, glDeleteTextures)                               \
   X(PFNGLBINDTEXTUREPROC, glBindTexture)                                     \
   X(PFNGLACTIVETEXTUREPROC, glActiveTexture)                                 \
-  X(PFNGLTEXIMAGE1DPROC, glTexImage1D)                                       \
   X(PFNGLTEXIMAGE2DPROC, glTexImage2D)                                       \
   X(PFNGLTEXIMAGE3DPROC, glTexImage3D)                                       \
   X(PFNGLTEXSUBIMAGE2DPROC, glTexSubImage2D)                                 \

@@ -1,6 +1,7 @@
 #include "client/gl/resources.hpp"
 
 #include <algorithm>
+#include <sstream>
 
 #include "common/error.hpp"
 
@@ -123,14 +124,18 @@ Texture Texture::stack_from_images(const std::vector<Image>& layers, GLenum targ
   return t;
 }
 
-Texture Texture::lookup_1d(const std::vector<glm::u8vec4>& texels, bool linear) {
+Texture Texture::lookup_row(const std::vector<glm::u8vec4>& texels, bool linear) {
   if (texels.empty()) throw Error("cannot make a lookup texture with no texels");
-  Texture t = create_bound(GL_TEXTURE_1D);
-  glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA8, GLsizei(texels.size()), 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
-  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  Texture t = create_bound(GL_TEXTURE_2D);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, GLsizei(texels.size()), 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   const GLint filter = linear ? GL_LINEAR : GL_NEAREST;
-  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, filter);
-  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, filter);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+  t.width_ = int(texels.size());
+  t.height_ = 1;
   return t;
 }
 
@@ -159,7 +164,21 @@ const std::string& shader_source(const std::string& path) {
   const auto& files = embedded_files();
   const auto found = files.find(path);
   if (found == files.end()) throw Error("Program: no embedded shader '" + path + "'");
-  return cache.emplace(path, std::string(found->second)).first->second;
+  // A line `#include "common/x.glsl"` is replaced by that file: GLSL has no includes, and GLES
+  // (WebGL2) links one shader object a stage, so code shared by several shaders is pasted in.
+  std::string text(found->second), out;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    const std::string directive = "#include \"";
+    if (line.rfind(directive, 0) == 0 && line.size() > directive.size() && line.back() == '"') {
+      const std::string included = line.substr(directive.size(), line.size() - directive.size() - 1);
+      if (included == path) throw Error("Program: shader '" + path + "' includes itself");
+      out += shader_source(included) + "\n";
+    } else {
+      out += line + "\n";
+    }
+  }
+  return cache.emplace(path, std::move(out)).first->second;
 }
 
 namespace {

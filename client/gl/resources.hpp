@@ -93,8 +93,9 @@ class Texture : public Handle<delete_texture> {
   // Equal-sized images stacked into one texture: GL_TEXTURE_2D_ARRAY (layers picked by index,
   // e.g. stroke variants) or GL_TEXTURE_3D (filtered along the stack too, e.g. hatch tones).
   static Texture stack_from_images(const std::vector<Image>& layers, GLenum target, const TextureOptions& options = {});
-  // A 1D lookup (shade maps): RGBA rows of `width` texels.
-  static Texture lookup_1d(const std::vector<glm::u8vec4>& texels, bool linear);
+  // A lookup table (shade maps, tone ramps): one row of RGBA texels as a 2D texture one texel
+  // high (1D textures are desktop GL's alone; WebGL2 has none), read at v = 0.5.
+  static Texture lookup_row(const std::vector<glm::u8vec4>& texels, bool linear);
   // Replaces a 2D texture's texels (per-frame images: captures, video frames); reallocates
   // only when the size changes. Mipmaps, if any, are regenerated.
   void update(const Image& image);
@@ -119,8 +120,9 @@ class Texture : public Handle<delete_texture> {
   bool mipmaps_ = false;
 };
 
-// Shader stage sources by their embedded path under client/shaders/ (e.g. "default/mesh.vert").
-// Throws inkwire::Error when no such file was embedded.
+// Shader stage sources by their embedded path under client/shaders/ (e.g. "default/mesh.vert"),
+// each line `#include "common/x.glsl"` replaced by that file (code several shaders share, such
+// as common/wide_line.glsl). Throws inkwire::Error when no such file was embedded.
 const std::string& shader_source(const std::string& path);
 
 class Program : public Handle<delete_program> {

@@ -13,7 +13,7 @@ using namespace gl;
 HiddenLineRenderer::HiddenLineRenderer() : lines_(Program::from_files({"hidden-line/lines.vert", "hidden-line/lines.frag"})) {
   line_vao_ = VertexArray::create();
   line_buffer_ = Buffer::create(0, nullptr, GL_STREAM_DRAW);
-  line_vao_.attribute(0, line_buffer_, 3, sizeof(glm::vec3), 0);
+  wide_line_attributes(line_vao_, line_buffer_);
 }
 
 std::vector<ParamSpec> HiddenLineRenderer::params() {
@@ -40,31 +40,26 @@ void HiddenLineRenderer::draw(const FrameState& frame) {
   const Mesh& mesh = object_->mesh;
   const glm::vec3 eye_object = frame.eye_in_object_space();
   front_faces_ = classify_faces(mesh, object_->topology, eye_object, front_);
-  line_points_.clear();
-  for (const Edge& e : object_->topology.edges) {
-    if (e.boundary || e.dihedral > crease_radians_ || is_silhouette(e, front_)) {
-      line_points_.push_back(mesh.positions[e.v0]);
-      line_points_.push_back(mesh.positions[e.v1]);
-    }
-  }
+  line_vertices_.clear();
+  for (const Edge& e : object_->topology.edges)
+    if (e.boundary || e.dihedral > crease_radians_ || is_silhouette(e, front_)) append_wide_line(line_vertices_, mesh.positions[e.v0], mesh.positions[e.v1]);
   const glm::mat4 mvp = frame.model_view_projection();
   hlr_.lay_depth(*mesh_, frame);
 
   HiddenLineRemoval::begin_lines();
-  line_buffer_.upload(line_points_.size() * sizeof(glm::vec3), line_points_.data());
+  line_buffer_.upload(line_vertices_.size() * sizeof(WideLineVertex), line_vertices_.data());
   lines_.use();
   lines_.set("model_view_projection", mvp);
   lines_.set("line_colour", glm::vec4(line_colour_, 1.0f));
-  glLineWidth(line_width_);
+  set_wide_line_uniforms(lines_, line_width_);
   line_vao_.bind();
-  glDrawArrays(GL_LINES, 0, GLsizei(line_points_.size()));
-  glLineWidth(1.0f);
+  glDrawArrays(GL_TRIANGLES, 0, GLsizei(line_vertices_.size()));
   HiddenLineRemoval::end_lines();
 }
 
 std::map<std::string, double> HiddenLineRenderer::counters() const {
   return {{"edges_total", double(object_ ? object_->topology.edges.size() : 0)},
-          {"edges_drawn", double(line_points_.size() / 2)},
+          {"edges_drawn", double(line_vertices_.size() / 6)},
           {"front_faces", double(front_faces_)}};
 }
 

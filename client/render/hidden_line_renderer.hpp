@@ -8,6 +8,7 @@
 #include "client/render/gpu_mesh.hpp"
 #include "client/render/hidden_lines.hpp"
 #include "client/render/renderer.hpp"
+#include "client/render/wide_lines.hpp"
 
 namespace inkwire {
 
@@ -28,7 +29,7 @@ class HiddenLineRenderer final : public Renderer {
   gl::VertexArray line_vao_;
   gl::Buffer line_buffer_;
   std::vector<uint8_t> front_;
-  std::vector<glm::vec3> line_points_;
+  std::vector<WideLineVertex> line_vertices_;  // six a visible edge
   float line_width_ = 2.0f, crease_radians_ = 1.05f;
   glm::vec3 line_colour_{0.1f};
   size_t front_faces_ = 0;

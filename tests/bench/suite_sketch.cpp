@@ -1,5 +1,6 @@
 // Suite "sketch": the study's figures 55 and 56 (SPEC S8) over the LOD series: fps against
-// total and drawn edges for every sketcher, with the default renderer on the same objects.
+// total and drawn edges for every sketcher and the hidden-line drawing, with the default
+// renderer on the same objects.
 #include <cstdio>
 
 #include "bench_harness.hpp"
@@ -8,7 +9,7 @@
 namespace inkwire::bench {
 
 std::vector<Result> run_sketch_suite(Harness& harness) {
-  const std::vector<std::string> sketchers = {"sketch-recursive", "sketch-segments", "sketch-pencil", "sketch-charcoal", "sketch-chalk"};
+  const std::vector<std::string> sketchers = {"hidden-line", "sketch-recursive", "sketch-segments", "sketch-pencil", "sketch-charcoal", "sketch-chalk"};
   const int frames = harness.options().frames;
   std::vector<Result> results;
   for (BenchObject& object : harness.lod_series()) {

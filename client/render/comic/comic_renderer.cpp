@@ -116,7 +116,7 @@ void ComicRenderer::upload_shade_map() {
     // The standard renderer's 1D map is the map's R.V = 0 row: the image's bottom row.
     std::vector<glm::u8vec4> row(size_t(img.width));
     for (int x = 0; x < img.width; ++x) row[size_t(x)] = img.rgba(x, img.height - 1);
-    shade_texture_ = Texture::lookup_1d(row, shade_map_.smooth);
+    shade_texture_ = Texture::lookup_row(row, shade_map_.smooth);
   }
 }
 

@@ -136,7 +136,7 @@ void HatchingRenderer::build_textures() {
     const uint8_t v = uint8_t(shade_.tone_at(-1.0f + 2.0f * float(i) / float(lookup.size() - 1)) * 255.0f + 0.5f);
     lookup[i] = {v, v, v, 255};
   }
-  tone_lookup_ = std::make_unique<Texture>(Texture::lookup_1d(lookup, true));
+  tone_lookup_ = std::make_unique<Texture>(Texture::lookup_row(lookup, true));
 }
 
 const Program& HatchingRenderer::program(const std::string& under_define) {

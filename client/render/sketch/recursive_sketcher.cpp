@@ -12,7 +12,7 @@ namespace inkwire {
 
 using namespace gl;
 
-RecursiveSketcher::RecursiveSketcher() : strokes_(Program::from_files({"sketch/strokes.vert", "sketch/strokes.frag"})) {}
+RecursiveSketcher::RecursiveSketcher() : strokes_(Program::from_files({"sketch/strokes.vert", "sketch/strokes.frag"}, {"WIDE_LINE"})) {}
 
 std::vector<ParamSpec> RecursiveSketcher::params() {
   std::vector<ParamSpec> specs = SketchEdgeSource::params(false);
@@ -52,8 +52,7 @@ void RecursiveSketcher::prepare(const SceneObject& object) {
   for (StrokeSet& set : sets_) {
     set.buffer = Buffer::create(0, nullptr, GL_STREAM_DRAW);
     set.vao = VertexArray::create();
-    set.vao.attribute(0, set.buffer, 3, sizeof(Vertex), offsetof(Vertex, position));
-    set.vao.attribute(1, set.buffer, 1, sizeof(Vertex), offsetof(Vertex, opacity));
+    wide_line_attributes(set.vao, set.buffer);
     set.generation = -1;
   }
   glBindVertexArray(0);
@@ -118,14 +117,11 @@ void RecursiveSketcher::build_set(int set, const FrameState& frame) {
       polyline_.clear();
       perturb_stroke(stroke_points_, stroke_sides_, perturb_, random, polyline_);
       const float o = stroke.opacity * (1.0f - 0.2f * float(r) / float(std::max(1, reps - 1)));
-      for (size_t i = 0; i + 1 < polyline_.size(); ++i) {
-        scratch_.push_back({polyline_[i], o});
-        scratch_.push_back({polyline_[i + 1], o});
-      }
+      for (size_t i = 0; i + 1 < polyline_.size(); ++i) append_wide_line(scratch_, polyline_[i], polyline_[i + 1], o, o);
     }
   }
   StrokeSet& s = sets_[size_t(set)];
-  s.buffer.upload(scratch_.size() * sizeof(Vertex), scratch_.data());
+  s.buffer.upload(scratch_.size() * sizeof(WideLineVertex), scratch_.data());
   s.vertices = scratch_.size();
   s.generation = generation_;
 }
@@ -159,10 +155,9 @@ void RecursiveSketcher::draw(const FrameState& frame) {
   strokes_.set("model_view_projection", mvp);
   strokes_.set("depth_bias", depth_bias_);
   strokes_.set("ink", ink_.ink);
-  glLineWidth(ink_.line_width);
+  set_wide_line_uniforms(strokes_, ink_.line_width);
   sets_[size_t(set)].vao.bind();
-  glDrawArrays(GL_LINES, 0, GLsizei(sets_[size_t(set)].vertices));
-  glLineWidth(1.0f);
+  glDrawArrays(GL_TRIANGLES, 0, GLsizei(sets_[size_t(set)].vertices));
   HiddenLineRemoval::end_lines();
 }
 

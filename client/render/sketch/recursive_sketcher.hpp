@@ -18,6 +18,7 @@
 #include "client/render/gpu_mesh.hpp"
 #include "client/render/hidden_lines.hpp"
 #include "client/render/renderer.hpp"
+#include "client/render/wide_lines.hpp"
 #include "client/render/sketch/importance.hpp"
 #include "client/render/sketch/ink_lines.hpp"
 #include "client/render/sketch/perturb.hpp"
@@ -47,10 +48,6 @@ class RecursiveSketcher final : public Renderer {
   const SceneObject* object_ = nullptr;
   std::unique_ptr<GpuMesh> mesh_;
 
-  struct Vertex {
-    glm::vec3 position;
-    float opacity;
-  };
   struct StrokeSet {
     gl::Buffer buffer;
     gl::VertexArray vao;
@@ -60,7 +57,7 @@ class RecursiveSketcher final : public Renderer {
   std::array<StrokeSet, kSets> sets_;
   std::vector<ChainEdge> chain_edges_;
   ChainBuilder chains_;
-  std::vector<Vertex> scratch_;
+  std::vector<WideLineVertex> scratch_;
   struct Stroke {
     uint64_t id;    // seeds its wobble: the first edge's index, stable while it stays drawn
     float opacity;

@@ -5,11 +5,7 @@ in vec2 shade_coord;
 in vec2 texcoord;
 flat in vec4 triangle_colour;
 
-#ifdef EXTENDED
-uniform sampler2D shade_map;
-#else
-uniform sampler1D shade_map;
-#endif
+uniform sampler2D shade_map;  // extended: the shade-map image; else one row (Texture::lookup_row)
 #ifdef TEXTURED
 uniform sampler2D base_texture;
 #endif
@@ -32,7 +28,7 @@ void main() {
   // Shade map images put R.V = 0 on their bottom row; textures start at the image's top row.
   vec3 texel = texture(shade_map, vec2(shade_coord.x, 1.0 - shade_coord.y)).rgb;
 #else
-  vec3 texel = texture(shade_map, shade_coord.x).rgb;
+  vec3 texel = texture(shade_map, vec2(shade_coord.x, 0.5)).rgb;
 #endif
   vec3 shaded = apply_shade(base, texel);
   float darkening = clamp(1.0 - 2.0 * dot(texel, vec3(1.0 / 3.0)), 0.0, 1.0);

@@ -15,7 +15,7 @@ in float threshold_offset;
 uniform vec3 ink_colour;
 #else
 in float n_dot_l;
-uniform sampler1D tone_lookup;  // N.L in -1..1 mapped to 0..1 -> tone 0 (paper) .. 1 (darkest)
+uniform sampler2D tone_lookup;  // one row: N.L in -1..1 mapped to 0..1 -> tone 0 (paper) .. 1 (darkest)
 #if defined(VOLUME)
 uniform sampler3D tones;        // depth axis is tone
 #else
@@ -39,7 +39,7 @@ void main() {
   vec2 reached = clamp(steps.rb * threshold_scale - threshold_offset, 0.0, 1.0);
   vec4 ink = vec4(ink_colour, steps.g * reached.x + (steps.a - steps.g) * reached.y);
 #else
-  float tone = texture(tone_lookup, n_dot_l * 0.5 + 0.5).r;
+  float tone = texture(tone_lookup, vec2(n_dot_l * 0.5 + 0.5, 0.5)).r;
 #if defined(VOLUME)
   vec4 ink = texture(tones, vec3(tile, tone));
 #else

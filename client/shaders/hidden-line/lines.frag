@@ -1,4 +1,5 @@
 #version 450 core
 uniform vec4 line_colour;
 out vec4 colour;
-void main() { colour = line_colour; }
+#include "common/wide_line_coverage.glsl"
+void main() { colour = vec4(line_colour.rgb, line_colour.a * wide_line_coverage()); }
