@@ -200,8 +200,9 @@ say "customers turn products put on the server from photos (network/*-product.mp
   --out "$out/network/turntable.mp4" --frame-log "$out/network/turntable.jsonl" 2>> "$out/network/viewer.log"
 "${client[@]}" --session duck --name customer --view 0 --frames 96 --fps 24 --size 512x512 \
   --out "$out/network/duck-product.mp4" --frame-log "$out/network/duck-product.jsonl" 2>> "$out/network/viewer.log"
-# Zoomed in three times: the client fetches the 1024-pixel photos of the views it shows.
-"${client[@]}" --session duck --name zoomed-customer --view 0,0,3 --frames 48 --fps 24 --size 512x512 --wait-for-product \
+# Zoomed in three times and turned slowly (a turn in 10 s): the client fetches the 1024-pixel
+# photos of the views it shows as it turns.
+"${client[@]}" --session duck --name zoomed-customer --view 0,0,3 --frames 240 --fps 24 --size 512x512 --wait-for-product \
   --out "$out/network/duck-product-zoomed.mp4" --frame-log "$out/network/duck-product-zoomed.jsonl" 2>> "$out/network/viewer.log"
 if [[ -d "$here/../shared/data/templeRing" ]]; then
   "${client[@]}" --session temple --name customer --view 0 --frames 120 --fps 24 --size 384x512 --wait-for-product \

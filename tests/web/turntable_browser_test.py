@@ -55,6 +55,33 @@ subprocess.run([f"{BIN}/inkwire-server", "add-product", "zoom", "--photos", zoom
 server = Server(BIN, OUT, data, {"sessions": [], "http": "127.0.0.1:0"})
 tcp, http = server.tcp, server.http
 driver = None
+
+
+def loaded_element(id_, session):
+    """A new element for `session` at the top of the page, once loaded; its JS expression."""
+    driver.execute_script(f"""const e = document.createElement('inkwire-turntable');
+      e.setAttribute('session', '{session}'); e.setAttribute('auto-rotate', 'off'); e.id = '{id_}';
+      e.style.cssText = 'width:{SIZE}px;height:{SIZE}px'; document.body.prepend(e);""")
+    element = f"document.getElementById('{id_}')"
+    end = time.time() + 60
+    while time.time() < end and not driver.execute_script(f"return {element}.hasAttribute('loaded')"):
+        time.sleep(0.1)
+    return element
+
+
+def against_client(element, session, name, view, setup=""):
+    """PSNR of the element's picture (after the JS `setup` on it, `e`) against the C++ client's at `view`."""
+    png = driver.execute_script(f"const e = {element}; {setup} e.draw(); return e.canvas.toDataURL('image/png');")
+    browser_png = os.path.join(OUT, f"browser-{name}.png")
+    with open(browser_png, "wb") as f:
+        f.write(base64.b64decode(png.split(",", 1)[1]))
+    client_png = os.path.join(OUT, f"client-{name}.png")
+    subprocess.run([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{tcp}", "--session", session, "--headless", "--frames", "1",
+                    "--view", view, "--size", f"{SIZE}x{SIZE}", "--wait-for-product", "--out", client_png,
+                    "--cache", os.path.join(OUT, f"cache-{session}")], check=True, stderr=subprocess.DEVNULL)
+    return psnr(read_image(browser_png, OUT), read_image(client_png, OUT))
+
+
 try:
     driver = chromium(OUT, 400, 400)
     driver.get(f"http://127.0.0.1:{http}/")
@@ -72,15 +99,7 @@ try:
     print("browser GL renderer:", renderer)
 
     for azimuth in (0, 7.5, 37.5, 180):
-        png = driver.execute_script(f"const e = {element}; e.azimuth = {azimuth}; e.draw(); return e.canvas.toDataURL('image/png');")
-        browser_png = os.path.join(OUT, f"browser-{azimuth}.png")
-        with open(browser_png, "wb") as f:
-            f.write(base64.b64decode(png.split(",", 1)[1]))
-        out = os.path.join(OUT, f"client-{azimuth}.png")
-        subprocess.run([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{tcp}", "--session", "duck", "--headless", "--frames", "1",
-                        "--view", str(azimuth), "--size", f"{SIZE}x{SIZE}", "--wait-for-product", "--out", out,
-                        "--cache", os.path.join(OUT, "cache")], check=True, stderr=subprocess.DEVNULL)
-        db = psnr(read_image(browser_png, OUT), read_image(out, OUT))
+        db = against_client(element, "duck", str(azimuth), str(azimuth), f"e.azimuth = {azimuth};")
         check(db >= 35.0, f"azimuth {azimuth}: the browser's view matches the C++ client's at {db:.2f} dB (>= 35)")
 
     # A drag turns the view and sends nothing.
@@ -99,28 +118,14 @@ try:
     check(driver.execute_script(f"return {element}.elevation") == 0, "a drag down on one ring of photos keeps the view level")
 
     # Rows: a drag down turns the view up, as far as the top row; the arrow keys step one row.
-    rows = "document.getElementById('rows')"
-    driver.execute_script(f"""const e = document.createElement('inkwire-turntable');
-      e.setAttribute('session', 'rows'); e.setAttribute('auto-rotate', 'off'); e.id = 'rows';
-      e.style.cssText = 'width:{SIZE}px;height:{SIZE}px'; document.body.prepend(e);""")
-    end = time.time() + 60
-    while time.time() < end and not driver.execute_script(f"return {rows}.hasAttribute('loaded')"):
-        time.sleep(0.1)
+    rows = loaded_element("rows", "rows")
     check(driver.execute_script(f"return {rows}.hasAttribute('loaded')"), "the element loads a product in three rows")
     rows_canvas = driver.execute_script(f"return {rows}.canvas")
     ActionChains(driver).move_to_element(rows_canvas).click_and_hold().move_by_offset(0, 25).move_by_offset(0, 25).perform()
     held = driver.execute_script(f"return [{rows}.azimuth, {rows}.elevation]")
     ActionChains(driver).release().perform()
     check(abs(held[0]) < 0.01 and abs(held[1] - 20) < 0.01, f"a drag of 50 pixels down turns the view 20 degrees up ({held[1]:.2f}), not round")
-    png = driver.execute_script(f"const e = {rows}; e.azimuth = -15; e.draw(); return e.canvas.toDataURL('image/png');")
-    browser_png = os.path.join(OUT, "browser-rows.png")
-    with open(browser_png, "wb") as f:
-        f.write(base64.b64decode(png.split(",", 1)[1]))
-    client_png = os.path.join(OUT, "client-rows.png")
-    subprocess.run([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{tcp}", "--session", "rows", "--headless", "--frames", "1",
-                    "--view", "-15,20", "--size", f"{SIZE}x{SIZE}", "--wait-for-product", "--out", client_png,
-                    "--cache", os.path.join(OUT, "cache-rows")], check=True, stderr=subprocess.DEVNULL)
-    db = psnr(read_image(browser_png, OUT), read_image(client_png, OUT))
+    db = against_client(rows, "rows", "rows", "-15,20", "e.azimuth = -15;")
     check(db >= 35.0, f"between rows (azimuth -15, 20 up) the browser's view matches the C++ client's at {db:.2f} dB (>= 35)")
     ActionChains(driver).move_to_element(rows_canvas).click_and_hold().move_by_offset(0, 60).move_by_offset(0, 60).release().perform()
     check(abs(driver.execute_script(f"return {rows}.elevation") - 50) < 0.01, "dragged further, the view stops at the top row (50 degrees)")
@@ -132,13 +137,7 @@ try:
 
     # Zoom (SPEC T18): not zoomed in, no finer photo is fetched; zoomed in four times, the finer
     # level of the photos the view is drawn from is, and the view matches the C++ client's.
-    zoomed = "document.getElementById('zoom')"
-    driver.execute_script(f"""const e = document.createElement('inkwire-turntable');
-      e.setAttribute('session', 'zoom'); e.setAttribute('auto-rotate', 'off'); e.id = 'zoom';
-      e.style.cssText = 'width:{SIZE}px;height:{SIZE}px'; document.body.prepend(e);""")
-    end = time.time() + 60
-    while time.time() < end and not driver.execute_script(f"return {zoomed}.hasAttribute('loaded')"):
-        time.sleep(0.1)
+    zoomed = loaded_element("zoom", "zoom")
     check(driver.execute_script(f"return {zoomed}.hasAttribute('loaded')"), "the element loads a product with a zoom level")
     fetched_zoom = f"""const e = {zoomed}, hex = (h) => Array.from(h, (b) => b.toString(16).padStart(2, '0')).join('');
       return e.snapshot.assets.filter((a) => a.kind === 7 && e.session.receivedBy.has(hex(a.hash))).length;"""
@@ -151,15 +150,7 @@ try:
         driver.execute_script(f"{zoomed}.redraw()")
     fetched = driver.execute_script(fetched_zoom)
     check(1 <= fetched <= 3, f"zoomed in four times, the finer photos the view is drawn from are fetched ({fetched} of 12)")
-    png = driver.execute_script(f"const e = {zoomed}; e.draw(); return e.canvas.toDataURL('image/png');")
-    browser_png = os.path.join(OUT, "browser-zoom.png")
-    with open(browser_png, "wb") as f:
-        f.write(base64.b64decode(png.split(",", 1)[1]))
-    client_png = os.path.join(OUT, "client-zoom.png")
-    subprocess.run([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{tcp}", "--session", "zoom", "--headless", "--frames", "1",
-                    "--view", "0,0,4", "--size", f"{SIZE}x{SIZE}", "--wait-for-product", "--out", client_png,
-                    "--cache", os.path.join(OUT, "cache-zoom")], check=True, stderr=subprocess.DEVNULL)
-    db = psnr(read_image(browser_png, OUT), read_image(client_png, OUT))
+    db = against_client(zoomed, "zoom", "zoom", "0,0,4")
     check(db >= 35.0, f"zoomed in four times the browser's view matches the C++ client's at {db:.2f} dB (>= 35)")
     driver.execute_script(f"{zoomed}.remove()")
 
