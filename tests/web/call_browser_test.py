@@ -116,9 +116,10 @@ try:
             time.sleep(0.1)
         driver.execute_script(f"return {element}.takePhoto()")
     ada, bea = drivers["ada"], drivers["bea"]
-    # The native member publishes its camera only; it records what it sees and hears.
+    # The native member publishes its camera only; it records what it sees and hears, for 60 s:
+    # longer than the browsers take on a loaded machine, so it is still there when Bea leaves.
     native = subprocess.Popen([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{server.tcp}", "--session", "call", "--name", "Nat",
-                               "--camera", clips["nat"][0], "--headless", "--frames", "420", "--fps", "15", "--size", "480x240",
+                               "--camera", clips["nat"][0], "--headless", "--frames", "900", "--fps", "15", "--size", "480x240",
                                "--out", os.path.join(OUT, "nat.mp4"), "--audio-out", os.path.join(OUT, "nat-heard.wav"),
                                "--frame-log", os.path.join(OUT, "nat.jsonl"), "--cache", os.path.join(OUT, "cache-nat")],
                               stderr=open(os.path.join(OUT, "nat.log"), "w"))
@@ -192,7 +193,7 @@ finally:
     for d in drivers.values():
         d.quit()
     if native:
-        native.wait(timeout=60)
+        native.wait(timeout=90)
     server.stop()
 
 log = [json.loads(line) for line in open(os.path.join(OUT, "nat.jsonl"))]
