@@ -47,11 +47,9 @@ int add_product(const std::string& name, const server::ProductSource& source, co
   // (fetched only zoomed in, a few photos at a time).
   const size_t samples = state.product.directions.size();
   uint64_t first = 0;
-  std::vector<uint64_t> levels(state.product.levels.size(), 0);
-  size_t zoomed = 0;
   for (const auto& a : state.assets)
-    if (a.kind == protocol::AssetKind::Zoom) levels[zoomed++ / samples] += a.size;
-    else first += a.size;
+    if (a.kind != protocol::AssetKind::Zoom) first += a.size;
+  const std::vector<uint64_t> levels = server::zoom_level_bytes(state);
   std::string zoom;
   for (size_t l = 0; l < levels.size(); ++l)
     zoom += "; zoom level " + std::to_string(state.product.levels[l].width) + "x" + std::to_string(state.product.levels[l].height) + ": " +

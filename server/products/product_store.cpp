@@ -138,6 +138,14 @@ protocol::Snapshot find_or_make_product(AssetStore& store, const ProductSource& 
   return state;
 }
 
+std::vector<uint64_t> zoom_level_bytes(const protocol::Snapshot& state) {
+  std::vector<uint64_t> levels(state.product.levels.size(), 0);
+  size_t zoomed = 0;
+  for (const auto& a : state.assets)
+    if (a.kind == AssetKind::Zoom) levels.at(zoomed++ / state.product.directions.size()) += a.size;
+  return levels;
+}
+
 std::vector<protocol::TweenData> product_tween_messages(const AssetStore& store, const protocol::Snapshot& state) {
   const protocol::Product& p = state.product;
   if (p.directions.empty()) throw Error("session '" + state.session + "' has no product");

@@ -35,6 +35,9 @@ protocol::Snapshot store_product(AssetStore& store, const Product& product, cons
 protocol::Snapshot find_or_make_product(AssetStore& store, const ProductSource& source, const std::string& session,
                                         const PairProgress& progress, bool* made = nullptr);
 
+// The bytes of each of a product's zoom levels (all its photos at that level), coarsest first.
+std::vector<uint64_t> zoom_level_bytes(const protocol::Snapshot& state);
+
 // A stored product's tween data as the messages a member receives after the snapshot, one per
 // cell. Every asset of the product is read back and checked against its hash first, so a
 // corrupted file is found here, not served. Throws inkwire::Error naming what is wrong.

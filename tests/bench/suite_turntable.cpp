@@ -294,10 +294,7 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
   rows[2].counters["seconds_to_make"] = seconds_to_make;
   // Zoom (SPEC T18): each finer level's size and bytes, fetched only zoomed in (a few photos of
   // it at a time), so not in the share above.
-  std::vector<uint64_t> level_bytes(state.product.levels.size(), 0);
-  size_t zoomed = 0;
-  for (const auto& a : state.assets)
-    if (a.kind == protocol::AssetKind::Zoom) level_bytes[zoomed++ / size_t(n)] += a.size;
+  const std::vector<uint64_t> level_bytes = server::zoom_level_bytes(state);
   std::string levels_said = "first level " + std::to_string(product.data.width) + "x" + std::to_string(product.data.height) + " " +
                             std::to_string(photo_bytes / uint64_t(n)) + " B a photo";
   for (size_t l = 0; l < level_bytes.size(); ++l) {

@@ -147,11 +147,6 @@ void TweenRenderer::drop_finer_sample(int index) {
   finer_.erase(index);
 }
 
-float TweenRenderer::finer_scale(int index) const {
-  const auto it = finer_.find(index);
-  return it == finer_.end() ? 0.0f : it->second.scale;
-}
-
 int TweenRenderer::finer_in_view() const {
   return int(std::count_if(last_view_.sources.begin(), last_view_.sources.end(), [](const WarpSource& w) { return w.scale > 1.0f; }));
 }

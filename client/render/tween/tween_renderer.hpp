@@ -59,8 +59,6 @@ class TweenRenderer final : public Renderer {
   void set_finer_sample(int index, const Image& image);
   void drop_finer_sample(int index);
   void use_finer(bool use) { use_finer_ = use; }
-  // How many texels of sample `index`'s finer level a first-level pixel holds; 0 without one.
-  float finer_scale(int index) const;
   // How many of the last view's samples were drawn from a finer level.
   int finer_in_view() const;
   // The samples a view from `direction` (from the object toward the eye) is drawn from once they
