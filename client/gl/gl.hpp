@@ -1,5 +1,6 @@
 #pragma once
-// OpenGL 4.5 core entry points, loaded from whichever context is current (OSMesa, GLFW, ...).
+// The OpenGL entry points Inkwire uses: only what GL 3.3 core and WebGL2 (GLES 3.0) share (SPEC
+// W5), loaded from whichever context is current (OSMesa, EGL, GLFW; WebGL2 in the browser).
 //
 // Why not call libGL's symbols directly: a binary that links both OSMesa and libGL/libOpenGL
 // sends calls to whichever library the dynamic linker found first, silently drawing nothing
@@ -19,7 +20,7 @@
   X(PFNGLSCISSORPROC, glScissor)                                             \
   X(PFNGLCLEARPROC, glClear)                                                 \
   X(PFNGLCLEARCOLORPROC, glClearColor)                                       \
-  X(PFNGLCLEARDEPTHPROC, glClearDepth)                                       \
+  X(PFNGLCLEARDEPTHFPROC, glClearDepthf)                                       \
   X(PFNGLCLEARSTENCILPROC, glClearStencil)                                   \
   X(PFNGLENABLEPROC, glEnable)                                               \
   X(PFNGLDISABLEPROC, glDisable)                                             \
@@ -30,9 +31,6 @@
   X(PFNGLFRONTFACEPROC, glFrontFace)                                         \
   X(PFNGLBLENDFUNCPROC, glBlendFunc)                                         \
   X(PFNGLBLENDFUNCSEPARATEPROC, glBlendFuncSeparate)                         \
-  X(PFNGLLINEWIDTHPROC, glLineWidth)                                         \
-  X(PFNGLHINTPROC, glHint)                                                   \
-  X(PFNGLPOLYGONMODEPROC, glPolygonMode)                                     \
   X(PFNGLPOLYGONOFFSETPROC, glPolygonOffset)                                 \
   X(PFNGLSTENCILFUNCPROC, glStencilFunc)                                     \
   X(PFNGLSTENCILOPPROC, glStencilOp)                                         \
@@ -43,7 +41,7 @@
   X(PFNGLPIXELSTOREIPROC, glPixelStorei)                                     \
   X(PFNGLDRAWARRAYSPROC, glDrawArrays)                                       \
   X(PFNGLDRAWELEMENTSPROC, glDrawElements)                                   \
-  X(PFNGLDRAWARRAYSINSTANCEDBASEINSTANCEPROC, glDrawArraysInstancedBaseInstance) \
+  X(PFNGLDRAWARRAYSINSTANCEDPROC, glDrawArraysInstanced) \
   X(PFNGLVERTEXATTRIBDIVISORPROC, glVertexAttribDivisor)                     \
   X(PFNGLGENBUFFERSPROC, glGenBuffers)                                       \
   X(PFNGLDELETEBUFFERSPROC, glDeleteBuffers)                                 \

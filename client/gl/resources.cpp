@@ -139,6 +139,29 @@ Texture Texture::lookup_row(const std::vector<glm::u8vec4>& texels, bool linear)
   return t;
 }
 
+Texture Texture::data_rows(const std::vector<glm::vec4>& texels) {
+  Texture t = create_bound(GL_TEXTURE_2D);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);  // float textures filter on neither
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  t.update_rows(texels);
+  return t;
+}
+
+void Texture::update_rows(const std::vector<glm::vec4>& texels) {
+  const int rows = std::max(1, int((texels.size() + kDataTextureWidth - 1) / kDataTextureWidth));
+  glBindTexture(GL_TEXTURE_2D, id());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  if (rows > height_ || width_ != kDataTextureWidth) {
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, kDataTextureWidth, rows, 0, GL_RGBA, GL_FLOAT, nullptr);
+    width_ = kDataTextureWidth;
+    height_ = rows;
+  }
+  const int full = int(texels.size()) / kDataTextureWidth, rest = int(texels.size()) % kDataTextureWidth;
+  if (full > 0) glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kDataTextureWidth, full, GL_RGBA, GL_FLOAT, texels.data());
+  if (rest > 0)
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, full, rest, 1, GL_RGBA, GL_FLOAT, texels.data() + size_t(full) * kDataTextureWidth);
+}
+
 void Texture::sample_level(int level) const {
   int levels = 1;
   while (mipmaps_ && (std::max(width_, height_) >> levels) > 0) ++levels;
@@ -192,15 +215,29 @@ GLenum stage_of(const std::string& name) {
   throw Error("Program: cannot tell the stage of '" + name + "' (expected .vert, .frag, .geom or .comp)");
 }
 
-// Inserts the defines right after the #version line, which must stay first.
-std::string with_defines(const std::string& source, const std::vector<std::string>& defines) {
-  if (defines.empty()) return source;
-  std::string block;
-  for (const std::string& d : defines) block += "#define " + d + "\n";
-  const size_t version = source.find("#version");
-  if (version == std::string::npos) return block + source;
-  const size_t eol = source.find('\n', version);
-  return source.substr(0, eol + 1) + block + source.substr(eol + 1);
+}  // namespace
+
+const std::string& shader_header() {
+  // Shader files carry no #version line: the target's is put first. Both say what GL 3.3 core
+  // and WebGL2 (GLSL ES 3.00) share, so one file serves both (SPEC W5); ES wants precisions.
+#ifdef __EMSCRIPTEN__
+  static const std::string header =
+      "#version 300 es\n"
+      "precision highp float;\nprecision highp int;\n"
+      "precision highp sampler2D;\nprecision highp sampler2DArray;\nprecision highp sampler3D;\n";
+#else
+  static const std::string header = "#version 330 core\n";
+#endif
+  return header;
+}
+
+namespace {
+
+// The target's header, the variant's defines, then the shader.
+std::string with_header(const std::string& source, const std::vector<std::string>& defines) {
+  std::string text = shader_header();
+  for (const std::string& d : defines) text += "#define " + d + "\n";
+  return text + source;
 }
 
 }  // namespace
@@ -221,7 +258,7 @@ Program Program::from_sources(const std::vector<std::pair<std::string, std::stri
   for (const auto& [name, source] : named_sources) {
     const GLuint shader = glCreateShader(stage_of(name));
     shaders.push_back(shader);
-    const std::string text = with_defines(source, defines);
+    const std::string text = with_header(source, defines);
     const char* ptr = text.c_str();
     glShaderSource(shader, 1, &ptr, nullptr);
     glCompileShader(shader);

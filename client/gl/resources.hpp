@@ -96,6 +96,12 @@ class Texture : public Handle<delete_texture> {
   // A lookup table (shade maps, tone ramps): one row of RGBA texels as a 2D texture one texel
   // high (1D textures are desktop GL's alone; WebGL2 has none), read at v = 0.5.
   static Texture lookup_row(const std::vector<glm::u8vec4>& texels, bool linear);
+  // Data a shader reads by index (texelFetch through common/data_texture.glsl): RGBA float texels
+  // laid kDataTextureWidth to a row. What storage buffers do on desktop GL, which WebGL2 lacks.
+  static Texture data_rows(const std::vector<glm::vec4>& texels);
+  static constexpr int kDataTextureWidth = 1024;
+  // Replaces a data texture's texels (per-frame data), reallocating only when it must grow.
+  void update_rows(const std::vector<glm::vec4>& texels);
   // Replaces a 2D texture's texels (per-frame images: captures, video frames); reallocates
   // only when the size changes. Mipmaps, if any, are regenerated.
   void update(const Image& image);
@@ -125,10 +131,14 @@ class Texture : public Handle<delete_texture> {
 // as common/wide_line.glsl). Throws inkwire::Error when no such file was embedded.
 const std::string& shader_source(const std::string& path);
 
+// What every shader is compiled after: the target's #version line (GLSL 3.30 core natively,
+// GLSL ES 3.00 for WebGL2) and, for ES, default precisions.
+const std::string& shader_header();
+
 class Program : public Handle<delete_program> {
  public:
-  // Compiles and links the stages named by embedded path; `defines` are prepended after
-  // #version as "#define NAME VALUE" lines (variants). Throws inkwire::Error carrying the
+  // Compiles and links the stages named by embedded path; `defines` follow the
+  // target's header (shader_header()) as "#define NAME VALUE" lines (variants). Throws inkwire::Error carrying the
   // driver's log prefixed by "Program::compile(): <path>:" or "Program::link():".
   static Program from_files(const std::vector<std::string>& stage_paths, const std::vector<std::string>& defines = {});
   // Same, from literal sources (first element of each pair is a name for error messages).

@@ -110,7 +110,7 @@ glm::vec4 clear_colour(const BackdropSpec& spec) {
 void Backdrop::draw() const {
   const glm::vec4 c = clear_colour(spec_);
   glClearColor(c.r, c.g, c.b, c.a);
-  glClearDepth(1.0);
+  glClearDepthf(1.0f);
   glClearStencil(0);
   glDepthMask(GL_TRUE);
   glStencilMask(0xff);

@@ -7,12 +7,9 @@ using namespace gl;
 void begin_smooth_lines() {
   glEnable(GL_BLEND);
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  glEnable(GL_LINE_SMOOTH);  // GL_LINES still drawn (sketchers not yet on wide_lines.hpp)
-  glHint(GL_LINE_SMOOTH_HINT, GL_NICEST);
 }
 
 void end_smooth_lines() {
-  glDisable(GL_LINE_SMOOTH);
   glDisable(GL_BLEND);
 }
 

@@ -10,8 +10,8 @@
 
 namespace inkwire {
 
-// Lines drawn between these blend by their pixel coverage (GL_LINE_SMOOTH), so they look smooth
-// without multisampling; alpha accumulates too, so ink over a transparent backdrop stays
+// Lines drawn between these (wide lines, client/render/wide_lines.hpp) blend by their pixel
+// coverage, so they look smooth without multisampling; alpha accumulates too, so ink over a transparent backdrop stays
 // visible. end_smooth_lines() leaves blending off.
 void begin_smooth_lines();
 void end_smooth_lines();

@@ -7,15 +7,13 @@
 namespace inkwire {
 
 void append_wide_line(std::vector<WideLineVertex>& out, const glm::vec3& a, const glm::vec3& b, float opacity_a, float opacity_b) {
-  // Corners 0, 3 and 5 lie at a; 1, 2 and 4 at b (wide_line.glsl).
-  for (int corner = 0; corner < 6; ++corner) {
-    const bool at_a = corner == 0 || corner == 3 || corner == 5;
-    out.push_back({at_a ? a : b, at_a ? b : a, float(corner), at_a ? opacity_a : opacity_b});
-  }
+  append_wide_line_corners(out, [&](bool at_a, float corner) {
+    return WideLineVertex{at_a ? a : b, at_a ? b : a, corner, at_a ? opacity_a : opacity_b};
+  });
 }
 
-void wide_line_attributes(gl::VertexArray& vao, const gl::Buffer& buffer) {
-  constexpr GLsizei stride = sizeof(WideLineVertex);
+void wide_line_attributes(gl::VertexArray& vao, const gl::Buffer& buffer, size_t stride_bytes) {
+  const auto stride = GLsizei(stride_bytes);
   vao.attribute(0, buffer, 3, stride, offsetof(WideLineVertex, here));
   vao.attribute(1, buffer, 3, stride, offsetof(WideLineVertex, other));
   vao.attribute(2, buffer, 1, stride, offsetof(WideLineVertex, corner));

@@ -40,6 +40,8 @@ TEST(AntialiasingGLTest, LinesAndStrokesBlendByCoverageWithoutMultisampling) {
     EXPECT_GT(inked, 100u) << style;
     // Aliased lines leave none partly inked (measured without line smoothing: hidden-line and
     // comic 0.00, sketch-recursive 0.12; textured strokes fade across by their own texture).
-    EXPECT_GT(share, 0.3) << style << ": its lines are not blended by coverage";
+    // Wide lines fade over a pixel either side: 0.37-0.62 for the sketchers and hidden-line, 0.25
+    // for comic, whose 4-pixel outline has more pixels fully inside it.
+    EXPECT_GT(share, 0.2) << style << ": its lines are not blended by coverage";
   }
 }

@@ -135,8 +135,30 @@ void ComicRenderer::prepare(const SceneObject& object) {
   dynamic_vao_ = mesh_->vertex_array_with(dynamic_elements_);
   edge_vertices_ = Buffer::create(0, nullptr, GL_STREAM_DRAW);
   edge_vao_ = VertexArray::create();
-  edge_vao_.attribute(0, edge_vertices_, 3, sizeof(LineVertex), offsetof(LineVertex, position));
-  edge_vao_.attribute(1, edge_vertices_, 3, sizeof(LineVertex), offsetof(LineVertex, colour));
+  wide_line_attributes(edge_vao_, edge_vertices_, sizeof(LineVertex));
+  edge_vao_.attribute(4, edge_vertices_, 3, sizeof(LineVertex), offsetof(LineVertex, colour));
+  // Every edge once, with the faces beside it: the back-face outline draws those with a face
+  // turned away.
+  std::vector<BackfaceEdgeVertex> backface_edges;
+  const Mesh& mesh = object.mesh;
+  const Topology& topology = object.topology;
+  backface_edges.reserve(6 * topology.edges.size());
+  for (const Edge& e : topology.edges) {
+    const uint32_t f1 = e.boundary ? e.f0 : e.f1;
+    const glm::vec3 a = mesh.positions[e.v0], b = mesh.positions[e.v1];
+    append_wide_line_corners(backface_edges, [&](bool at_a, float corner) {
+      return BackfaceEdgeVertex{{at_a ? a : b, at_a ? b : a, corner, 1.0f}, topology.face_normals[e.f0], topology.face_normals[f1],
+                                flat_colour(mesh, e.f0), flat_colour(mesh, f1)};
+    });
+  }
+  backface_edge_vertices_ = backface_edges.size();
+  backface_edges_ = Buffer::create(backface_edges);
+  backface_vao_ = VertexArray::create();
+  wide_line_attributes(backface_vao_, backface_edges_, sizeof(BackfaceEdgeVertex));
+  backface_vao_.attribute(4, backface_edges_, 3, sizeof(BackfaceEdgeVertex), offsetof(BackfaceEdgeVertex, normal_a));
+  backface_vao_.attribute(5, backface_edges_, 3, sizeof(BackfaceEdgeVertex), offsetof(BackfaceEdgeVertex, normal_b));
+  backface_vao_.attribute(6, backface_edges_, 4, sizeof(BackfaceEdgeVertex), offsetof(BackfaceEdgeVertex, colour_a));
+  backface_vao_.attribute(7, backface_edges_, 4, sizeof(BackfaceEdgeVertex), offsetof(BackfaceEdgeVertex, colour_b));
   glBindVertexArray(0);
 }
 
@@ -214,25 +236,21 @@ void ComicRenderer::draw_fill(const FrameState& frame) {
 }
 
 void ComicRenderer::draw_backface_outline(const FrameState& frame) {
-  // Back faces as wide lines: the depth buffer hides their inner parts, leaving a thick
-  // outline at the silhouette and thinner lines along creases.
-  glEnable(GL_CULL_FACE);
-  glCullFace(GL_FRONT);
+  // Back faces' edges as wide lines (comic/outline.vert): the depth buffer hides their inner
+  // parts, leaving a thick outline at the silhouette and thinner lines along creases.
+  glDisable(GL_CULL_FACE);
   glDepthFunc(GL_LEQUAL);
-  glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-  glLineWidth(outline_width_);
   begin_smooth_lines();
   backface_outline_.use();
   backface_outline_.set("model_view_projection", frame.model_view_projection());
+  backface_outline_.set("eye_object", view_.eye);
   backface_outline_.set("coloured", int(coloured_outline_));
   backface_outline_.set("darkening", outline_darkening_);
   backface_outline_.set("ink", ink_);
-  mesh_->bind();
-  mesh_->draw_all();
-  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-  glLineWidth(1.0f);
+  set_wide_line_uniforms(backface_outline_, outline_width_);
+  backface_vao_.bind();
+  glDrawArrays(GL_TRIANGLES, 0, GLsizei(backface_edge_vertices_));
   end_smooth_lines();
-  glCullFace(GL_BACK);
   glDepthFunc(GL_LESS);
 }
 
@@ -285,13 +303,15 @@ void ComicRenderer::draw_edge_outline(const FrameState& frame) {
     for (size_t i = 0; i + 1 < kept_.size(); ++i) {
       const uint32_t face = outline_faces_[chain.edges[kept_[i]]];
       const glm::vec3 c = coloured_outline_ ? glm::vec3(face_colours[face]) * (1.0f - outline_darkening_) : ink_;
-      line_vertices_[chain.group].push_back({mesh.positions[chain.vertices[kept_[i]]], c});
-      line_vertices_[chain.group].push_back({mesh.positions[chain.vertices[kept_[i + 1]]], c});
+      const glm::vec3 a = mesh.positions[chain.vertices[kept_[i]]], b = mesh.positions[chain.vertices[kept_[i + 1]]];
+      append_wide_line_corners(line_vertices_[chain.group], [&](bool at_a, float corner) {
+        return LineVertex{{at_a ? a : b, at_a ? b : a, corner, 1.0f}, c};
+      });
     }
   }
   const size_t silhouette = line_vertices_[0].size();
   line_vertices_[0].insert(line_vertices_[0].end(), line_vertices_[1].begin(), line_vertices_[1].end());
-  segments_drawn_ = line_vertices_[0].size() / 2;
+  segments_drawn_ = line_vertices_[0].size() / 6;
   edge_vertices_.upload(line_vertices_[0].size() * sizeof(LineVertex), line_vertices_[0].data());
 
   glDisable(GL_CULL_FACE);
@@ -301,11 +321,10 @@ void ComicRenderer::draw_edge_outline(const FrameState& frame) {
   edge_outline_.set("model_view_projection", frame.model_view_projection());
   edge_vao_.bind();
   begin_smooth_lines();
-  glLineWidth(outline_width_);
-  glDrawArrays(GL_LINES, 0, GLsizei(silhouette));
-  glLineWidth(std::max(1.0f, 0.5f * outline_width_));
-  glDrawArrays(GL_LINES, GLsizei(silhouette), GLsizei(line_vertices_[0].size() - silhouette));
-  glLineWidth(1.0f);
+  set_wide_line_uniforms(edge_outline_, outline_width_);
+  glDrawArrays(GL_TRIANGLES, 0, GLsizei(silhouette));
+  set_wide_line_uniforms(edge_outline_, std::max(1.0f, 0.5f * outline_width_));
+  glDrawArrays(GL_TRIANGLES, GLsizei(silhouette), GLsizei(line_vertices_[0].size() - silhouette));
   end_smooth_lines();
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_LESS);

@@ -14,6 +14,7 @@
 #include "client/render/comic/shade_maps.hpp"
 #include "client/render/gpu_mesh.hpp"
 #include "client/render/renderer.hpp"
+#include "client/render/wide_lines.hpp"
 #include "common/edge_chains.hpp"
 #include "common/lod.hpp"
 #include "common/orientation.hpp"
@@ -43,8 +44,9 @@ class ComicRenderer final : public Renderer {
   gl::Program backface_outline_, edge_outline_;
   const SceneObject* object_ = nullptr;
   std::unique_ptr<GpuMesh> mesh_;
-  gl::Buffer dynamic_elements_, edge_vertices_;
-  gl::VertexArray dynamic_vao_, edge_vao_;
+  gl::Buffer dynamic_elements_, edge_vertices_, backface_edges_;
+  gl::VertexArray dynamic_vao_, edge_vao_, backface_vao_;
+  size_t backface_edge_vertices_ = 0;
   std::optional<gl::Texture> shade_texture_;
   ShadeMap shade_map_;
   VertexMargins vertex_margins_;
@@ -66,8 +68,14 @@ class ComicRenderer final : public Renderer {
     uint32_t first_triangle, triangles;
   };
   std::vector<Range> picked_ranges_;  // per GpuMesh batch
-  struct LineVertex {
-    glm::vec3 position, colour;
+  struct LineVertex {  // a corner of a wide line (attributes 0-3) and its colour (4)
+    WideLineVertex line;
+    glm::vec3 colour;
+  };
+  struct BackfaceEdgeVertex {  // a corner of a wide line and the two faces beside its edge
+    WideLineVertex line;
+    glm::vec3 normal_a, normal_b;
+    glm::vec4 colour_a, colour_b;
   };
   std::vector<LineVertex> line_vertices_[2];  // silhouettes (full width), creases (half)
   std::vector<ChainEdge> outline_edges_;

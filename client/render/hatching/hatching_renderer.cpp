@@ -176,7 +176,6 @@ void HatchingRenderer::draw(const FrameState& frame) {
   p.set("model_view_projection", mvp);
   p.set("light_object", frame.light_in_object_space());
   p.set("screen_to_tile", glm::mat2(c, s, -s, c));
-  p.set("viewport", glm::vec2(frame.viewport));
   p.set("strength", strength_);
   p.set("tones", 0);
   tones_->bind(0);

@@ -271,7 +271,7 @@ void BrushPainter::paint(const Image& reference, PixelRect rect, bool underpaint
     const float across = side_ / std::sqrt(std::max(style_.aspect, 1.0f));
     shapes_.sample_level(int(std::floor(std::log2(float(kBrushTextureSize) / std::max(across, 1.0f)))));
     brush_vao_.bind();
-    glDrawArraysInstancedBaseInstance(GL_TRIANGLE_STRIP, 0, 4, GLsizei(instances_.size()), 0);
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(instances_.size()));
   }
   glBindVertexArray(0);
   glDisable(GL_STENCIL_TEST);

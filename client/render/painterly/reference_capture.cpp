@@ -54,7 +54,7 @@ const Image& ReferenceCapture::capture(const FrameState& frame) {
   glEnable(GL_SCISSOR_TEST);
   glScissor(rect_.x, rect_.y, rect_.width, rect_.height);
   glClearColor(0, 0, 0, 0);
-  glClearDepth(1.0);
+  glClearDepthf(1.0f);
   glClearStencil(0);
   glDepthMask(GL_TRUE);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

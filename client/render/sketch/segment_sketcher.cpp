@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "client/render/wide_lines.hpp"
 #include "common/error.hpp"
 
 namespace inkwire {
@@ -64,7 +65,7 @@ UnitLines make_unit_lines(float diagonal, const PerturbOptions& o, int lines, ui
   return u;
 }
 
-SegmentSketcher::SegmentSketcher() : program_(Program::from_files({"sketch/segments.vert", "sketch/strokes.frag"})) {}
+SegmentSketcher::SegmentSketcher() : program_(Program::from_files({"sketch/segments.vert", "sketch/strokes.frag"}, {"WIDE_LINE"})) {}
 
 std::vector<ParamSpec> SegmentSketcher::params() {
   std::vector<ParamSpec> specs = SketchEdgeSource::params(false);
@@ -86,10 +87,12 @@ void SegmentSketcher::prepare(const SceneObject& object) {
   if (new_object || !mesh_) mesh_ = std::make_unique<GpuMesh>(object);
   const float diagonal = object.topology.bounds.diagonal();
   unit_lines_ = make_unit_lines(diagonal, ink_.perturb_for(diagonal));
-  unit_buffer_ = Buffer::create(unit_lines_.data);
+  std::vector<glm::vec4> unit_points;
+  for (const glm::vec2& p : unit_lines_.data) unit_points.emplace_back(p, 0.0f, 0.0f);
+  unit_texture_ = Texture::data_rows(unit_points);
   by_bin_.assign(unit_lines_.points.size(), {});
-  edge_buffer_ = Buffer::create(0, nullptr, GL_STREAM_DRAW);
-  vao_ = VertexArray::create();  // no attributes: the shader pulls everything from buffers
+  edge_texture_ = Texture::data_rows({});
+  vao_ = VertexArray::create();  // no attributes: the shader pulls everything from textures
 }
 
 void SegmentSketcher::draw(const FrameState& frame) {
@@ -111,10 +114,10 @@ void SegmentSketcher::draw(const FrameState& frame) {
   packed_.clear();
   std::vector<size_t> base(by_bin_.size());
   for (size_t bin = 0; bin < by_bin_.size(); ++bin) {
-    base[bin] = packed_.size();
-    packed_.insert(packed_.end(), by_bin_[bin].begin(), by_bin_[bin].end());
+    base[bin] = packed_.size() / 3;
+    for (const EdgeTransform& e : by_bin_[bin]) packed_.insert(packed_.end(), {e.start_and_opacity, e.end_and_line, e.side});
   }
-  edge_buffer_.upload(packed_.size() * sizeof(EdgeTransform), packed_.data());
+  edge_texture_.update_rows(packed_);
 
   const glm::mat4 mvp = frame.model_view_projection();
   hlr_.lay_depth(*mesh_, frame);
@@ -123,9 +126,11 @@ void SegmentSketcher::draw(const FrameState& frame) {
   program_.set("model_view_projection", mvp);
   program_.set("depth_bias", depth_bias_);
   program_.set("ink", ink_.ink);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, unit_buffer_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, edge_buffer_.id());
-  glLineWidth(ink_.line_width);
+  set_wide_line_uniforms(program_, ink_.line_width);
+  program_.set("unit_points", 0);
+  program_.set("edges", 1);
+  unit_texture_.bind(0);
+  edge_texture_.bind(1);
   vao_.bind();
   for (size_t bin = 0; bin < by_bin_.size(); ++bin) {
     if (by_bin_[bin].empty()) continue;
@@ -133,9 +138,8 @@ void SegmentSketcher::draw(const FrameState& frame) {
     program_.set("points_per_line", points);
     program_.set("first_point", unit_lines_.first[bin]);
     program_.set("first_edge", int(base[bin]));
-    glDrawArrays(GL_LINES, 0, GLsizei(2 * (points - 1) * by_bin_[bin].size()));
+    glDrawArrays(GL_TRIANGLES, 0, GLsizei(6 * (points - 1) * by_bin_[bin].size()));
   }
-  glLineWidth(1.0f);
   HiddenLineRemoval::end_lines();
 }
 

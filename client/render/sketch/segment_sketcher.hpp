@@ -48,14 +48,14 @@ class SegmentSketcher final : public Renderer {
   const SceneObject* object_ = nullptr;
   std::unique_ptr<GpuMesh> mesh_;
   UnitLines unit_lines_;
-  gl::Buffer unit_buffer_, edge_buffer_;
+  gl::Texture unit_texture_, edge_texture_;  // read by segments.vert (common/data_texture.glsl)
   gl::VertexArray vao_;
 
-  struct EdgeTransform {  // std430 layout of segments.vert's Edge
+  struct EdgeTransform {  // three texels of segments.vert's edges
     glm::vec4 start_and_opacity, end_and_line, side;
   };
   std::vector<std::vector<EdgeTransform>> by_bin_;
-  std::vector<EdgeTransform> packed_;
+  std::vector<glm::vec4> packed_;
 
   InkLineStyle ink_;
   float depth_bias_ = 0.002f;

@@ -174,7 +174,7 @@ void ImageWarper::render(int mesh, const glm::vec3& position_weights, std::span<
   glDisable(GL_SCISSOR_TEST);
   glDepthMask(GL_TRUE);
   glClearColor(0, 0, 0, 0);
-  glClearDepth(1.0);
+  glClearDepthf(1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   // Pixels (y down) to clip space, the image's top row at the top.
   blend(mesh, position_weights, sources, {2.0f / float(width_), -2.0f / float(height_), -1.0f, 1.0f});
@@ -202,7 +202,7 @@ void ImageWarper::begin(OverlapMode overlap) {
   glDisable(GL_CULL_FACE);  // folded triangles face away and still carry colour
   glDepthMask(GL_TRUE);
   glClearColor(0, 0, 0, 0);
-  glClearDepth(1.0);
+  glClearDepthf(1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);

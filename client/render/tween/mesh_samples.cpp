@@ -38,7 +38,7 @@ glm::mat4 view_projection(const Camera& c) { return c.projection(1.0f) * c.view(
 Image draw_into(Renderer& renderer, Canvas& canvas, const Camera& camera) {
   canvas.bind();
   glClearColor(0, 0, 0, 0);
-  glClearDepth(1.0);
+  glClearDepthf(1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
   FrameState frame;
   frame.camera = camera;

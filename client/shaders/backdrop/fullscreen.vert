@@ -1,4 +1,3 @@
-#version 450 core
 // One triangle covering the whole viewport; no vertex buffer needed.
 void main() {
   vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);

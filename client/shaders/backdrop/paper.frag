@@ -1,4 +1,3 @@
-#version 450 core
 // Paper at one texel per pixel, repeating: the grain keeps its scale at any window size.
 uniform sampler2D paper;
 uniform vec2 paper_size;

@@ -1,4 +1,3 @@
-#version 450 core
 // The triangle's flat base colour (C7), times the base texture (C9) where TEXTURED, shaded by
 // the map.
 in vec2 shade_coord;

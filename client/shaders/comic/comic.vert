@@ -1,4 +1,3 @@
-#version 450 core
 // Comic shading (SPEC C1, C3): per-vertex lighting terms become shade-map coordinates, and it
 // is the coordinates, not colours, that are interpolated across each triangle, so band
 // boundaries run smoothly through triangles.

@@ -1,4 +1,5 @@
-#version 450 core
+// An outline line in its colour, faded at its edges by coverage.
 flat in vec3 edge_colour;
 out vec4 colour;
-void main() { colour = vec4(edge_colour, 1.0); }
+#include "common/wide_line_coverage.glsl"
+void main() { colour = vec4(edge_colour, wide_line_coverage()); }

@@ -1,4 +1,3 @@
-#version 450 core
 // Depth-only pass: positions alone (hidden-line removal, masks).
 layout(location = 0) in vec3 position;
 uniform mat4 model_view_projection;

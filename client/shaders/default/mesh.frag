@@ -1,4 +1,3 @@
-#version 450 core
 // Smooth shading, times the base texture where TEXTURED.
 in vec4 shaded;
 in vec2 texcoord;

@@ -1,4 +1,3 @@
-#version 450 core
 // Default renderer (SPEC G5): one directional light, Gouraud (per-vertex) smooth shading as
 // in fixed-function GL, the speed reference every other renderer is measured against.
 layout(location = 0) in vec3 position;

@@ -1,9 +1,8 @@
-#version 450 core
 // Screen-space hatching: strokes fixed to the screen tile, rotated and scaled; the tone of the
 // surface (shade lookup by N.L) picks how many strokes show. One of VOLUME, THRESHOLD or
 // neither (one layer per pass) is defined; with UNDER_PAPER or UNDER_COLOUR the surface is
 // drawn opaque, the backdrop under its ink, instead of as ink blended over the framebuffer.
-noperspective in vec2 tile;
+uniform mat2 screen_to_tile;  // rotation and repeat scale
 uniform float strength;
 #if defined(THRESHOLD)
 // A texel's ink as two steps: N.L, strength, N.L, strength (N.L in 0..1 for -1..1). A step is
@@ -32,6 +31,8 @@ uniform vec4 under_colour;
 #endif
 out vec4 colour;
 void main() {
+  // The strokes lie on the screen: the tile is an affine map of the pixel's window position.
+  vec2 tile = screen_to_tile * gl_FragCoord.xy;
 #if defined(THRESHOLD)
   // The thresholds were turned from tones into N.L through the shade lookup's inverse when the
   // image was made: a texel's ink shows where the surface is darker than its N.L.

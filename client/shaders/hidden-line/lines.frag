@@ -1,4 +1,3 @@
-#version 450 core
 uniform vec4 line_colour;
 out vec4 colour;
 #include "common/wide_line_coverage.glsl"

@@ -1,4 +1,3 @@
-#version 450 core
 // The visible edges as wide lines (common/wide_line.glsl): each vertex one corner of a segment.
 layout(location = 0) in vec3 position;  // this corner's end
 layout(location = 1) in vec3 other;     // the segment's other end

@@ -1,4 +1,3 @@
-#version 450 core
 // The brush texture shades the paint (bristle streaks) and says where paint lies. The medium
 // (wash_map.hpp) says how far paint may cross the outline and where wet pigment gathers; with
 // SOFT_EDGES its red channel fades the paint across the outline (otherwise the stencil, the

@@ -1,4 +1,3 @@
-#version 450 core
 // One brush per instance: a quad turned to the brush's angle, as long as the stroke texture.
 layout(location = 0) in vec2 centre;     // window pixels
 layout(location = 1) in vec2 half_size;  // half length (along the stroke), half width

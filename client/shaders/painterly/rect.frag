@@ -1,4 +1,3 @@
-#version 450 core
 // An image laid over the capture rectangle: the brushes' base coat (premultiplied coarse colours,
 // blurred by linear filtering) or the oil filter's output inside the object's matte, or a
 // painting's glow (premultiplied, added, no matte: light spills over the backdrop).

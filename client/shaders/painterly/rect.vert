@@ -1,4 +1,3 @@
-#version 450 core
 // A quad over the capture rectangle (no vertex buffer: corners from gl_VertexID).
 uniform vec4 viewport;  // x, y, width, height of the target
 uniform vec4 rect;      // x, y, width, height in window pixels

@@ -1,4 +1,3 @@
-#version 450 core
 // Charcoal rubbed along the outline on the shadow side: strongest at the outline, fading over
 // the surface's turn toward the eye; only where the light does not reach; broken a little by
 // the paper's tooth, less than a stroke (rubbing pushes pigment into the valleys).

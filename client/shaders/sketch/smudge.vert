@@ -1,4 +1,3 @@
-#version 450 core
 // The smudge tone (charcoal): the surface itself, to find where it turns away from the eye
 // (near the outline) and from the light (its dark side). Both per pixel: across a coarse
 // mesh's last ring of triangles the surface turns from half-facing to edge-on.

@@ -1,4 +1,3 @@
-#version 450 core
 // Ink of the sketched lines; with WIDE_LINE (strokes.vert) faded at the edges by coverage.
 in float stroke_opacity;
 uniform vec4 ink;

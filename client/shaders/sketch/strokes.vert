@@ -1,4 +1,3 @@
-#version 450 core
 // Sketched lines: the CPU's perturbed strokes as wide lines (common/wide_line.glsl), with
 // per-vertex opacity (fading, repetition). Pulled a little toward the viewer so strokes that
 // wander across their own surface are not cut by it; the hidden-line depth pass still hides the

@@ -1,4 +1,3 @@
-#version 450 core
 in vec3 coord;
 in float stroke_opacity;
 in float along;

@@ -1,4 +1,3 @@
-#version 450 core
 // Textured strokes (S5): quads built on the CPU, widened across the edge and the view.
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 stroke_coord;  // u along (repeats), v across, texture variant

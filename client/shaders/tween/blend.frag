@@ -1,4 +1,3 @@
-#version 450 core
 // The weighted sum of the samples' (premultiplied) colours, each read at its own position.
 //
 // With MATTE (SPEC T14) the samples are matte textures (make_matte_texture): colour bled past
@@ -21,12 +20,22 @@ uniform vec3 weights;
 out vec4 colour;
 const float INSIDE_SAY = 2.0;
 const float FLOOR_NOISE = 0.03;
+// Sample k's texel at its position: GLSL 3.30 and ES 3.00 index sampler arrays only by constants.
+vec4 sample_texel(int k) {
+#if SAMPLES > 2
+  if (k == 2) return texture(samples[2], uv[2]);
+#endif
+#if SAMPLES > 1
+  if (k == 1) return texture(samples[1], uv[1]);
+#endif
+  return texture(samples[0], uv[0]);
+}
 void main() {
 #ifdef MATTE
   float distance = 0.0, total = 0.0, floor_total = 0.0;
   vec3 rgb = vec3(0.0), floor_rgb = vec3(0.0);
   for (int k = 0; k < SAMPLES; ++k) {
-    vec4 texel = texture(samples[k], uv[k]);
+    vec4 texel = sample_texel(k);
     float d = (texel.a - 0.5) * (2.0 * MATTE_RANGE);
     distance += weights[k] * min(d, INSIDE_SAY);
     // A sample that sees background here lends its (bled) colour only where no other sees object.
@@ -48,6 +57,6 @@ void main() {
   colour = vec4(rgb / max(total, 1e-6) * coverage, coverage) + (1.0 - coverage) * kept * vec4(on_white - vec3(1.0 - floor_alpha), floor_alpha);
 #else
   colour = vec4(0.0);
-  for (int k = 0; k < SAMPLES; ++k) colour += weights[k] * texture(samples[k], uv[k]);
+  for (int k = 0; k < SAMPLES; ++k) colour += weights[k] * sample_texel(k);
 #endif
 }

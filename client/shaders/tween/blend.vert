@@ -1,4 +1,3 @@
-#version 450 core
 // A view between samples in one pass (SPEC T3/T4): the control-point mesh drawn at the view's
 // positions, each vertex also carrying where it lies in every contributing sample, so the
 // fragment reads all of them at once instead of one pass per sample. Positions are image

@@ -1,4 +1,3 @@
-#version 450 core
 // Premultiplied colour, blended "over" whatever the target holds (backdrop, other objects).
 in vec2 uv;
 uniform sampler2D view_image;

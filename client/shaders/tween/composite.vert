@@ -1,4 +1,3 @@
-#version 450 core
 // The synthesised view laid over a rectangle of the target (no vertex buffer: corners from
 // gl_VertexID).
 uniform vec4 viewport;  // x, y, width, height of the target

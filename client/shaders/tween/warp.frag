@@ -1,4 +1,3 @@
-#version 450 core
 // One pass's share of the synthesised view: the (premultiplied) sample colour times the
 // sample's weight, summed over passes by additive blending.
 in vec2 uv;

@@ -1,4 +1,3 @@
-#version 450 core
 // A control-point mesh drawn at a view between samples (SPEC T3/T4): each vertex sits at a
 // weighted sum of its positions in the cell's samples (a pair's path weights or a triangle's
 // barycentric weights) and reads the bound sample image at its position in that sample.
