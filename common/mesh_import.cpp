@@ -20,6 +20,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "common/error.hpp"
+#include "common/mesh_welder.hpp"
 
 namespace inkwire {
 namespace {
@@ -31,18 +32,6 @@ glm::mat4 to_glm(const aiMatrix4x4& m) {
   // assimp is row-major, glm column-major.
   return glm::mat4(m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3, m.a4, m.b4, m.c4, m.d4);
 }
-
-struct PositionKey {
-  float x, y, z;
-  bool operator==(const PositionKey& o) const { return std::memcmp(this, &o, sizeof(*this)) == 0; }
-};
-struct PositionHash {
-  size_t operator()(const PositionKey& k) const {
-    uint32_t b[3];
-    std::memcpy(b, &k, sizeof(b));
-    return (size_t(b[0]) * 73856093u) ^ (size_t(b[1]) * 19349663u) ^ (size_t(b[2]) * 83492791u);
-  }
-};
 
 std::string lower_case(std::string text) {
   std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
@@ -99,12 +88,7 @@ class MeshBuilder {
     }
   }
 
-  Mesh take() {
-    if (!any_colour_) mesh_.colours.clear();
-    if (!any_uv_) mesh_.corner_uvs.clear();
-    if (mesh_.materials.size() <= 1) mesh_.triangle_material.clear();
-    return std::move(mesh_);
-  }
+  Mesh take() { return welder_.take(); }
 
  private:
   void read_materials() {
@@ -120,9 +104,9 @@ class MeshBuilder {
       if (src->GetTexture(aiTextureType_BASE_COLOR, 0, &tex) == AI_SUCCESS ||
           src->GetTexture(aiTextureType_DIFFUSE, 0, &tex) == AI_SUCCESS)
         attach_texture(mat, tex.C_Str());
-      mesh_.materials.push_back(std::move(mat));
+      welder_.materials().push_back(std::move(mat));
     }
-    if (mesh_.materials.empty()) mesh_.materials.emplace_back();
+    if (welder_.materials().empty()) welder_.materials().emplace_back();
   }
 
   void attach_texture(Material& mat, const std::string& ref) {
@@ -136,29 +120,18 @@ class MeshBuilder {
     if (const std::optional<std::filesystem::path> found = find_texture_file(file_, ref)) mat.texture_file = *found;
   }
 
-  uint32_t weld(const glm::vec3& p) {
-    const PositionKey key{p.x + 0.0f, p.y + 0.0f, p.z + 0.0f};  // +0 folds -0 into 0
-    auto [it, inserted] = index_of_.try_emplace(key, uint32_t(mesh_.positions.size()));
-    if (inserted) {
-      mesh_.positions.push_back(p);
-      mesh_.colours.emplace_back(1.0f);
-    }
-    return it->second;
-  }
-
   void add_mesh(const aiMesh& src, const glm::mat4& transform) {
     report_.source_vertices += src.mNumVertices;
     if (!src.mVertices && src.mNumVertices > 0) throw Error("mesh '" + std::string(src.mName.C_Str()) + "' has no positions");
-    if (src.mMaterialIndex >= mesh_.materials.size()) throw Error("mesh refers to a material that does not exist");
+    if (src.mMaterialIndex >= welder_.materials().size()) throw Error("mesh refers to a material that does not exist");
     std::vector<uint32_t> welded(src.mNumVertices);
     for (unsigned v = 0; v < src.mNumVertices; ++v) {
       const aiVector3D& a = src.mVertices[v];
       const glm::vec3 p = glm::vec3(transform * glm::vec4(a.x, a.y, a.z, 1.0f));
-      welded[v] = weld(p);
+      welded[v] = welder_.weld(p);
       if (src.mColors[0]) {
         const aiColor4D& c = src.mColors[0][v];
-        mesh_.colours[welded[v]] = {c.r, c.g, c.b, c.a};
-        any_colour_ = true;
+        welder_.set_colour(welded[v], {c.r, c.g, c.b, c.a});
       }
     }
     const bool has_uv = src.mTextureCoords[0] != nullptr;
@@ -178,21 +151,15 @@ class MeshBuilder {
         tri[c] = welded[i];
         if (has_uv) uv[c] = {src.mTextureCoords[0][i].x, src.mTextureCoords[0][i].y};
       }
-      mesh_.triangles.push_back(tri);
-      mesh_.corner_uvs.push_back(uv);
-      mesh_.triangle_material.push_back(src.mMaterialIndex);
-      any_uv_ = any_uv_ || has_uv;
+      welder_.add_triangle(tri, uv, has_uv, src.mMaterialIndex);
     }
   }
 
   const aiScene& scene_;
   std::filesystem::path file_;
   ImportReport& report_;
-  Mesh mesh_;
-  std::unordered_map<PositionKey, uint32_t, PositionHash> index_of_;
+  MeshWelder welder_;
   std::unordered_set<const aiNode*> visited_;
-  bool any_colour_ = false;
-  bool any_uv_ = false;
 };
 
 // Formats that declare their element counts up front (OFF, PLY) can make assimp reserve or

@@ -12,6 +12,7 @@
 #include <assimp/Exporter.hpp>
 #include <assimp/Importer.hpp>
 #include <assimp/material.h>
+#include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
 #include <nlohmann/json.hpp>
@@ -161,6 +162,12 @@ std::vector<uint8_t> with_material_colours(const std::vector<uint8_t>& glb, cons
   return out;
 }
 
+bool is_glb(const fs::path& file) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext == ".glb";
+}
+
 }  // namespace
 
 std::optional<SelfContainedModel> self_contained_model(const fs::path& file, UpAxis up) {
@@ -170,7 +177,9 @@ std::optional<SelfContainedModel> self_contained_model(const fs::path& file, UpA
   Assimp::Importer importer;
   auto* io = new RecordingIOSystem;  // the importer owns it
   importer.SetIOHandler(io);
-  if (!importer.ReadFile(file.string(), 0)) throw Error(file.string() + ": " + importer.GetErrorString());
+  // Vertices equal in every attribute become one, so a format of shared vertices (OFF, PLY) keeps
+  // its size as indexed triangles.
+  if (!importer.ReadFile(file.string(), aiProcess_JoinIdenticalVertices)) throw Error(file.string() + ": " + importer.GetErrorString());
   std::unique_ptr<aiScene> scene(importer.GetOrphanedScene());
   std::vector<fs::path> gathered;
   const fs::path self = fs::weakly_canonical(file);
@@ -179,8 +188,10 @@ std::optional<SelfContainedModel> self_contained_model(const fs::path& file, UpA
   const std::vector<fs::path> textures = embed_textures(*scene, file);
   gathered.insert(gathered.end(), textures.begin(), textures.end());
   // A reader of the file finds its own up axis; a model told otherwise is turned upright here,
-  // so the GLB (Y-up by definition) needs no telling.
-  if (gathered.empty() && up == own) return std::nullopt;
+  // so the GLB (Y-up by definition) needs no telling. A GLB whole and upright already travels as
+  // it is; every other model becomes one, so every client reads one format (the browser's module
+  // reads GLB alone, common/glb_mesh.hpp).
+  if (gathered.empty() && up == own && is_glb(file)) return std::nullopt;
   const glm::mat4 turn = upright_transform(file, up);
   aiMatrix4x4 upright;
   for (int row = 0; row < 4; ++row)

@@ -18,8 +18,9 @@ struct SelfContainedModel {
   std::vector<std::filesystem::path> gathered;  // the files folded into it besides the model itself
 };
 
-// None when `file` refers to no other file (an OFF, a PLY, a GLB with its textures inside) and
-// any reader finds `up` by itself: it already travels whole. Otherwise a GLB turned Y-up.
+// None when `file` is a GLB that refers to no other file and whose up axis any reader finds by
+// itself: it already travels whole. Otherwise a GLB turned Y-up (an OFF or PLY too, so every
+// client, the browser's included, reads one format).
 // Throws inkwire::Error with the path when the model cannot be read, a file it refers to is
 // missing, or no GLB can be written from it.
 std::optional<SelfContainedModel> self_contained_model(const std::filesystem::path& file, UpAxis up = UpAxis::Auto);

@@ -10,7 +10,7 @@ cd "$here"
 seconds=${1:-600}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_frames fuzz_message fuzz_tween fuzz_landmarks fuzz_http fuzz_websocket fuzz_config fuzz_broker fuzz_voice)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_frames fuzz_message fuzz_tween fuzz_landmarks fuzz_http fuzz_websocket fuzz_config fuzz_broker fuzz_voice fuzz_glb)
 
 if [ "${FUZZ_TABLE_ONLY:-0}" != 1 ]; then
 for p in clang libclang-rt-14-dev; do
@@ -48,6 +48,13 @@ for t in ("voice-frame", "member-face", "roster"):
     open(f"fuzz-corpus/fuzz_broker/call-{t}", "wb").write(b"\x02" + b"M3:one4:call" + frames[t])
 open("fuzz-corpus/fuzz_broker/call-photo", "wb").write(b"\x02" + b"P3:one4:call3 4:\xff\xd8\xff\xe02:{}")
 PY
+fi
+
+# Real GLBs: a textured box and a model of many parts (assimp-testmodels).
+if [ -d fuzz-corpus/fuzz_glb ]; then
+  for f in /usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb /usr/share/assimp/models/glTF2/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb; do
+    [ -f "$f" ] && cp "$f" fuzz-corpus/fuzz_glb/
+  done
 fi
 
 run() {
