@@ -43,6 +43,24 @@ Camera scene_orbit_camera(float azimuth_degrees, float elevation_degrees, float 
   return orbit_camera(Bounds{glm::vec3(-h), glm::vec3(h)}, azimuth_degrees, elevation_degrees, distance_diagonals);
 }
 
+SceneOrbit scene_orbit_of(const glm::vec3& position, const glm::vec3& target) {
+  const glm::vec3 d = position - target;
+  return {glm::degrees(std::atan2(d.x, d.z)), glm::degrees(std::asin(std::clamp(d.y / std::max(glm::length(d), 1e-6f), -1.0f, 1.0f))),
+          glm::length(d) / kSceneDiagonal};
+}
+
+Camera scene_camera(const glm::vec3& position, const glm::vec3& target, const glm::vec3& up, float fov_y_degrees) {
+  Camera c;
+  c.position = position;
+  c.target = target;
+  c.up = up;
+  c.fov_y_degrees = fov_y_degrees;
+  const float distance = glm::length(position);
+  c.near_plane = std::max(distance - kSceneDiagonal, std::max(distance * 0.02f, 0.01f));
+  c.far_plane = distance + kSceneDiagonal;
+  return c;
+}
+
 glm::vec3 default_light_direction(const Camera& camera) {
   const glm::mat4 view_to_world = glm::inverse(camera.view());
   return glm::normalize(glm::vec3(view_to_world * glm::vec4(-0.4f, 0.6f, 0.7f, 0.0f)));

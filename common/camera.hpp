@@ -36,6 +36,17 @@ inline constexpr float kSceneDiagonal = 10.0f;
 // orbit_camera() around the centre of the scene space.
 Camera scene_orbit_camera(float azimuth_degrees, float elevation_degrees, float distance_diagonals);
 
+// The orbit angles (degrees) and distance (in kSceneDiagonal) of a camera at `position` looking at
+// `target`: what scene_orbit_camera() makes, turned back.
+struct SceneOrbit {
+  float azimuth, elevation, distance;
+};
+SceneOrbit scene_orbit_of(const glm::vec3& position, const glm::vec3& target);
+
+// The camera of a session's pose (position, target, up, vertical field of view) in the scene
+// space: near and far planes hug an object of kSceneDiagonal at the origin.
+Camera scene_camera(const glm::vec3& position, const glm::vec3& target, const glm::vec3& up, float fov_y_degrees);
+
 // A directional light for a camera: from above-left of the viewer, as a unit vector pointing
 // from the surface toward the light, in world space.
 glm::vec3 default_light_direction(const Camera& camera);

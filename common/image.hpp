@@ -1,6 +1,7 @@
 #pragma once
 // 8-bit RGBA images, rows top-down (the way files and people see them), read and written
-// through OpenImageIO.
+// through OpenImageIO and OpenCV (common/image_io.cpp); the WebAssembly build reads them with
+// stb_image (common/image_io_web.cpp) and writes none.
 #include <cstdint>
 #include <filesystem>
 #include <span>

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <type_traits>
 
 #include "common/error.hpp"
 
@@ -12,9 +15,22 @@ namespace {
 
 template <typename T>
 bool parse_number(const std::string& text, T& out) {
-  const char* end = text.data() + text.size();
-  auto [ptr, ec] = std::from_chars(text.data(), end, out);
-  return ec == std::errc() && ptr == end;
+  if constexpr (std::is_floating_point_v<T>) {
+    // The WebAssembly build's C++ library (libc++ 14) has no from_chars for floating point:
+    // strtod, held to what from_chars takes (a digit, '-' or '.' first, no hex) and finite.
+    if (text.empty() || !(std::isdigit(static_cast<unsigned char>(text[0])) || text[0] == '-' || text[0] == '.') ||
+        text.find_first_of("xXpP") != std::string::npos)
+      return false;
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (end != text.c_str() + text.size() || !std::isfinite(value)) return false;
+    out = T(value);
+    return true;
+  } else {
+    const char* end = text.data() + text.size();
+    auto [ptr, ec] = std::from_chars(text.data(), end, out);
+    return ec == std::errc() && ptr == end;
+  }
 }
 
 bool parse_bool(const std::string& text, bool& out) {

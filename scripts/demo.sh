@@ -212,6 +212,9 @@ say "the product and conference pages in headless Chromium (web/)"
 # A customer's browser: the session index, the duck's product page, a drag of the element, and
 # the conference's page.
 /usr/bin/python3 "$here/scripts/web_demo.py" "$http_port" duck conference "$out/web"
+say "the shared scene's page in headless Chromium while native clients change its style (web/scene.mp4)"
+# The same C++ renderers compiled to WebAssembly draw the scene in the page.
+/usr/bin/python3 "$here/scripts/web_scene_demo.py" "$http_port" "$port" demo "$bin" "$out/web"
 # The conference: the server analyses the speaker and sends codes only; the listener deforms the
 # neutral photo (fetched once) by them. Then one member asks for paint, and the face is painted.
 "${client[@]}" --session conference --name listener --frames 120 --fps 15 --size 360x480 \

@@ -26,15 +26,30 @@ Buffer Buffer::create(size_t bytes, const void* data, GLenum usage) {
   return b;
 }
 
+Buffer Buffer::create_indices(size_t bytes, const void* data, GLenum usage) {
+  GLuint id = 0;
+  glGenBuffers(1, &id);
+  Buffer b(id);
+  b.target_ = GL_ELEMENT_ARRAY_BUFFER;
+  b.upload(bytes, data, usage);
+  return b;
+}
+
 void Buffer::upload(size_t bytes, const void* data, GLenum usage) {
-  glBindBuffer(GL_COPY_WRITE_BUFFER, id());
+  GLint vertex_array = 0;
+  if (target_ == GL_ELEMENT_ARRAY_BUFFER) {  // the element binding belongs to the bound vertex array
+    glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertex_array);
+    glBindVertexArray(0);
+  }
+  glBindBuffer(target_, id());
   if (bytes > capacity_ || capacity_ == 0) {
-    glBufferData(GL_COPY_WRITE_BUFFER, GLsizeiptr(std::max<size_t>(bytes, 1)), data, usage);
+    glBufferData(target_, GLsizeiptr(std::max<size_t>(bytes, 1)), data, usage);
     capacity_ = std::max<size_t>(bytes, 1);
   } else if (bytes > 0) {
-    glBufferSubData(GL_COPY_WRITE_BUFFER, 0, GLsizeiptr(bytes), data);
+    glBufferSubData(target_, 0, GLsizeiptr(bytes), data);
   }
-  glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+  glBindBuffer(target_, 0);
+  if (target_ == GL_ELEMENT_ARRAY_BUFFER) glBindVertexArray(GLuint(vertex_array));
 }
 
 VertexArray VertexArray::create() {

@@ -49,15 +49,22 @@ void delete_program(GLuint id);
 void delete_framebuffer(GLuint id);
 void delete_renderbuffer(GLuint id);
 
-// Data goes in through the GL_COPY_WRITE_BUFFER binding point, which no vertex array records:
-// uploading index data must never swap the element buffer of whatever vertex array is bound.
-// Where a buffer is used (vertex, element, storage) is decided when it is bound for drawing.
+// Vertex data goes in through the GL_COPY_WRITE_BUFFER binding point, which no vertex array
+// records. WebGL2 keeps index buffers apart from all others (a buffer once bound anywhere else
+// can never hold indices), so index buffers are made as such and filled through
+// GL_ELEMENT_ARRAY_BUFFER with no vertex array bound: uploading never swaps the element buffer
+// of whatever vertex array is bound.
 class Buffer : public Handle<delete_buffer> {
  public:
   static Buffer create(size_t bytes, const void* data, GLenum usage = GL_STATIC_DRAW);
   template <typename T>
   static Buffer create(const std::vector<T>& items, GLenum usage = GL_STATIC_DRAW) {
     return create(items.size() * sizeof(T), items.data(), usage);
+  }
+  // A buffer of indices (GL_ELEMENT_ARRAY_BUFFER when drawing).
+  static Buffer create_indices(size_t bytes, const void* data, GLenum usage = GL_STATIC_DRAW);
+  static Buffer create_indices(const std::vector<uint32_t>& indices, GLenum usage = GL_STATIC_DRAW) {
+    return create_indices(indices.size() * sizeof(uint32_t), indices.data(), usage);
   }
   // Replaces the contents, growing the store when needed (for per-frame streamed data).
   void upload(size_t bytes, const void* data, GLenum usage = GL_STREAM_DRAW);
@@ -66,6 +73,7 @@ class Buffer : public Handle<delete_buffer> {
  private:
   using Handle::Handle;
   size_t capacity_ = 0;
+  GLenum target_ = GL_COPY_WRITE_BUFFER;  // where it is filled
 };
 
 class VertexArray : public Handle<delete_vertex_array> {

@@ -78,7 +78,7 @@ GpuMesh::GpuMesh(const SceneObject& object) {
   total_indices_ = uint32_t(indices.size());
 
   vertices_ = Buffer::create(vertices);
-  indices_ = Buffer::create(indices);
+  indices_ = Buffer::create_indices(indices);
   vao_ = vertex_array_with(indices_);
   cpu_indices_ = std::move(indices);
 }

@@ -27,11 +27,13 @@ SceneObject make_scene_object(Mesh mesh) {
   return object;
 }
 
+#ifndef __EMSCRIPTEN__  // files through assimp: the browser's module reads GLB from memory (common/glb_mesh)
 SceneObject load_scene_object(const std::filesystem::path& file, size_t lod_faces, float diagonal, UpAxis up) {
   Mesh mesh = load_mesh(file, nullptr, up);
   if (lod_faces > 0) mesh = simplify_to_faces(mesh, lod_faces);
   normalise(mesh, diagonal);
   return make_scene_object(std::move(mesh));
 }
+#endif
 
 }  // namespace inkwire

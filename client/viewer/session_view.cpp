@@ -15,17 +15,7 @@ protocol::CameraPose camera_pose(const Camera& camera, uint32_t sequence) {
   return {.sequence = sequence, .position = camera.position, .target = camera.target, .up = camera.up, .fov_y_degrees = camera.fov_y_degrees};
 }
 
-Camera camera_from(const protocol::CameraPose& pose) {
-  Camera c;
-  c.position = pose.position;
-  c.target = pose.target;
-  c.up = pose.up;
-  c.fov_y_degrees = pose.fov_y_degrees;
-  const float distance = glm::length(pose.position);
-  c.near_plane = std::max(distance - kSceneDiagonal, std::max(distance * 0.02f, 0.01f));
-  c.far_plane = distance + kSceneDiagonal;
-  return c;
-}
+Camera camera_from(const protocol::CameraPose& pose) { return scene_camera(pose.position, pose.target, pose.up, pose.fov_y_degrees); }
 
 protocol::CameraPose orbit_pose(float azimuth_degrees, float elevation_degrees, float distance_diagonals, uint32_t sequence) {
   return camera_pose(scene_orbit_camera(azimuth_degrees, elevation_degrees, distance_diagonals), sequence);

@@ -14,10 +14,8 @@
 namespace inkwire {
 
 void Orbit::from(const protocol::CameraPose& pose) {
-  const glm::vec3 d = pose.position - pose.target;
-  distance = glm::length(d) / kSceneDiagonal;
-  elevation = glm::degrees(std::asin(std::clamp(d.y / std::max(glm::length(d), 1e-6f), -1.0f, 1.0f)));
-  azimuth = glm::degrees(std::atan2(d.x, d.z));
+  const SceneOrbit o = scene_orbit_of(pose.position, pose.target);
+  azimuth = o.azimuth, elevation = o.elevation, distance = o.distance;
 }
 
 void Inertia::follow(Orbit& orbit, double dt) {

@@ -2,7 +2,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
+#include <mutex>
+#include <optional>
 #include <sstream>
 #include <string_view>
 
@@ -32,6 +37,30 @@ std::string response(int status, const char* reason, const std::string& type, co
          std::to_string(body.size()) + "\r\nCache-Control: no-store\r\nConnection: close\r\n\r\n" + body;
 }
 
+// The browser's renderer (client/web/module), which the build leaves beside this binary in web/,
+// read once, plain and gzipped. Null when this build has none.
+struct ModuleFile {
+  std::string plain, gzipped;
+};
+const ModuleFile* module_file(const std::string& name) {
+  static std::mutex guard;
+  static std::map<std::string, std::optional<ModuleFile>> cache;
+  if (name != "inkwire-scene.js" && name != "inkwire-scene.wasm") return nullptr;
+  const std::lock_guard lock(guard);
+  auto [it, fresh] = cache.try_emplace(name);
+  if (fresh) {
+    std::error_code ec;
+    const std::filesystem::path dir = std::filesystem::read_symlink("/proc/self/exe", ec).parent_path() / "web";
+    const auto read = [](const std::filesystem::path& file) {
+      std::ifstream in(file, std::ios::binary);
+      return in ? std::optional<std::string>(std::string(std::istreambuf_iterator<char>(in), {})) : std::nullopt;
+    };
+    const std::optional<std::string> plain = read(dir / name), gzipped = read(dir / (name + ".gz"));
+    if (plain && gzipped) it->second = ModuleFile{*plain, *gzipped};
+  }
+  return it->second ? &*it->second : nullptr;
+}
+
 std::string html_escape(const std::string& s) {
   std::string out;
   for (char c : s) out += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : c == '"' ? "&quot;" : std::string(1, c);
@@ -40,6 +69,7 @@ std::string html_escape(const std::string& s) {
 
 std::string content_type(const std::string& path) {
   if (path.ends_with(".js")) return "text/javascript; charset=utf-8";
+  if (path.ends_with(".wasm")) return "application/wasm";
   if (path.ends_with(".json")) return "application/json";
   return "text/plain; charset=utf-8";  // shaders
 }
@@ -221,6 +251,29 @@ asio::awaitable<void> HttpServer::serve(ByteStream accepted) {
     co_await reply(response(200, "OK", content_type(path), std::string(file->second)));
     co_return;
   }
+  if (path.rfind("/module/", 0) == 0) {
+    const ModuleFile* file = module_file(path.substr(8));
+    if (!file) {
+      co_await reply(response(404, "Not Found", "text/plain", "no module file " + path.substr(8) + " (this server was built without the browser's renderer)\n"));
+      co_return;
+    }
+    // Sent compressed to browsers that take it (every one does): the size a page really loads.
+    const bool gzip = request.header("accept-encoding").find("gzip") != std::string::npos;
+    const std::string& body = gzip ? file->gzipped : file->plain;
+    co_await reply("HTTP/1.1 200 OK\r\nContent-Type: " + content_type(path) + (gzip ? "\r\nContent-Encoding: gzip" : "") +
+                   "\r\nContent-Length: " + std::to_string(body.size()) + "\r\nCache-Control: no-cache\r\nConnection: close\r\n\r\n" + body);
+    co_return;
+  }
+  if (path.rfind("/scene/", 0) == 0) {
+    const auto session = server_.find_session(path.substr(7));
+    if (!session || session->state().kind != protocol::SessionKind::Scene || !session->state().product.directions.empty()) {
+      co_await reply(response(404, "Not Found", "text/plain", "no scene " + path.substr(7) + "\n"));
+      co_return;
+    }
+    co_await reply(response(200, "OK", "text/html; charset=utf-8",
+                            element_page("inkwire-scene", session->name(), request.header("host"), "Put this scene on your page", server_.tls() != nullptr)));
+    co_return;
+  }
   if (path.rfind("/turntable/", 0) == 0) {
     const auto session = server_.find_session(path.substr(11));
     if (!session || session->state().product.directions.empty()) {
@@ -263,7 +316,7 @@ asio::awaitable<void> HttpServer::serve(ByteStream accepted) {
     for (const auto& [name, session] : server_.sessions()) {
       const bool product = !session->state().product.directions.empty();
       const bool conference = session->state().kind == protocol::SessionKind::Conference;
-      const std::string link = product ? "/turntable/" : conference ? "/conference/" : "";
+      const std::string link = product ? "/turntable/" : conference ? "/conference/" : "/scene/";
       body += "<li>" + (!link.empty() ? "<a href=\"" + link + html_escape(name) + "\">" + html_escape(name) + "</a>" : html_escape(name)) +
               (conference ? " (<a href=\"/call/" + html_escape(name) + "\">join the call</a>)" : "") +
               " (" + protocol::to_string(session->state().kind) + ", " + std::to_string(session->members()) + " members)</li>";

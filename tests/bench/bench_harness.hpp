@@ -86,6 +86,7 @@ std::vector<Result> run_face_suite(Harness& harness);
 std::vector<Result> run_tween_suite(Harness& harness);
 std::vector<Result> run_turntable_suite(Harness& harness);
 std::vector<Result> run_web_suite(Harness& harness);
+std::vector<Result> run_web_scene_suite(Harness& harness);
 std::vector<Result> run_landmarks_suite(Harness& harness);
 std::vector<Result> run_call_suite(Harness& harness);
 std::vector<Result> run_abuse_suite(Harness& harness);

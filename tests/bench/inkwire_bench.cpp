@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
   Options options;
   options.mesh = std::string(INKWIRE_MESH_DIR) + "/bull.off";
   CLI::App app{"inkwire-bench: speed and quality figures of every renderer, the network and the product turntable, as a table and as JSON"};
-  app.add_option("--suite", suite, "default|comic|sketch|hatching|antialiasing|painterly|tween|turntable|web|landmarks|face|net|call|abuse|crash|all");
+  app.add_option("--suite", suite, "default|comic|sketch|hatching|antialiasing|painterly|tween|turntable|web|web-scene|landmarks|face|net|call|abuse|crash|all");
   app.add_option("--frames", options.frames, "frames timed per measurement")->check(CLI::Range(1, 1000000));
   app.add_option("--mesh", options.mesh, "source mesh of the LOD series (default: bull.off from libcgal-demo)");
   app.add_option("--gl", options.gl, "off-screen GL backend: osmesa, egl (surfaceless) or auto");

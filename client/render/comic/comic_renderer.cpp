@@ -131,7 +131,7 @@ void ComicRenderer::prepare(const SceneObject& object) {
     level_face_colours_.emplace_back(level.face_count());
     for (size_t t = 0; t < level.face_count(); ++t) level_face_colours_.back()[t] = flat_colour(level, t);
   }
-  dynamic_elements_ = Buffer::create(mesh_->indices().size() * sizeof(uint32_t), nullptr, GL_STREAM_DRAW);
+  dynamic_elements_ = Buffer::create_indices(mesh_->indices().size() * sizeof(uint32_t), nullptr, GL_STREAM_DRAW);
   dynamic_vao_ = mesh_->vertex_array_with(dynamic_elements_);
   edge_vertices_ = Buffer::create(0, nullptr, GL_STREAM_DRAW);
   edge_vao_ = VertexArray::create();

@@ -106,7 +106,7 @@ void TexturedSketcher::prepare(const SceneObject& object) {
   indices.reserve(looks_.size() * 6);
   for (uint32_t q = 0; q < looks_.size(); ++q)
     for (uint32_t c : {0u, 1u, 2u, 2u, 1u, 3u}) indices.push_back(4 * q + c);
-  quad_indices_ = Buffer::create(indices);
+  quad_indices_ = Buffer::create_indices(indices);
   vertices_ = Buffer::create(0, nullptr, GL_STREAM_DRAW);
   vao_ = VertexArray::create();
   vao_.attribute(0, vertices_, 3, sizeof(Vertex), offsetof(Vertex, position));

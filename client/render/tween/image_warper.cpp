@@ -115,7 +115,7 @@ int ImageWarper::add_mesh(const WarpMesh& mesh) {
   const std::vector<float> vertices = vertex_data(mesh);
   std::vector<uint32_t> indices;
   for (const auto& t : mesh.triangles) indices.insert(indices.end(), t.begin(), t.end());
-  Mesh m{gl::Buffer::create(vertices), gl::Buffer::create(indices), mesh.points.size(), gl::VertexArray::create(), GLsizei(indices.size())};
+  Mesh m{gl::Buffer::create(vertices), gl::Buffer::create_indices(indices), mesh.points.size(), gl::VertexArray::create(), GLsizei(indices.size())};
   for (GLuint k = 0; k < 3; ++k) m.vao.attribute(k, m.vertices, 2, 6 * sizeof(float), k * 2 * sizeof(float));
   m.vao.bind();
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m.indices.id());  // recorded in the bound vertex array

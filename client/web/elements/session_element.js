@@ -60,11 +60,16 @@ export class SessionElement extends HTMLElement {
     this.dispatchEvent(new CustomEvent('refused', { detail: reason }));
   }
 
+  // The WebSocket address of the session's server: the `server` attribute, else the page's own.
+  serverUrl() { return this.getAttribute('server') ?? `${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/ws`; }
+
+  // The token joining the session.
+  joinToken() { return this.getAttribute('token') ?? ''; }
+
   // A new session from the attributes, replacing any before it.
   openSession() {
     this.session?.close();
-    const server = this.getAttribute('server') ?? `${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/ws`;
-    this.session = new Session(server, this.getAttribute('session') ?? '', this.getAttribute('token') ?? '');
+    this.session = new Session(this.serverUrl(), this.getAttribute('session') ?? '', this.joinToken());
     this.session.addEventListener('error', (e) => this.fail(e.detail));
     this.session.addEventListener('refused', (e) => this.refused(e.detail));
     return this.session;

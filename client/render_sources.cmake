@@ -1,0 +1,53 @@
+# The rendering library's sources that the native build and the browser's WebAssembly module
+# (client/web/module) both compile: one list, so the two draw from the same code (SPEC W5).
+# Paths relative to client/. The native build adds its contexts, the tween and faces.
+set(INKWIRE_SHARED_RENDER_SOURCES
+  gl/canvas.cpp
+  gl/gl.cpp
+  gl/resources.cpp
+  render/backdrop.cpp
+  render/comic/comic_renderer.cpp
+  render/comic/shade_maps.cpp
+  render/coverage.cpp
+  render/default_renderer.cpp
+  render/gpu_mesh.cpp
+  render/hatching/hatch_tones.cpp
+  render/hatching/hatching_renderer.cpp
+  render/hidden_line_renderer.cpp
+  render/hidden_lines.cpp
+  render/painterly/brush_field.cpp
+  render/painterly/brush_painter.cpp
+  render/painterly/brush_shapes.cpp
+  render/painterly/glow.cpp
+  render/painterly/oil_filter.cpp
+  render/painterly/oil_filter_renderer.cpp
+  render/painterly/paint_style.cpp
+  render/painterly/painterly_renderer.cpp
+  render/painterly/palette.cpp
+  render/painterly/rect_image.cpp
+  render/painterly/reference_capture.cpp
+  render/painterly/wash_map.cpp
+  render/scene_object.cpp
+  render/sketch/importance.cpp
+  render/sketch/ink_lines.cpp
+  render/sketch/perturb.cpp
+  render/sketch/recursive_sketcher.cpp
+  render/sketch/segment_sketcher.cpp
+  render/sketch/sketch_edges.cpp
+  render/sketch/stroke_textures.cpp
+  render/sketch/textured_sketcher.cpp
+  render/styles.cpp
+  render/wide_lines.cpp)
+# What of common/ they need (paths relative to common/).
+set(INKWIRE_SHARED_COMMON_SOURCES
+  camera.cpp
+  edge_chains.cpp
+  glb_mesh.cpp
+  image.cpp
+  lod.cpp
+  log.cpp
+  mesh.cpp
+  mesh_welder.cpp
+  orientation.cpp
+  style_params.cpp
+  topology.cpp)
