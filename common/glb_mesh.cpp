@@ -29,8 +29,19 @@ namespace {
 
 constexpr int kMaxNodeDepth = 256;  // as common/mesh_import: real scenes are shallow
 
-// Keeps an image's encoded bytes (PNG, JPEG) as they are.
-bool keep_encoded(tinygltf::Image* image, const int, std::string*, std::string*, int, int, const unsigned char* bytes, int size, void*) {
+// Keeps an image's encoded bytes (PNG, JPEG) as they are. `model` is the model being read: tinygltf
+// hands over an image's buffer view without checking that it lies inside its buffer.
+bool keep_encoded(tinygltf::Image* image, const int, std::string* error, std::string*, int, int, const unsigned char* bytes, int size,
+                  void* model) {
+  if (image->bufferView >= 0) {
+    const auto& m = *static_cast<const tinygltf::Model*>(model);
+    const tinygltf::BufferView& view = m.bufferViews.at(size_t(image->bufferView));  // tinygltf checked the index
+    const size_t buffer_size = m.buffers.at(size_t(view.buffer)).data.size();
+    if (size < 0 || view.byteOffset > buffer_size || view.byteLength > buffer_size - view.byteOffset) {
+      if (error) *error += "an image reaches past its buffer\n";
+      return false;
+    }
+  }
   image->image.assign(bytes, bytes + size);
   image->as_is = true;
   return true;
@@ -228,8 +239,8 @@ Mesh read_glb_mesh(std::span<const uint8_t> bytes, const std::string& name) {
   if (bytes.empty()) throw Error(name + ": the model is empty");
   if (bytes.size() > (size_t(1) << 30)) throw Error(name + ": the model is larger than the 1 GiB limit");
   tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(&keep_encoded, nullptr);
   tinygltf::Model model;
+  loader.SetImageLoader(&keep_encoded, &model);
   std::string error, warning;
   bool ok = false;
   try {
