@@ -29,6 +29,7 @@ server = Server(BIN, OUT, data, {"sessions": [{"name": "bench", "kind": "scene",
                                  "http": "127.0.0.1:0"})
 element = "document.querySelector('inkwire-scene')"
 driver = chromium(OUT, WIDTH + 40, HEIGHT + 200)
+driver.set_script_timeout(600)  # painterly in SwiftShader takes a while for 60 frames
 rows = []
 try:
     driver.get(f"http://127.0.0.1:{server.http}/scene/bench")
