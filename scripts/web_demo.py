@@ -14,19 +14,13 @@ import subprocess
 import sys
 import time
 
-from selenium import webdriver
-from selenium.webdriver.chrome.service import Service
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from headless_chromium import chromium  # noqa: E402
 from selenium.webdriver.common.action_chains import ActionChains
 
 port, session, conference, out = sys.argv[1:5]
 os.makedirs(out, exist_ok=True)
-options = webdriver.ChromeOptions()
-for a in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run", "--disable-background-networking",
-          "--disable-component-update", "--disable-sync", "--force-device-scale-factor=1", "--window-size=720,820",
-          f"--user-data-dir={os.path.join(out, 'profile')}", "--use-angle=swiftshader", "--enable-unsafe-swiftshader"):
-    options.add_argument(a)
-options.binary_location = "/usr/bin/chromium"
-driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
+driver = chromium(os.path.join(out, 'profile'), 720, 820)
 try:
     driver.get(f"http://127.0.0.1:{port}/")
     driver.save_screenshot(os.path.join(out, "index.png"))

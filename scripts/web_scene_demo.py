@@ -11,18 +11,12 @@ import subprocess
 import sys
 import time
 
-from selenium import webdriver
-from selenium.webdriver.chrome.service import Service
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from headless_chromium import chromium  # noqa: E402
 
 port, tcp, scene, bin_dir, out = sys.argv[1:6]
 os.makedirs(out, exist_ok=True)
-options = webdriver.ChromeOptions()
-for a in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run", "--disable-background-networking",
-          "--disable-component-update", "--disable-sync", "--force-device-scale-factor=1", "--window-size=720,620",
-          f"--user-data-dir={os.path.join(out, 'scene-profile')}", "--use-angle=swiftshader", "--enable-unsafe-swiftshader"):
-    options.add_argument(a)
-options.binary_location = "/usr/bin/chromium"
-driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
+driver = chromium(os.path.join(out, 'scene-profile'), 720, 620)
 element = "document.querySelector('inkwire-scene')"
 frames = os.path.join(out, "scene-frames")
 os.makedirs(frames, exist_ok=True)
