@@ -4,7 +4,8 @@
 browser build has, each compared with the native headless client's frame of the same session,
 view, size and animation time (PSNR >= 35 dB still, >= 28 dB for styles that move on their own);
 a native client's style change reaches the element; a drag in the element moves the session's
-camera for the native client; a missing module and a browser without WebGL2 each show a one-line
+camera for the native client; in a scene that names an editor a student's drag is refused with the
+server's reason and the editor's is taken; a missing module and a browser without WebGL2 each show a one-line
 reason.
   scene_browser_test.py BIN_DIR OUT_DIR
 Reads libcgal-demo's cow (skips without it, chromium, chromedriver or selenium)."""
@@ -38,7 +39,9 @@ checks = Checks()
 os.makedirs(OUT, exist_ok=True)
 data = os.path.join(OUT, "data")
 shutil.rmtree(data, ignore_errors=True)
-server = Server(BIN, OUT, data, {"sessions": [{"name": "demo", "kind": "scene", "style": "default", "assets": [{"path": MESH}]}],
+server = Server(BIN, OUT, data, {"sessions": [{"name": "demo", "kind": "scene", "style": "default", "assets": [{"path": MESH}]},
+                                              {"name": "lecture", "kind": "scene", "style": "comic", "editor_token": "t3acher",
+                                               "assets": [{"path": MESH}]}],
                                  "http": "127.0.0.1:0"})
 driver = None
 element = "document.querySelector('inkwire-scene')"
@@ -124,6 +127,20 @@ try:
     db = psnr(after, native)
     checks.check(db >= 35, f"the native client draws the dragged camera as the element does ({db:.2f} dB)")
     checks.check(psnr(before, after) < 30, "the drag changed the picture")
+
+    # A scene that names an editor: a student's drag is refused with the server's reason and the
+    # view goes back to the session's; the teacher's (editor-token) is taken.
+    def drag_in(session, attributes=""):
+        driver.execute_script(f"""document.body.innerHTML = '<inkwire-scene session="{session}" {attributes} style="width:320px;height:240px"></inkwire-scene>';""")
+        wait_for(f"return {element}.hasAttribute('loaded')", 60)
+        driver.execute_script(f"{element}.camera = {{azimuth: 120}}")
+        wait_for(f"return {element}.shadowRoot.querySelector('.message').textContent !== ''", 3)
+        time.sleep(1.0)
+        return driver.execute_script(f"const e = {element}; return [e.camera.azimuth, e.shadowRoot.querySelector('.message').textContent]")
+    azimuth, said = drag_in("lecture")
+    checks.check("Refused" in said and abs(azimuth - 30) < 1, f"a student's drag in an editor's scene is refused and undone ({said!r}, azimuth {azimuth:.1f})")
+    azimuth, said = drag_in("lecture", 'editor-token="t3acher"')
+    checks.check(said == "" and abs(azimuth - 120) < 1, f"the editor's drag is taken (azimuth {azimuth:.1f})")
 
     # Loading failures say why in the element.
     driver.execute_script(f"""document.body.innerHTML = '<inkwire-scene session="demo" server="ws://127.0.0.1:1/ws" style="width:200px;height:160px"></inkwire-scene>';""")
