@@ -47,41 +47,52 @@ bool keep_encoded(tinygltf::Image* image, const int, std::string* error, std::st
   return true;
 }
 
-// An accessor's elements as floats (normalised integers scaled to 0..1), checked against its
-// buffer: `components` floats per element, `count` elements.
+// An accessor's bytes, checked to lie inside its buffer: `count` elements `stride` bytes apart,
+// each of `element_bytes`; `accessor` the accessor itself.
+struct AccessorBytes {
+  const tinygltf::Accessor& accessor;
+  const unsigned char* data;
+  size_t stride, count;
+};
+AccessorBytes accessor_bytes(const tinygltf::Model& model, int index, const char* what) {
+  const std::string name(what);
+  if (index < 0 || size_t(index) >= model.accessors.size()) throw Error(name + " in an accessor that does not exist");
+  const tinygltf::Accessor& a = model.accessors[size_t(index)];
+  if (a.sparse.isSparse) throw Error(name + " in a sparse accessor, which is not read");
+  if (a.bufferView < 0 || size_t(a.bufferView) >= model.bufferViews.size()) throw Error(name + " without their buffer view");
+  const tinygltf::BufferView& view = model.bufferViews[size_t(a.bufferView)];
+  if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size()) throw Error(name + " in a buffer view without its buffer");
+  const std::vector<unsigned char>& buffer = model.buffers[size_t(view.buffer)].data;
+  const int components = tinygltf::GetNumComponentsInType(uint32_t(a.type));
+  const int component_bytes = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
+  if (components <= 0 || component_bytes <= 0) throw Error(name + " of an unknown type");
+  const size_t element_bytes = size_t(components) * size_t(component_bytes);
+  const size_t stride = view.byteStride ? view.byteStride : element_bytes;
+  if (stride < element_bytes || view.byteOffset > buffer.size() || view.byteLength > buffer.size() - view.byteOffset ||
+      a.byteOffset > view.byteLength ||
+      (a.count > 0 && (a.count - 1 > (view.byteLength - a.byteOffset) / stride ||
+                       (a.count - 1) * stride + element_bytes > view.byteLength - a.byteOffset)))
+    throw Error(name + " reach past their buffer");
+  return {a, buffer.data() + view.byteOffset + a.byteOffset, stride, a.count};
+}
+
+// An accessor's elements as floats (normalised integers scaled to 0..1): at least `components`
+// floats per element.
 class FloatReader {
  public:
-  FloatReader(const tinygltf::Model& model, int accessor_index, int components) {
-    if (accessor_index < 0 || size_t(accessor_index) >= model.accessors.size()) throw Error("an accessor that does not exist");
-    const tinygltf::Accessor& a = model.accessors[size_t(accessor_index)];
-    if (a.sparse.isSparse) throw Error("sparse accessors are not read");
-    if (a.bufferView < 0 || size_t(a.bufferView) >= model.bufferViews.size()) throw Error("an accessor without its buffer view");
-    const tinygltf::BufferView& view = model.bufferViews[size_t(a.bufferView)];
-    if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size()) throw Error("a buffer view without its buffer");
-    const std::vector<unsigned char>& buffer = model.buffers[size_t(view.buffer)].data;
-    const int element_components = tinygltf::GetNumComponentsInType(uint32_t(a.type));
-    const int component_bytes = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
-    if (element_components < components || element_components > 4 || component_bytes <= 0) throw Error("an accessor of the wrong type");
-    type_ = a.componentType;
-    normalised_ = a.normalized;
-    if (type_ != TINYGLTF_COMPONENT_TYPE_FLOAT && !normalised_) throw Error("an attribute of integers that are not normalised");
-    components_ = element_components;
-    component_bytes_ = size_t(component_bytes);
-    const size_t element_bytes = size_t(element_components) * component_bytes_;
-    stride_ = view.byteStride ? view.byteStride : element_bytes;
-    count_ = a.count;
-    const size_t start = view.byteOffset + a.byteOffset;
-    if (stride_ < element_bytes || a.byteOffset > view.byteLength || view.byteOffset > buffer.size() ||
-        view.byteLength > buffer.size() - view.byteOffset ||
-        (count_ > 0 && (count_ - 1 > (view.byteLength - a.byteOffset) / stride_ ||
-                        (count_ - 1) * stride_ + element_bytes > view.byteLength - a.byteOffset)))
-      throw Error("an accessor reaches past its buffer");
-    data_ = buffer.data() + start;
+  FloatReader(const tinygltf::Model& model, int accessor_index, int components, const char* what)
+      : bytes_(accessor_bytes(model, accessor_index, what)) {
+    const tinygltf::Accessor& a = bytes_.accessor;
+    components_ = tinygltf::GetNumComponentsInType(uint32_t(a.type));
+    if (components_ < components || components_ > 4) throw Error(std::string(what) + " of the wrong type");
+    if (a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !a.normalized) throw Error(std::string(what) + " of integers that are not normalised");
+    component_bytes_ = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType)));
   }
-  size_t count() const { return count_; }
+  size_t count() const { return bytes_.count; }
+  int components() const { return components_; }
   float at(size_t element, int component) const {
-    const unsigned char* p = data_ + element * stride_ + size_t(component) * component_bytes_;
-    switch (type_) {
+    const unsigned char* p = bytes_.data + element * bytes_.stride + size_t(component) * component_bytes_;
+    switch (bytes_.accessor.componentType) {
       case TINYGLTF_COMPONENT_TYPE_FLOAT: { float f; std::memcpy(&f, p, 4); return f; }
       case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return float(*p) / 255.0f;
       case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p, 2); return float(v) / 65535.0f; }
@@ -90,13 +101,11 @@ class FloatReader {
       default: throw Error("an attribute of an unknown component type");
     }
   }
-  int components() const { return components_; }
 
  private:
-  const unsigned char* data_ = nullptr;
-  size_t stride_ = 0, count_ = 0, component_bytes_ = 0;
-  int type_ = 0, components_ = 0;
-  bool normalised_ = false;
+  AccessorBytes bytes_;
+  int components_ = 0;
+  size_t component_bytes_ = 0;
 };
 
 std::vector<uint32_t> read_indices(const tinygltf::Model& model, int accessor_index, size_t vertex_count) {
@@ -105,24 +114,12 @@ std::vector<uint32_t> read_indices(const tinygltf::Model& model, int accessor_in
     for (size_t i = 0; i < vertex_count; ++i) indices.push_back(uint32_t(i));
     return indices;
   }
-  if (size_t(accessor_index) >= model.accessors.size()) throw Error("an index accessor that does not exist");
-  const tinygltf::Accessor& a = model.accessors[size_t(accessor_index)];
-  if (a.type != TINYGLTF_TYPE_SCALAR || a.sparse.isSparse) throw Error("indices that are not scalars");
-  if (a.bufferView < 0 || size_t(a.bufferView) >= model.bufferViews.size()) throw Error("indices without their buffer view");
-  const tinygltf::BufferView& view = model.bufferViews[size_t(a.bufferView)];
-  if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size()) throw Error("a buffer view without its buffer");
-  const std::vector<unsigned char>& buffer = model.buffers[size_t(view.buffer)].data;
-  const int bytes = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
-  if (bytes != 1 && bytes != 2 && bytes != 4) throw Error("indices of an unknown type");
-  const size_t stride = view.byteStride ? view.byteStride : size_t(bytes);
-  if (view.byteOffset > buffer.size() || view.byteLength > buffer.size() - view.byteOffset || a.byteOffset > view.byteLength ||
-      (a.count > 0 && (a.count - 1 > (view.byteLength - a.byteOffset) / stride ||
-                       (a.count - 1) * stride + size_t(bytes) > view.byteLength - a.byteOffset)))
-    throw Error("indices reach past their buffer");
-  const unsigned char* data = buffer.data() + view.byteOffset + a.byteOffset;
-  for (size_t i = 0; i < a.count; ++i) {
+  const AccessorBytes bytes = accessor_bytes(model, accessor_index, "indices");
+  const int size = tinygltf::GetComponentSizeInBytes(uint32_t(bytes.accessor.componentType));
+  if (bytes.accessor.type != TINYGLTF_TYPE_SCALAR || (size != 1 && size != 2 && size != 4)) throw Error("indices that are not whole numbers");
+  for (size_t i = 0; i < bytes.count; ++i) {
     uint32_t v = 0;
-    std::memcpy(&v, data + i * stride, size_t(bytes));  // little-endian
+    std::memcpy(&v, bytes.data + i * bytes.stride, size_t(size));  // little-endian
     if (v >= vertex_count) throw Error("an index past the vertices");
     indices.push_back(v);
   }
@@ -189,11 +186,11 @@ class GlbMeshBuilder {
       return;  // points and lines: no renderer draws them
     const auto position = p.attributes.find("POSITION");
     if (position == p.attributes.end()) throw Error("a primitive without positions");
-    const FloatReader positions(model_, position->second, 3);
+    const FloatReader positions(model_, position->second, 3, "positions");
     if (positions.count() > kMaxMeshVertices) throw Error("more vertices than the limit");
     std::optional<FloatReader> colours, uvs;
-    if (auto c = p.attributes.find("COLOR_0"); c != p.attributes.end()) colours.emplace(model_, c->second, 3);
-    if (auto t = p.attributes.find("TEXCOORD_0"); t != p.attributes.end()) uvs.emplace(model_, t->second, 2);
+    if (auto c = p.attributes.find("COLOR_0"); c != p.attributes.end()) colours.emplace(model_, c->second, 3, "colours");
+    if (auto t = p.attributes.find("TEXCOORD_0"); t != p.attributes.end()) uvs.emplace(model_, t->second, 2, "texture coordinates");
     if ((colours && colours->count() != positions.count()) || (uvs && uvs->count() != positions.count()))
       throw Error("attributes of different lengths");
     uint32_t material = uint32_t(model_.materials.size());

@@ -96,7 +96,8 @@ export class InkwireScene extends SessionElement {
         const [bytes] = await Promise.all([session.fetchAsset(mesh), module]);
         this.progress(0.9);
         this.bytesFirstFrame = session.bytesReceived + (this.moduleBytes ?? 0);
-        this.use(this.view.loadModel(this.copyIn(bytes), bytes.length, mesh.name));
+        const reason = this.loadModel(bytes, mesh.name);
+        if (reason) throw new Error(reason);
         this.applyStyle(snapshot.style);
         this.applyCamera(snapshot.camera);
         this.applyObject(snapshot.object);
@@ -141,16 +142,15 @@ export class InkwireScene extends SessionElement {
     this.progress(0.6);
   }
 
-  // `bytes` copied into the module's memory; its address (freed by the next copy).
-  copyIn(bytes) {
-    if (this.copied) this.module._free(this.copied);
-    this.copied = this.module._malloc(bytes.length);
-    this.module.HEAPU8.set(bytes, this.copied);
-    return this.copied;
-  }
-
-  use(reason) {
-    if (reason) throw new Error(reason);
+  // The model's bytes lent to the module for as long as it reads them; "" or why it cannot.
+  loadModel(bytes, name) {
+    const address = this.module._malloc(bytes.length);
+    try {
+      this.module.HEAPU8.set(bytes, address);
+      return this.view.loadModel(address, bytes.length, name);
+    } finally {
+      this.module._free(address);
+    }
   }
 
   progress(share) {

@@ -112,7 +112,6 @@ class SceneView {
     });
   }
   double redraw_hz() const { return redraw_hz_; }
-  std::string counters() const { return renderer_ ? json(renderer_->counters()).dump() : "{}"; }
 
  private:
   template <class Action>
@@ -138,16 +137,11 @@ class SceneView {
   long frame_ = 0;
 };
 
-// Every style this build draws, with its parameters (what `inkwire-render --style list` prints),
-// and those it cannot, with why: {"styles": [{name, summary, redraw_hz, params: [...]}],
-// "unavailable": {name: reason}}.
+// Every style this build draws and those it cannot, with why: {"styles": [{name, summary}],
+// "unavailable": {name: reason}}. A style's parameters: style_params_json().
 std::string styles_json() {
   json list = json::array();
-  for (const StyleInfo& s : styles()) {
-    json params = json::array();
-    for (const ParamSpec& p : s.params()) params.push_back(param_json(p));
-    list.push_back({{"name", s.name}, {"summary", s.summary}, {"redraw_hz", s.redraw_hz}, {"params", params}});
-  }
+  for (const StyleInfo& s : styles()) list.push_back({{"name", s.name}, {"summary", s.summary}});
   return json{{"styles", list}, {"unavailable", styles_not_in_this_build()}}.dump();
 }
 
@@ -190,8 +184,7 @@ EMSCRIPTEN_BINDINGS(inkwire_scene) {
       .function("setCamera", &SceneView::set_camera)
       .function("setObjectPose", &SceneView::set_object_pose)
       .function("draw", &SceneView::draw)
-      .function("redrawHz", &SceneView::redraw_hz)
-      .function("counters", &SceneView::counters);
+      .function("redrawHz", &SceneView::redraw_hz);
   function("stylesJson", &inkwire::styles_json);
   function("styleParamsJson", &inkwire::style_params_json);
   function("orbitPoseJson", &inkwire::orbit_pose_json);

@@ -13,7 +13,11 @@ export class ScenePanel {
     this.root.innerHTML = '';
     this.menu = document.createElement('select');
     this.menu.setAttribute('aria-label', 'Style');
-    for (const style of list.styles) this.menu.add(new Option(style.name, style.name));
+    for (const style of list.styles) {
+      const option = new Option(style.name, style.name);
+      option.title = style.summary;
+      this.menu.add(option);
+    }
     for (const [name, reason] of Object.entries(list.unavailable)) {
       const option = new Option(`${name} (not in the browser)`, name);
       option.disabled = true;
