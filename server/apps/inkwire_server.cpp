@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
   auto* mesh = add->add_option("--mesh", source.mesh, "a mesh rendered into samples on a ring instead");
   photos->excludes(mesh);
   PhotoLayout& layout = source.photo_options.layout;
-  add->add_option("--step", layout.step_degrees, "degrees the view turns from one photo to the next, negative if the turntable turned the other way (default: a full turn)")->needs(photos);
+  add->add_option("--step", layout.step_degrees, "degrees the view turns from one photo to the next, negative if the turntable turned the other way (default: a full turn, each step found from the photos)")->needs(photos);
   add->add_option("--arc", layout.arc_degrees, "degrees from the first photo to the last of a row (default: a full turn)")->needs(photos);
   add->add_option("--rows", layout.rows, "rings of photos at several camera heights, the files in order, lowest first (sub-folders row1, row2, ... need no --rows)")->needs(photos);
   add->add_option("--elevations", layout.elevations, "the rows' camera heights in degrees, lowest first, comma-separated (default: level, then 15 degrees apart)")

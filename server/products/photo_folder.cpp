@@ -242,6 +242,7 @@ PhotoFolder read_photo_folder(const fs::path& folder, const PhotoLayout& layout)
     const float closing = glm::degrees(std::acos(std::clamp(glm::dot(out.directions.back(), out.directions.front()), -1.0f, 1.0f)));
     out.closed = closing > 1e-3f && closing <= 1.5f * steps[steps.size() / 2] + 1e-3f;
   } else {
+    out.even_turn_assumed = layout.step_degrees == 0 && layout.arc_degrees == 0;
     const float step = layout.step_degrees != 0 ? layout.step_degrees
                        : layout.arc_degrees != 0 ? layout.arc_degrees / float(columns - 1)
                                                  : 360.0f / float(columns);

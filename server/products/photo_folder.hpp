@@ -47,6 +47,7 @@ struct PhotoFolder {
   std::vector<glm::vec3> directions;    // unit, from the object toward the camera
   std::vector<std::vector<uint16_t>> cells;  // neighbouring photos to tween between: pairs round one row, else triangles
   bool closed = false;                  // the rows go all the way round
+  bool even_turn_assumed = false;       // no step, arc or calibration said how far each photo turned: evenly, a full turn
   int rows = 1;                         // photo r * columns() + c is row r's c-th
   int columns() const { return int(photos.size()) / std::max(rows, 1); }
 };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <cstdio>
 #include <set>
 
 #include <glm/geometric.hpp>
@@ -17,6 +18,7 @@
 #include "server/products/exposure.hpp"
 #include "server/products/matte.hpp"
 #include "server/products/photo_folder.hpp"
+#include "server/products/turn_angles.hpp"
 #include "server/tween/dense_matches.hpp"
 #include "server/tween/landmarks.hpp"
 #include "server/tween/outline.hpp"
@@ -104,7 +106,46 @@ std::vector<glm::vec3> row_gains(const std::vector<PairExposure>& exposures, con
   return gains;
 }
 
+// "4.1 9.8 10.2 ..." degrees, one decimal.
+std::string degrees_list(const std::vector<float>& degrees) {
+  std::string out;
+  for (const float d : degrees) {
+    char text[16];
+    std::snprintf(text, sizeof text, "%s%.1f", out.empty() ? "" : " ", d);
+    out += text;
+  }
+  return out;
+}
+
 }  // namespace
+
+void find_turn_from_matches(PhotoFolder& photos, const PairProgress& progress) {
+  if (!photos.even_turn_assumed) return;
+  const TurnSteps steps = turn_steps_from_photos(photos);
+  if (steps.fitted < 3) {
+    if (progress)
+      progress(0, int(photos.cells.size()),
+               "the turn could not be found from the matches (too few corners followed round): the photos are taken as evenly "
+               "spaced (give --step or --arc if they are not)");
+    return;
+  }
+  set_turn_steps(photos, steps.degrees);
+  photos.even_turn_assumed = false;
+  if (!progress) return;
+  std::vector<float> sizes;
+  for (const float d : steps.degrees) sizes.push_back(std::abs(d));
+  const auto [low, high] = std::minmax_element(sizes.begin(), sizes.end());
+  const char* way = !steps.direction_known ? "forward (the perspective is too weak to tell which way: --step -N if it turned the other way)"
+                    : steps.degrees[0] < 0  ? "the other way (the camera's azimuth falls)"
+                                            : "forward";
+  char line[400];
+  std::snprintf(line, sizeof line,
+                "turn from the matches (%d of %d photos tracked, within %.2f pixels; perspective %.2f +- %.2f), %s: steps %.1f to %.1f "
+                "degrees, %.1f if even: ",
+                steps.fitted, photos.columns(), steps.residual, steps.field_of_view, steps.field_of_view_error, way, *low, *high,
+                360.0 / photos.columns());
+  progress(0, int(photos.cells.size()), line + degrees_list(steps.degrees));
+}
 
 Product product_from_photos(const fs::path& folder, const PhotoProductOptions& o, const PairProgress& progress) {
   if (o.matte != "auto" && o.matte != "key" && o.matte != "none") throw Error("--matte must be auto, key or none");
@@ -115,6 +156,7 @@ Product product_from_photos(const fs::path& folder, const PhotoProductOptions& o
 Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions& o, const PairProgress& progress,
                                   const std::string& folder_name) {
   if (photos.photos.size() < 3) throw Error("a product needs at least 3 photos");
+  find_turn_from_matches(photos, progress);
   const fs::path folder = folder_name;
   Product product;
   product.data.width = photos.photos[0].width;

@@ -36,8 +36,14 @@ struct PhotoProductOptions {
   int control_points = 130;  // per pair at most, outline included (12 bytes each; 160 bought 0.1 dB for 20% more)
 };
 
+// Photos whose turn no step, arc or calibration gave (`even_turn_assumed`) get their steps from
+// corners tracked between row neighbours (SPEC T19, turn_angles.hpp); says the steps found
+// through `progress`. Does nothing to other folders.
+void find_turn_from_matches(PhotoFolder& photos, const PairProgress& progress = {});
+
 // Reads a folder of photos taken around an object, in file-name order (see photo_folder.hpp),
-// and finds control points between every neighbouring pair. Throws inkwire::Error with a one-line
+// finds the turn between photos if it was not given, and control points between every
+// neighbouring pair. Throws inkwire::Error with a one-line
 // reason naming the file at fault.
 Product product_from_photos(const std::filesystem::path& folder, const PhotoProductOptions& options,
                             const PairProgress& progress = {});

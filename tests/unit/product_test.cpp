@@ -82,9 +82,12 @@ TEST(ProductTest, APhotoFolderIsReadInFileNameOrderRoundAFullTurn) {
   EXPECT_TRUE(f.closed);
   EXPECT_EQ(f.cells.size(), 8u);  // the last photo pairs with the first
   EXPECT_NEAR(glm::degrees(std::acos(glm::dot(f.directions[0], f.directions[1]))), 45.0f, 0.01f);
+  EXPECT_TRUE(f.even_turn_assumed);  // nothing said how far each photo turned: add-product finds it
+  EXPECT_FALSE(read_photo_folder(photo_folder("stepped", 8), {.step_degrees = 45}).even_turn_assumed);
   // Over a half-turn arc: open, 7 pairs.
   const PhotoFolder arc = read_photo_folder(photo_folder("arc", 8), {.arc_degrees = 180});
   EXPECT_FALSE(arc.closed);
+  EXPECT_FALSE(arc.even_turn_assumed);
   EXPECT_EQ(arc.cells.size(), 7u);
   // Scaled to the longer side.
   EXPECT_EQ(read_photo_folder(photo_folder("small", 3, 200, 100), {.max_side = 64}).photos[0].width, 64);

@@ -1,0 +1,57 @@
+#pragma once
+// Angles from the matches (SPEC T19): a turntable that speeds up and slows down photographs its
+// turn unevenly, and a product that assumes even steps swings and stalls as it is turned.
+//
+// A point of the object at (u, w) on the turntable (u across the picture at the first photo, w
+// toward its camera) turned by a photo's azimuth a appears at x = x0 + u cos(a) - w sin(a)
+// across the picture, whatever the camera's height (its right-hand direction stays level), for a
+// camera far enough for its perspective to be small. So corners tracked through a few photos
+// each follow a sinusoid, and every photo's azimuth, every track's (u, w) and the axis's column
+// x0 are found together by least squares (the factorisation of a one-dimensional affine camera:
+// the unit length of (cos a, sin a) fixes what ratios of steps alone cannot, the absolute turn).
+// A photo's azimuth is fitted from every track through it, so one plain photo does not break the
+// chain; where a photo has too few tracks it keeps the even step. Ratios of steps alone (the
+// sideways moves into the photo before and after) were tried first and drift round the ring.
+//
+// Which way it turned: seen from the camera the turn reads the same both ways (a -> -a, w -> -w),
+// except for perspective: the nearer side of the object moves more. The fit runs the turn
+// forward and, with it, a focal length; a negative one means the turntable turned the other way
+// (the camera's azimuth falls from photo to photo), and the steps come out negative. A lens so
+// long, or an object so small, that the perspective is within three standard errors of none
+// leaves the turn forward.
+//
+// Tracks: Shi-Tomasi corners followed photo to photo by pyramidal Lucas-Kanade, kept while
+// tracking back lands within half a pixel, on the photos read again at up to kTurnSide pixels
+// (a point moves a few pixels between photos 10 degrees apart: a tenth of a pixel matters).
+#include <vector>
+
+#include "server/products/photo_folder.hpp"
+
+namespace inkwire {
+
+inline constexpr int kTurnSide = 1024;
+
+struct TurnSteps {
+  std::vector<float> degrees;  // per column, the turn from it to the next (the last closes the ring); 360 in all, or -360
+  float field_of_view = 0;     // the photos' longer side over the focal length fitted (negative: the fit ran the turn backwards)
+  float field_of_view_error = 0;  // its standard error
+  bool direction_known = false;   // the perspective is three standard errors from none: it tells which way the turntable turned
+  std::vector<int> tracked;    // per column, the tracked points through its photos (all rows)
+  int fitted = 0;              // columns with enough of them to fit; the others are spaced evenly between fitted ones
+  float residual = 0;          // pixels, root mean square of the tracks about their sinusoids
+};
+
+// The steps of a folder whose rows go all the way round, from its photos read again at up to
+// kTurnSide pixels (from `photos.folder`; photos held in memory only are measured as they are).
+TurnSteps turn_steps_from_photos(const PhotoFolder& photos);
+
+// How far each found azimuth (degrees) is from the truth once the two are turned to line up best
+// (which photo is at "0 degrees" is a convention: only the turns between photos show): for
+// measuring the above on photos whose turn is known.
+std::vector<double> azimuth_errors(const std::vector<float>& found, const std::vector<float>& truth);
+
+// Every row's photos set at azimuths turning by `steps_degrees` (per column) from the first
+// photo's, at the row's elevation as it was.
+void set_turn_steps(PhotoFolder& photos, const std::vector<float>& steps_degrees);
+
+}  // namespace inkwire
