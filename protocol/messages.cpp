@@ -312,6 +312,16 @@ void serialise(Stream& s, Roster& m) {
   for (CallMember& member : m.members) serialise(s, member);
 }
 
+template <class Stream>
+void serialise(Stream& s, Permissions& m) {
+  const size_t n = s.count(m.refused.size(), 4, "refused changes");
+  if constexpr (Stream::reading) m.refused.resize(n);
+  for (Permissions::Refused& r : m.refused) {
+    enumeration(s, r.change, unsigned(MessageType::StyleChange), unsigned(MessageType::ExpressionCode), "refused change");
+    s.text(r.reason, kMaxReason);
+  }
+}
+
 // Runs a message's serialise function over a writing or measuring stream. The streams take
 // fields by reference so one function serves reading too; writing and measuring never change them.
 template <class Stream>
@@ -355,7 +365,7 @@ const char* name_of(MessageType type) {
   static const char* names[] = {"hello", "welcome", "error", "ping", "pong", "join", "leave", "snapshot",
                                 "style-change", "camera-pose", "object-pose", "expression-code", "tween-data",
                                 "asset-announce", "asset-request", "asset-chunk", "publish", "neutral-photo",
-                                "face-crop", "face-region", "voice-frame", "member-face", "roster"};
+                                "face-crop", "face-region", "voice-frame", "member-face", "roster", "permissions"};
   const auto i = unsigned(type);
   return i >= 1 && i <= kMessageTypes ? names[i - 1] : "unknown";
 }

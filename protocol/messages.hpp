@@ -18,7 +18,7 @@
 namespace inkwire::protocol {
 
 inline constexpr uint32_t kMagic = 0x574B4E49;  // the bytes "INKW" read as a little-endian u32
-inline constexpr uint16_t kVersion = 4;  // 2: snapshots describe a turntable's product; 3: calls, refused changes; 4: zoom levels
+inline constexpr uint16_t kVersion = 5;  // 2: snapshots describe a turntable's product; 3: calls, refused changes; 4: zoom levels; 5: permissions
 
 inline constexpr size_t kMaxName = 64;           // session, client and server names
 inline constexpr size_t kMaxToken = 128;
@@ -43,9 +43,9 @@ inline constexpr size_t kMaxMembers = 64;             // members a roster lists
 enum class MessageType : uint16_t {
   Hello = 1, Welcome, Error, Ping, Pong, Join, Leave, Snapshot, StyleChange, CameraPose,
   ObjectPose, ExpressionCode, TweenData, AssetAnnounce, AssetRequest, AssetChunk,
-  Publish, NeutralPhoto, FaceCrop, FaceRegion, VoiceFrame, MemberFace, Roster
+  Publish, NeutralPhoto, FaceCrop, FaceRegion, VoiceFrame, MemberFace, Roster, Permissions
 };
-inline constexpr uint16_t kMessageTypes = 23;
+inline constexpr uint16_t kMessageTypes = 24;
 
 enum class SessionKind : uint8_t { Scene = 1, Turntable = 2, Conference = 3 };
 // Samples: a product's sample photos in sample order; Matte: their mattes, in the same order;
@@ -295,10 +295,24 @@ struct Roster {
   std::vector<CallMember> members;
 };
 
+// What this member may not change in its session (S->C, after the snapshot on joining; SPEC W8):
+// each change the server would refuse it, with the reason it would give, so a client can turn
+// those controls off beforehand instead of having its change undone. Empty: nothing is refused.
+struct Permissions {
+  static constexpr MessageType type = MessageType::Permissions;
+  bool operator==(const Permissions&) const = default;
+  struct Refused {
+    bool operator==(const Refused&) const = default;
+    MessageType change = MessageType::StyleChange;  // style-change, camera-pose, object-pose or expression-code
+    std::string reason;
+  };
+  std::vector<Refused> refused;
+};
+
 // Alternatives in MessageType order: index + 1 == type code.
 using Message = std::variant<Hello, Welcome, ErrorMessage, Ping, Pong, Join, Leave, Snapshot, StyleChange, CameraPose,
                              ObjectPose, ExpressionCode, TweenData, AssetAnnounce, AssetRequest, AssetChunk,
-                             Publish, NeutralPhoto, FaceCrop, FaceRegion, VoiceFrame, MemberFace, Roster>;
+                             Publish, NeutralPhoto, FaceCrop, FaceRegion, VoiceFrame, MemberFace, Roster, Permissions>;
 
 MessageType type_of(const Message& m);
 const char* name_of(MessageType type);

@@ -200,6 +200,12 @@ void Connection::join(const Join& join) {
   log_info("join", {{"client", id_}, {"name", client_name_}, {"session", join.session}, {"members", session_->members()},
                     {"role", role_ == Role::Editor ? "editor" : "visitor"}});
   send(session_->state());
+  // What this member will be refused, said now: its controls for those can be off from the start.
+  Permissions permissions;
+  for (const MessageType change : {MessageType::StyleChange, MessageType::CameraPose, MessageType::ObjectPose, MessageType::ExpressionCode})
+    if (std::string reason = refusal(session_->authority(), role_, change); !reason.empty())
+      permissions.refused.push_back({.change = change, .reason = std::move(reason)});
+  send(permissions);
   cells_pending_ = !session_->tween_frames().empty();
   if (cells_pending_) {
     // A member that holds every photo already asks for none: its cells go after two seconds.

@@ -115,6 +115,9 @@ void SessionClient::on_message(Message message) {
   } else if (auto* roster = std::get_if<Roster>(&message)) {
     roster_ = std::move(*roster);
     ++updates_;
+  } else if (auto* permissions = std::get_if<Permissions>(&message)) {
+    permissions_ = std::move(*permissions);
+    ++updates_;
   } else if (const auto* face = std::get_if<MemberFace>(&message)) {
     member_faces_[face->member] = *face;
     if (face_queue_.size() >= 1000) face_queue_.pop_front();
@@ -213,6 +216,11 @@ uint64_t SessionClient::wait_for_update(uint64_t seen, std::chrono::milliseconds
 bool SessionClient::connected() const {
   std::lock_guard lock(mutex_);
   return connected_;
+}
+
+Permissions SessionClient::permissions() const {
+  std::lock_guard lock(mutex_);
+  return permissions_;
 }
 
 Roster SessionClient::roster() const {

@@ -56,6 +56,10 @@ class SessionClient {
   // One asset: from the cache, or downloaded into it (resuming a partial file). Throws inkwire::Error.
   std::filesystem::path fetch_asset(const protocol::AssetAnnounce& asset, AssetCache& cache);
 
+  // The changes this member will be refused in its session, with the server's reasons (sent on
+  // joining, SPEC W8): what a window turns off.
+  protocol::Permissions permissions() const;
+
   // The tween-data messages of a turntable session's product received since the last
   // snapshot (SPEC T12), by cell index, and how many have arrived.
   std::map<uint16_t, protocol::Bytes> tween_cells() const;
@@ -99,6 +103,7 @@ class SessionClient {
   protocol::Snapshot state_;
   std::map<uint16_t, protocol::Bytes> tween_cells_;
   protocol::Roster roster_;
+  protocol::Permissions permissions_;
   std::map<uint16_t, protocol::MemberFace> member_faces_;
   std::optional<protocol::FaceRegion> face_region_;
   std::deque<ReceivedVoice> voice_;

@@ -13,6 +13,10 @@ nlohmann::json frame_log_line(SessionSync& sync, const SessionClient& client, lo
                        {"cells_loaded", t->cells_loaded()}, {"finer_loaded", t->finer_loaded()},
                        {"finer_in_view", t->finer_in_view()}, {"bytes_sent", client.bytes_sent()},
                        {"bytes_received", client.bytes_received()}};
+  if (const protocol::Permissions p = client.permissions(); !p.refused.empty()) {
+    line["may_not"] = nlohmann::json::array();
+    for (const auto& r : p.refused) line["may_not"].push_back(protocol::name_of(r.change));
+  }
   if (client.refusals() > 0) line["refused"] = {{"count", client.refusals()}, {"reason", client.refusal()}};
   // A call's members as the page's element exposes them (CONTRACTS.md): name, speaking, expression.
   if (const CallGrid& call = sync.view().call(); !call.empty()) {

@@ -124,6 +124,15 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
       present = false;
       dirty = true;
     }
+    // What the server will refuse this member (said on joining): those controls stay still here
+    // instead of being undone, and the panel says why.
+    const protocol::Permissions permissions = client.permissions();
+    const auto refusal_of = [&](protocol::MessageType change) {
+      for (const auto& r : permissions.refused)
+        if (r.change == change) return r.reason;
+      return std::string();
+    };
+    const std::string camera_refused = refusal_of(protocol::MessageType::CameraPose), style_refused = refusal_of(protocol::MessageType::StyleChange);
     TurntableView* product = sync.view().turntable();
     if (product) {
       if (!turntable_started) orbit = Orbit{.azimuth = 0, .elevation = 0, .distance = 1.0f}, turntable_started = true;
@@ -166,13 +175,14 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
         orbit.elevation = std::clamp(orbit.elevation + kStepDegrees * float(input.view_step_y), -85.0f, 85.0f);
         orbit.changed = true;
       }
+      if (!camera_refused.empty() && orbit.changed) orbit.from(sync.state().camera), orbit.changed = false;
       if (dirty && !orbit.dragging && !orbit.changed) orbit.from(sync.state().camera);
       if (orbit.changed) {
         client.send(orbit_pose(orbit.azimuth, orbit.elevation, orbit.distance, sequence++));
         orbit.changed = false;
         dirty = true;
       }
-      if (input.style_step) {
+      if (input.style_step && style_refused.empty()) {
         const std::vector<std::string> names = style_names();
         const auto it = std::find(names.begin(), names.end(), sync.state().style.renderer);
         const int n = int(names.size()), index = it == names.end() ? 0 : int(it - names.begin());
@@ -243,8 +253,12 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
         ImGui::TextWrapped("P: %s this view to the session. F: %s the presenter's view.", present ? "stop presenting" : "present",
                            follow ? "stop following" : "follow");
       } else {
-        if (sync.view().call().empty()) ImGui::TextWrapped("Drag to orbit, wheel to zoom, Tab / Shift-Tab: style, arrows: view.");
+        if (!camera_refused.empty()) ImGui::TextWrapped("%s.", camera_refused.c_str());
+        else if (sync.view().call().empty()) ImGui::TextWrapped("Drag to orbit, wheel to zoom, Tab / Shift-Tab: style, arrows: view.");
+        if (!style_refused.empty() && style_refused != camera_refused) ImGui::TextWrapped("%s.", style_refused.c_str());
+        ImGui::BeginDisabled(!style_refused.empty());
         if (auto change = panel.draw(sync.state().style)) client.send(*change);
+        ImGui::EndDisabled();
       }
       if (!sync.view().error().empty()) ImGui::TextColored(ImVec4(0.9f, 0.3f, 0.3f, 1), "%s", sync.view().error().c_str());
       if (refusals > 0) ImGui::TextColored(ImVec4(0.95f, 0.6f, 0.2f, 1), "Refused: %s", client.refusal().c_str());

@@ -67,7 +67,9 @@ std::vector<Message> every_message() {
           Roster{.you = 2, .members = {CallMember{.member = 2, .name = "Ada", .camera = true, .microphone = true, .speaking = false, .face_found = true, .assets = {}},
                                        CallMember{.member = 3, .name = "Grace", .camera = false, .microphone = true, .speaking = true, .face_found = false,
                                                   .assets = {AssetAnnounce{.hash = sample_hash(4), .size = 5000, .kind = AssetKind::Image, .name = "face.jpg"},
-                                                             AssetAnnounce{.hash = sample_hash(5), .size = 900, .kind = AssetKind::Landmarks, .name = "face.landmarks.json"}}}}}};
+                                                             AssetAnnounce{.hash = sample_hash(5), .size = 900, .kind = AssetKind::Landmarks, .name = "face.landmarks.json"}}}}},
+          Permissions{.refused = {{.change = MessageType::StyleChange, .reason = "only the session's editors may change the style; you follow them"},
+                                  {.change = MessageType::CameraPose, .reason = "only the session's editors may move the camera; you follow them"}}}};
 }
 
 Bytes stream_of(const std::vector<Message>& messages) {

@@ -4,8 +4,9 @@
 browser build has, each compared with the native headless client's frame of the same session,
 view, size and animation time (PSNR >= 35 dB still, >= 28 dB for styles that move on their own);
 a native client's style change reaches the element; a drag in the element moves the session's
-camera for the native client; in a scene that names an editor a student's drag is refused with the
-server's reason and the editor's is taken; a missing module and a browser without WebGL2 each show a one-line
+camera for the native client; in a scene that names an editor a student's panel and drag are off
+from the start with the server's reason (said on joining), a change the student's page makes anyway
+is refused with the reason, and the editor's is taken; a missing module and a browser without WebGL2 each show a one-line
 reason.
   scene_browser_test.py BIN_DIR OUT_DIR
 Reads libcgal-demo's cow (skips without it, chromium, chromedriver or selenium)."""
@@ -128,19 +129,40 @@ try:
     checks.check(db >= 35, f"the native client draws the dragged camera as the element does ({db:.2f} dB)")
     checks.check(psnr(before, after) < 30, "the drag changed the picture")
 
-    # A scene that names an editor: a student's drag is refused with the server's reason and the
-    # view goes back to the session's; the teacher's (editor-token) is taken.
-    def drag_in(session, attributes=""):
+    # A scene that names an editor. The student's element is told on joining what it may not
+    # change: the panel's controls are off with the reason above them and a drag does nothing; a
+    # change its page makes anyway is refused with the server's reason and the view goes back to
+    # the session's. The teacher's (editor-token) panel is on and its change is taken.
+    def open_scene(session, attributes=""):
         driver.execute_script(f"""document.body.innerHTML = '<inkwire-scene session="{session}" {attributes} style="width:320px;height:240px"></inkwire-scene>';""")
         wait_for(f"return {element}.hasAttribute('loaded')", 60)
+        wait_for(f"return {element}.shadowRoot.querySelectorAll('.panel select').length > 0", 10)
+        time.sleep(0.5)  # the permissions follow the snapshot
+        return driver.execute_script(f"""const e = {element}, root = e.shadowRoot;
+          const controls = [...root.querySelectorAll('.panel select, .panel input')];
+          return [controls.length, controls.filter((c) => c.disabled).length, root.querySelector('[part=locked]').textContent, e.canvas.title];""")
+    def drag():
+        driver.execute_script(f"""const c = {element}.canvas, r = c.getBoundingClientRect();
+          const at = (type, x) => c.dispatchEvent(new PointerEvent(type, {{pointerId: 1, bubbles: true, clientX: r.left + x, clientY: r.top + 100}}));
+          at('pointerdown', 250); for (let x = 250; x >= 100; x -= 10) at('pointermove', x); at('pointerup', 100);""")
+        time.sleep(1.0)
+        return driver.execute_script(f"const e = {element}; return [e.camera.azimuth, e.shadowRoot.querySelector('.message').textContent]")
+    def set_camera():
         driver.execute_script(f"{element}.camera = {{azimuth: 120}}")
         wait_for(f"return {element}.shadowRoot.querySelector('.message').textContent !== ''", 3)
         time.sleep(1.0)
         return driver.execute_script(f"const e = {element}; return [e.camera.azimuth, e.shadowRoot.querySelector('.message').textContent]")
-    azimuth, said = drag_in("lecture")
-    checks.check("Refused" in said and abs(azimuth - 30) < 1, f"a student's drag in an editor's scene is refused and undone ({said!r}, azimuth {azimuth:.1f})")
-    azimuth, said = drag_in("lecture", 'editor-token="t3acher"')
-    checks.check(said == "" and abs(azimuth - 120) < 1, f"the editor's drag is taken (azimuth {azimuth:.1f})")
+    controls, off, note, tooltip = open_scene("lecture")
+    checks.check(controls > 0 and off == controls and "editors" in note and "editors" in tooltip,
+                 f"a student's panel is off from the start with the reason ({off} of {controls} controls off, {note!r}; canvas: {tooltip!r})")
+    azimuth, said = drag()
+    checks.check(abs(azimuth - 30) < 1 and said == "", f"a student's drag does nothing (azimuth {azimuth:.1f}, {said!r})")
+    azimuth, said = set_camera()
+    checks.check("Refused" in said and abs(azimuth - 30) < 1, f"a change the student's page makes anyway is refused and undone ({said!r}, azimuth {azimuth:.1f})")
+    controls, off, note, tooltip = open_scene("lecture", 'editor-token="t3acher"')
+    checks.check(controls > 0 and off == 0 and note == "" and tooltip == "", f"the editor's panel is on ({off} of {controls} controls off)")
+    azimuth, said = drag()
+    checks.check(said == "" and abs(azimuth - 90) < 1, f"the editor's drag is taken (azimuth {azimuth:.1f})")
 
     # Loading failures say why in the element.
     driver.execute_script(f"""document.body.innerHTML = '<inkwire-scene session="demo" server="ws://127.0.0.1:1/ws" style="width:200px;height:160px"></inkwire-scene>';""")

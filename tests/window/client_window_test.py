@@ -5,7 +5,8 @@ that an arrow key turns the view, that the docked panel covers at most 35% of a 
 by default, and that an idle window of a still style uses under 5% of a core over 5 s. On a
 product: P presents the window's view (a client that follows shows it), F follows a presenter;
 on a product in three rows the Up and Down arrows step a row and a drag down turns the view up,
-no further than the top row.
+no further than the top row. In a scene whose editor is someone else, the window knows from
+joining that it may not steer: Tab, the arrows and a drag change nothing, and the panel says why.
 
 Usage: client_window_test.py BIN_DIR OUT_DIR   (skips with a message without a display,
 xdotool or ffmpeg)."""
@@ -66,6 +67,8 @@ def key(*keys):
 
 checks = Checks()
 config = {"sessions": [{"name": "look", "kind": "scene", "style": "comic",
+                        "assets": [{"path": os.path.abspath(MESH), "kind": "mesh"}]},
+                       {"name": "lecture", "kind": "scene", "style": "comic", "editor_token": "t3acher",
                         "assets": [{"path": os.path.abspath(MESH), "kind": "mesh"}]}]}
 DUCK = "/usr/share/assimp/models/Collada/duck.dae"
 EDITOR = "sh0p-0wner"  # the product's editor token: only its editors present
@@ -125,6 +128,35 @@ try:
     time.sleep(1.5)
     turned = grab("4-after-right.png")
     checks.check(psnr(again, turned) < 30, f"two Right arrows turn the view (PSNR {psnr(again, turned):.1f} dB against before, < 30)")
+
+    # A scene whose editor is someone else: the server says on joining what this member may not
+    # change; the window's Tab and drag do nothing and its panel says why.
+    client.terminate()
+    client.wait(timeout=10)
+    lecture_log = os.path.join(OUT, "lecture.jsonl")
+    client = subprocess.Popen([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{server.tcp}", "--session", "lecture",
+                               "--size", f"{WIDTH}x{HEIGHT}", "--cache", os.path.join(OUT, "cache"), "--frame-log", lecture_log],
+                              stderr=client_log, env=env)
+    wait_for(lambda: os.path.exists(lecture_log) and any(line.get("may_not") for line in log_lines(lecture_log)), 60, "the lecture's permissions")
+    subprocess.run(["xdotool", "mousemove", "5", "5"], check=True)
+    time.sleep(1.0)
+    may_not = log_lines(lecture_log)[-1]["may_not"]
+    checks.check({"style-change", "camera-pose"} <= set(may_not), f"the window knows from joining what it may not change: {', '.join(may_not)}")
+    still = grab("5-lecture.png")
+    key("Tab", "Right", "Right")
+    subprocess.run(["xdotool", "mousemove", "--sync", "200", "200", "sleep", "0.3", "mousedown", "1", "mousemove", "--sync", "100", "200",
+                    "mouseup", "1"], check=True)
+    subprocess.run(["xdotool", "mousemove", "5", "5"], check=True)  # the pointer where it was for the first picture
+    time.sleep(1.5)
+    last = log_lines(lecture_log)[-1]
+    after = grab("6-lecture-after-keys.png")
+    checks.check(last["style"] == "comic" and "refused" not in last, f"Tab changes nothing and nothing is refused ({last['style']})")
+    # The picture left of the panel (whose title shows focus), before and after.
+    def picture(image, right=int(last["panel"]["x"])):
+        width, height, rgb = image
+        return (right, height, b"".join(rgb[y * width * 3:(y * width + right) * 3] for y in range(height)))
+    moved = psnr(picture(still), picture(after))
+    checks.check(moved > 40, f"neither the arrows nor a drag move a follower's view (PSNR {moved:.1f} dB, > 40)")
 
     if not os.path.exists(DUCK):
         print(f"skipped presenter mode: {DUCK} is missing (assimp-testmodels)")

@@ -4,7 +4,8 @@
 // the wheel zooms, shared with the session as the native window does; a style menu and a panel of
 // the style's parameters send every change to all; changes from other members show at once.
 // Attributes: server, session, token, editor-token (joins as an editor: a session that names one
-// lets only editors steer, and a refused change's reason shows); `loaded` once the module and
+// lets only editors steer; what the server will refuse this member it says on joining, and those
+// controls are off with the reason beside them); `loaded` once the module and
 // model are there and the first frame is drawn. Properties: styleName, settings (object),
 // camera ({azimuth, elevation, distance}); setting them changes the session as the panel would.
 import { SessionElement } from './session_element.js';
@@ -17,6 +18,7 @@ const template = `
           touch-action: none; user-select: none; font: 13px system-ui, sans-serif; }
   canvas { width: 100%; height: 100%; display: block; cursor: grab; }
   canvas.dragging { cursor: grabbing; }
+  canvas.following { cursor: default; }
   .progress { position: absolute; left: 10%; right: 10%; bottom: 12px; height: 4px; background: #0001; border-radius: 2px; }
   .bar { height: 100%; width: 0; background: #3a6ea5; border-radius: 2px; transition: width 0.2s; }
   .message { position: absolute; inset: auto 8px 24px 8px; color: #a33; text-align: center; }
@@ -110,6 +112,7 @@ export class InkwireScene extends SessionElement {
         this.fail(error.message);
       }
     });
+    session.addEventListener('permissions', (e) => this.applyPermissions(e.detail));
     session.addEventListener('state', (e) => {
       const m = e.detail;
       if (m.type === 'style-change') this.applyStyle(m);
@@ -177,6 +180,16 @@ export class InkwireScene extends SessionElement {
 
   applyObject(pose) { this.view?.setObjectPose(...pose.rotation, ...pose.translation, pose.scale); }
 
+  // What the server will refuse this member, said on joining: the panel locked with the reason,
+  // and dragging and the wheel off (the reason as the canvas's tooltip) when it may not steer.
+  applyPermissions(refused) {
+    const reasons = new Map(refused.map((r) => [r.change, r.reason]));
+    this.panel.lock(reasons.get('style-change') ?? null);
+    this.steeringRefused = reasons.get('camera-pose') ?? null;
+    this.canvas.classList.toggle('following', Boolean(this.steeringRefused));
+    this.canvas.title = this.steeringRefused ?? '';
+  }
+
   changeStyle(name, settings) {
     const style = { type: 'style-change', renderer: name, settings: Object.entries(settings).map(([k, v]) => `${k}=${v}`) };
     this.applyStyle(style);
@@ -198,6 +211,7 @@ export class InkwireScene extends SessionElement {
   }
 
   pointerDown(e) {
+    if (this.steeringRefused) return;
     this.canvas.setPointerCapture(e.pointerId);
     this.canvas.classList.add('dragging');
     this.dragFrom = [e.clientX, e.clientY];
@@ -217,6 +231,7 @@ export class InkwireScene extends SessionElement {
   }
 
   wheel(e) {
+    if (this.steeringRefused) return;
     e.preventDefault();
     this.moveCamera({ ...this.orbit, distance: this.orbit.distance * kWheelStep ** Math.sign(e.deltaY) });
   }

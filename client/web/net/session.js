@@ -59,6 +59,7 @@ export class Session extends EventTarget {
     else if (m.type === 'asset-chunk') this.chunk(m);
     else if (m.type === 'roster' || m.type === 'member-face' || m.type === 'voice-frame' || m.type === 'face-region')
       this.dispatchEvent(new CustomEvent(m.type, { detail: m }));  // a call's (elements/call.js)
+    else if (m.type === 'permissions') this.dispatchEvent(new CustomEvent('permissions', { detail: m.refused }));
     else if (m.type === 'error' && m.code === ErrorCode['not-allowed']) this.dispatchEvent(new CustomEvent('refused', { detail: m.reason }));
     else if (m.type === 'error') {
       for (const w of this.waiting.values()) w.reject(new Error(m.reason));

@@ -5,7 +5,7 @@
 import { ProtocolError, ReadStream, WriteStream } from './streams.js';
 
 export const kMagic = 0x574b4e49;  // the bytes "INKW" read as a little-endian u32
-export const kVersion = 4;
+export const kVersion = 5;
 export const kMaxName = 64;
 export const kMaxToken = 128;
 export const kMaxReason = 512;
@@ -27,8 +27,9 @@ export const MessageType = Object.freeze({
   hello: 1, welcome: 2, error: 3, ping: 4, pong: 5, join: 6, leave: 7, snapshot: 8, 'style-change': 9, 'camera-pose': 10,
   'object-pose': 11, 'expression-code': 12, 'tween-data': 13, 'asset-announce': 14, 'asset-request': 15, 'asset-chunk': 16,
   publish: 17, 'neutral-photo': 18, 'face-crop': 19, 'face-region': 20, 'voice-frame': 21, 'member-face': 22, roster: 23,
+  permissions: 24,
 });
-export const kMessageTypes = 23;
+export const kMessageTypes = 24;
 export const FaceSource = Object.freeze({ neutral: 0, camera: 1, voice: 2 });
 export const nameOf = (type) => Object.keys(MessageType).find((k) => MessageType[k] === type) ?? 'unknown';
 
@@ -304,11 +305,24 @@ function serialiseRoster(s, m) {
   }
 }
 
+// The changes the server will refuse this member: [{change: 'camera-pose', reason}], by name.
+function serialisePermissions(s, m) {
+  const refused = m.refused ?? [];
+  const n = s.count(refused.length, 4, 'refused changes');
+  m.refused = [];
+  for (let i = 0; i < n; ++i) {
+    const change = enumeration(s, MessageType[refused[i]?.change] ?? 0, MessageType['style-change'], MessageType['expression-code'],
+                               'refused change', 2);
+    m.refused.push({ change: nameOf(change), reason: s.text(refused[i]?.reason ?? '', kMaxReason) });
+  }
+}
+
 // In MessageType order: index + 1 == type code.
 const serialisers = [serialiseHello, serialiseWelcome, serialiseErrorMessage, serialisePing, serialisePong, serialiseJoin, serialiseLeave,
                      serialiseSnapshot, serialiseStyleChange, serialiseCameraPose, serialiseObjectPose, serialiseExpressionCode,
                      serialiseTweenData, serialiseAssetAnnounce, serialiseAssetRequest, serialiseAssetChunk, serialisePublish,
-                     serialiseNeutralPhoto, serialiseFaceCrop, serialiseFaceRegion, serialiseVoiceFrame, serialiseMemberFace, serialiseRoster];
+                     serialiseNeutralPhoto, serialiseFaceCrop, serialiseFaceRegion, serialiseVoiceFrame, serialiseMemberFace, serialiseRoster,
+                     serialisePermissions];
 
 export const kHeaderBytes = 6;
 export const kMaxPayload = 128 * 1024;

@@ -59,6 +59,8 @@ test('decoded fields are the C++ ones', () => {
   assert.deepEqual(roster.members.map((m) => [m.member, m.name, m.speaking, m.face_found, m.assets.length]),
                    [[2, 'Ada', false, true, 0], [3, 'Grace', true, false, 2]]);
   assert.equal(roster.members[1].assets[1].name, 'face.landmarks.json');
+  assert.deepEqual(byType.permissions.refused.map((r) => r.change), ['style-change', 'camera-pose']);
+  assert.match(byType.permissions.refused[1].reason, /editors may move the camera/);
 });
 
 test('every truncation of every frame is refused with a ProtocolError', () => {
@@ -81,7 +83,7 @@ test('trailing bytes, lengths over the limit and unknown types are refused', () 
   new DataView(header.buffer).setUint16(4, 4, true);
   assert.throws(() => parseHeader(header), /exceeds the limit/);
   new DataView(header.buffer).setUint32(0, 8, true);
-  for (const type of [0, 24, 65535]) {
+  for (const type of [0, kMessageTypes + 1, 65535]) {
     new DataView(header.buffer).setUint16(4, type, true);
     assert.throws(() => parseHeader(header), /unknown message type/);
   }
@@ -109,6 +111,7 @@ test('values out of range are refused as the C++ reader refuses them', () => {
   refuse({ type: 'voice-frame', opus: new Uint8Array() });
   refuse({ type: 'member-face', source: 3 });
   refuse({ type: 'roster', members: [{ member: 0, name: 'x' }] });
+  refuse({ type: 'permissions', refused: [{ change: 'snapshot', reason: 'x' }] });
   assert.throws(() => encode({ type: 'voice-frame', opus: new Uint8Array(1276) }), ProtocolError);
 });
 

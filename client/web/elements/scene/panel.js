@@ -8,9 +8,27 @@ export class ScenePanel {
     this.changed = changed;
   }
 
+  // The server refuses this member style changes (it said so on joining): every control off and
+  // `reason` shown above them; null turns them on again.
+  lock(reason) {
+    this.locked = reason;
+    this.applyLock();
+  }
+
+  applyLock() {
+    if (!this.menu) return;
+    for (const control of this.root.querySelectorAll('select, input')) control.disabled = Boolean(this.locked);
+    this.lockNote.textContent = this.locked ?? '';
+    this.lockNote.hidden = !this.locked;
+  }
+
   setStyles(list, paramsOf) {
     this.paramsOf = paramsOf;
     this.root.innerHTML = '';
+    this.lockNote = document.createElement('div');
+    this.lockNote.className = 'note';
+    this.lockNote.setAttribute('part', 'locked');
+    this.root.append(this.lockNote);
     this.menu = document.createElement('select');
     this.menu.setAttribute('aria-label', 'Style');
     for (const style of list.styles) {
@@ -32,6 +50,7 @@ export class ScenePanel {
     this.root.append(this.notes);
     this.fields = document.createElement('div');
     this.root.append(this.fields);
+    this.applyLock();
   }
 
   // The session's style and settings; the fields are rebuilt only when the style changes, so a
@@ -50,6 +69,7 @@ export class ScenePanel {
       this.fields.innerHTML = '';
       this.inputs = new Map();
       for (const p of params) this.fields.append(this.field(p));
+      this.applyLock();
     }
     for (const p of params) {
       const input = this.inputs.get(p.name);
