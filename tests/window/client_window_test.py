@@ -84,12 +84,25 @@ if os.path.exists(DUCK):  # a product for presenter mode, made as a shop owner w
     subprocess.run([f"{BIN}/inkwire-server", "add-product", "rows", "--photos", os.path.join(OUT, "rows"), "--step", "-60",
                     "--elevations", "0,25,50", "--data", os.path.join(OUT, "data")], check=True, stdout=subprocess.DEVNULL)
 server = Server(BIN, OUT, os.path.join(OUT, "data"), config)
-frame_log = os.path.join(OUT, "frames.jsonl")
 env = dict(os.environ, XDG_CONFIG_HOME=os.path.join(OUT, "config"))  # the panel's first-run state
 client_log = open(os.path.join(OUT, "client.log"), "w")
-client = subprocess.Popen([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{server.tcp}", "--session", "look",
-                           "--size", f"{WIDTH}x{HEIGHT}", "--cache", os.path.join(OUT, "cache"), "--frame-log", frame_log],
-                          stderr=client_log, env=env)
+client = None
+
+
+def open_window(session, log, *flags):
+    """A window on `session` in place of the one before (if any); its frame log's path."""
+    global client
+    if client:
+        client.terminate()
+        client.wait(timeout=10)
+    path = os.path.join(OUT, log)
+    client = subprocess.Popen([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{server.tcp}", "--session", session, *flags,
+                               "--size", f"{WIDTH}x{HEIGHT}", "--cache", os.path.join(OUT, "cache"), "--frame-log", path],
+                              stderr=client_log, env=env)
+    return path
+
+
+frame_log = open_window("look", "frames.jsonl")
 try:
     wait_for(lambda: os.path.exists(frame_log) and any(line["style"] == "comic" for line in log_lines(frame_log)), 60, "the first frame")
     subprocess.run(["xdotool", "mousemove", "5", "5"], check=True)  # over the picture, not the panel
@@ -131,12 +144,7 @@ try:
 
     # A scene whose editor is someone else: the server says on joining what this member may not
     # change; the window's Tab and drag do nothing and its panel says why.
-    client.terminate()
-    client.wait(timeout=10)
-    lecture_log = os.path.join(OUT, "lecture.jsonl")
-    client = subprocess.Popen([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{server.tcp}", "--session", "lecture",
-                               "--size", f"{WIDTH}x{HEIGHT}", "--cache", os.path.join(OUT, "cache"), "--frame-log", lecture_log],
-                              stderr=client_log, env=env)
+    lecture_log = open_window("lecture", "lecture.jsonl")
     wait_for(lambda: os.path.exists(lecture_log) and any(line.get("may_not") for line in log_lines(lecture_log)), 60, "the lecture's permissions")
     subprocess.run(["xdotool", "mousemove", "5", "5"], check=True)
     time.sleep(1.0)
@@ -161,12 +169,7 @@ try:
     if not os.path.exists(DUCK):
         print(f"skipped presenter mode: {DUCK} is missing (assimp-testmodels)")
     else:
-        client.terminate()
-        client.wait(timeout=10)
-        product_log = os.path.join(OUT, "product.jsonl")
-        client = subprocess.Popen([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{server.tcp}", "--session", "duck", "--token", EDITOR,
-                                   "--size", f"{WIDTH}x{HEIGHT}", "--cache", os.path.join(OUT, "cache"), "--frame-log", product_log],
-                                  stderr=client_log, env=env)
+        product_log = open_window("duck", "product.jsonl", "--token", EDITOR)
         wait_for(lambda: os.path.exists(product_log) and any(line["product"]["samples_loaded"] == 12 for line in log_lines(product_log)),
                  60, "the product in the window")
 
@@ -196,12 +199,7 @@ try:
                      f"F follows: the window turned to {window_azimuth():.1f} degrees, the presenter's {presented:.1f}")
 
         # Rows: Up and Down step a row; a drag down turns the view up, as far as the top row.
-        client.terminate()
-        client.wait(timeout=10)
-        rows_log = os.path.join(OUT, "rows.jsonl")
-        client = subprocess.Popen([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{server.tcp}", "--session", "rows",
-                                   "--size", f"{WIDTH}x{HEIGHT}", "--cache", os.path.join(OUT, "cache"), "--frame-log", rows_log],
-                                  stderr=client_log, env=env)
+        rows_log = open_window("rows", "rows.jsonl")
         wait_for(lambda: os.path.exists(rows_log) and any(line["product"]["samples_loaded"] == 18 for line in log_lines(rows_log)),
                  60, "the product in rows in the window")
         elevation = lambda: log_lines(rows_log)[-1]["product"]["elevation"]
