@@ -135,6 +135,10 @@ TEST_F(WebTransportE2ETest, AWebSocketClientSpeaksTheProtocolWithTcpMembersOfThe
   const auto snapshot = ws.receive();
   ASSERT_TRUE(snapshot && std::holds_alternative<protocol::Snapshot>(*snapshot));
   EXPECT_EQ(std::get<protocol::Snapshot>(*snapshot).assets.size(), 1u);
+  // Then what this member may not change: nothing, in a scene without an editor token.
+  const auto permissions = ws.receive();
+  ASSERT_TRUE(permissions && std::holds_alternative<protocol::Permissions>(*permissions));
+  EXPECT_TRUE(std::get<protocol::Permissions>(*permissions).refused.empty());
   // A TCP member's change reaches the WebSocket member, and the other way round.
   SessionClient tcp(server.address(), "tcp");
   tcp.join("cows", "");
