@@ -28,6 +28,7 @@ struct Options {
   std::string gl = "osmesa";  // off-screen backend
   std::string output_dir;     // where suites write extra files (CSV, plots): beside the JSON
   std::vector<std::string> photos;  // turntable: real photo folders to measure (every other photo held out)
+  bool even_turn = false;           // turntable --photos: take them as evenly spaced, not the turn found from the matches
 };
 
 // One object of the level-of-detail series, placed as in the study: thesis camera, one light,

@@ -61,6 +61,8 @@ int main(int argc, char** argv) {
   app.add_option("--gl", options.gl, "off-screen GL backend: osmesa, egl (surfaceless) or auto");
   app.add_option("--photos", options.photos, "turntable: a folder of real turntable photos to measure instead of the truck (repeatable)")
       ->check(CLI::ExistingDirectory);
+  app.add_flag("--even-turn", options.even_turn,
+               "turntable --photos: take the photos as evenly spaced instead of finding the turn from the matches, as add-product does");
   app.add_option("--json", json_path, "write results here")->required();
   try {
     app.parse(argc, argv);

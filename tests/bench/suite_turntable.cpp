@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numeric>
+#include <random>
 #include <thread>
 
 #include <unistd.h>
@@ -37,6 +38,7 @@
 #include "server/products/photo_folder.hpp"
 #include "server/products/product.hpp"
 #include "server/products/product_store.hpp"
+#include "server/products/turn_angles.hpp"
 #include "server/tween/dense_matches.hpp"
 #include "server/server.hpp"
 
@@ -217,9 +219,14 @@ HeldOut hold_out(const PhotoFolder& all) {
 // interpolation of the two product photos it lies between (everything on the client: the
 // quality reference). Views are written beside the truth for looking at:
 // [truth | spin | cross-fade | tween | flow] in DIR/turntable-NAME-K.png.
-std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const fs::path& output_dir) {
+std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const fs::path& output_dir, bool even_turn) {
   const std::string name = folder.filename().empty() ? folder.parent_path().filename().string() : folder.filename().string();
-  const PhotoFolder all = read_photo_folder(folder, {});
+  PhotoFolder all = read_photo_folder(folder, {});
+  // As add-product: the turn found from the matches unless given (on the whole set, before the
+  // odd photos are held out: their azimuths are the truth the views are drawn at).
+  const bool turn_found = all.even_turn_assumed && !even_turn;
+  if (turn_found)
+    find_turn_from_matches(all, [&](int, int, const std::string& line) { std::fprintf(stderr, "inkwire-bench: %s: %s\n", name.c_str(), line.c_str()); });
   const HeldOut held = hold_out(all);
   const PhotoFolder& kept = held.kept;
   const int n = int(kept.photos.size());
@@ -292,6 +299,7 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
   rows[2].counters["bytes_per_pair"] = double(tween_bytes) / double(std::max<size_t>(product.data.cells.size(), 1));
   rows[2].counters["tween_share"] = double(tween_bytes) / double(photo_bytes + matte_bytes + tween_bytes);
   rows[2].counters["seconds_to_make"] = seconds_to_make;
+  rows[2].counters["turn_from_matches"] = turn_found;
   // Zoom (SPEC T18): each finer level's size and bytes, fetched only zoomed in (a few photos of
   // it at a time), so not in the share above.
   const std::vector<uint64_t> level_bytes = server::zoom_level_bytes(state);
@@ -312,6 +320,55 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
   return rows;
 }
 
+// Angles from the matches (SPEC T19) on the truck photographed over white at azimuths known and
+// uneven: turned by hand (each photo up to 30% of a step off even) and on a turntable that speeds
+// up and slows down (steps 65-135% of even, the second photo a degree after the first). Per set:
+// the mean and worst azimuth error of the turn found, and of taking the photos as even.
+std::vector<Result> turn_rows(const SceneObject& truck) {
+  std::vector<Result> out;
+  for (const int n : {24, 36})
+    for (const std::string pattern : {"hand", "turntable"}) {
+      const float step = 360.0f / float(n);
+      std::vector<float> truth, even;
+      std::mt19937 random{static_cast<uint32_t>(n)};
+      std::uniform_real_distribution<float> jitter(-0.3f * step, 0.3f * step);
+      for (int i = 0; i < n; ++i) {
+        even.push_back(step * float(i));
+        truth.push_back(step * float(i) + (pattern == "hand" ? jitter(random) : 0.35f * step * std::sin(0.9f * float(i))));
+      }
+      if (pattern == "turntable") truth[1] = truth[0] + 1.0f;
+      PhotoFolder photos;
+      for (int i = 0; i < n; ++i) {
+        const glm::vec3 d(std::sin(glm::radians(truth[size_t(i)])), 0.0f, std::cos(glm::radians(truth[size_t(i)])));
+        photos.photos.push_back(over_colour(render_mesh_view(truck, d, kSize, kDistance), {255, 255, 255}, false));
+        photos.names.push_back("photo" + std::to_string(i));
+        photos.directions.push_back({std::sin(glm::radians(even[size_t(i)])), 0.0f, std::cos(glm::radians(even[size_t(i)]))});
+      }
+      photos.finest = {kSize, kSize};
+      photos.closed = photos.even_turn_assumed = true;
+      const auto started = std::chrono::steady_clock::now();
+      find_turn_from_matches(photos);
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+      std::vector<float> found;
+      for (const glm::vec3& d : photos.directions) found.push_back(glm::degrees(std::atan2(d.x, d.z)));
+      const std::vector<double> error = azimuth_errors(found, truth), even_error = azimuth_errors(even, truth);
+      const auto mean = [](const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / double(v.size()); };
+      Result r;
+      r.suite = "turntable", r.renderer = "turn-from-matches", r.variant = pattern + ",n=" + std::to_string(n), r.object = "truck";
+      r.counters = {{"samples", n},
+                    {"error_mean_degrees", mean(error)},
+                    {"error_worst_degrees", *std::max_element(error.begin(), error.end())},
+                    {"even_error_mean_degrees", mean(even_error)},
+                    {"even_error_worst_degrees", *std::max_element(even_error.begin(), even_error.end())},
+                    {"seconds", seconds}};
+      std::fprintf(stderr, "inkwire-bench: turn from the matches, truck %s n=%d: mean error %.2f degrees (worst %.2f); even %.2f (worst %.2f)\n",
+                   pattern.c_str(), n, r.counters["error_mean_degrees"], r.counters["error_worst_degrees"], r.counters["even_error_mean_degrees"],
+                   r.counters["even_error_worst_degrees"]);
+      out.push_back(std::move(r));
+    }
+  return out;
+}
+
 }  // namespace
 
 std::vector<Result> run_turntable_suite(Harness& harness) {
@@ -319,7 +376,7 @@ std::vector<Result> run_turntable_suite(Harness& harness) {
   Canvas canvas(kSize, kSize, 1);
   if (!harness.options().photos.empty()) {  // --photos DIR: those sets alone
     for (const std::string& folder : harness.options().photos)
-      for (Result& r : photo_set_rows(canvas, folder, harness.options().output_dir)) results.push_back(std::move(r));
+      for (Result& r : photo_set_rows(canvas, folder, harness.options().output_dir, harness.options().even_turn)) results.push_back(std::move(r));
     return results;
   }
   if (!fs::exists(kTruck)) {
@@ -403,10 +460,11 @@ std::vector<Result> run_turntable_suite(Harness& harness) {
                  Scores::mean(spin.psnr), Scores::mean(fade.psnr), Scores::mean(tween.psnr), Scores::min(tween.iou));
   }
   fs::remove_all(data);
+  for (Result& r : turn_rows(truck)) results.push_back(std::move(r));
   (void)harness;  // the suite makes its own canvases at the product's size
   const fs::path temple = fs::path(INKWIRE_SHARED_DATA_DIR) / "templeRing";
   if (fs::exists(temple))
-    for (Result& r : photo_set_rows(canvas, temple, harness.options().output_dir)) results.push_back(std::move(r));
+    for (Result& r : photo_set_rows(canvas, temple, harness.options().output_dir, false)) results.push_back(std::move(r));
   else
     std::fprintf(stderr, "inkwire-bench: %s is absent: no templeRing rows\n", temple.c_str());
   return results;
