@@ -3,15 +3,16 @@
 // turn unevenly, and a product that assumes even steps swings and stalls as it is turned.
 //
 // A point of the object at (u, w) on the turntable (u across the picture at the first photo, w
-// toward its camera) turned by a photo's azimuth a appears at x = x0 + u cos(a) - w sin(a)
-// across the picture, whatever the camera's height (its right-hand direction stays level), for a
-// camera far enough for its perspective to be small. So corners tracked through a few photos
-// each follow a sinusoid, and every photo's azimuth, every track's (u, w) and the axis's column
-// x0 are found together by least squares (the factorisation of a one-dimensional affine camera:
-// the unit length of (cos a, sin a) fixes what ratios of steps alone cannot, the absolute turn).
-// A photo's azimuth is fitted from every track through it, so one plain photo does not break the
-// chain; where a photo has too few tracks it keeps the even step. Ratios of steps alone (the
-// sideways moves into the photo before and after) were tried first and drift round the ring.
+// toward its camera) turned by a photo's azimuth a appears at x = x0 + X / (1 - g Z) across the
+// picture, X = u cos(a) - w sin(a), Z = u sin(a) + w cos(a), whatever the camera's height (its
+// right-hand direction stays level; a point's height only scales its track), g being the
+// perspective (0 for a distant camera). So corners tracked through a few photos each follow a
+// sinusoid, and every photo's azimuth, every row's axis column x0 and perspective g and every
+// track's (u, w) are found together by least squares (Levenberg-Marquardt): the unit length of
+// (cos a, sin a) fixes what ratios of neighbouring steps alone cannot, the absolute turn (those
+// were tried first and drift round the ring). A photo's azimuth is fitted from every track
+// through it, so one plain photo does not break the chain; where a photo has too few tracks it
+// is spaced evenly between its fitted neighbours.
 //
 // Which way it turned: seen from the camera the turn reads the same both ways (a -> -a, w -> -w),
 // except for perspective: the nearer side of the object moves more. The fit runs the turn
@@ -21,8 +22,10 @@
 // leaves the turn forward.
 //
 // Tracks: Shi-Tomasi corners followed photo to photo by pyramidal Lucas-Kanade, kept while
-// tracking back lands within half a pixel, on the photos read again at up to kTurnSide pixels
-// (a point moves a few pixels between photos 10 degrees apart: a tenth of a pixel matters).
+// tracking back lands within half a pixel, inside the matte and away from the outline (whose
+// corners slide over the surface instead of turning with it), on the photos read again at up to
+// kTurnSide pixels (a point moves a few pixels between photos 10 degrees apart: a tenth of a
+// pixel matters).
 #include <vector>
 
 #include "server/products/photo_folder.hpp"
