@@ -139,8 +139,9 @@ try:
         wait_for(f"return {element}.shadowRoot.querySelectorAll('.panel select').length > 0", 10)
         time.sleep(0.5)  # the permissions follow the snapshot
         return driver.execute_script(f"""const e = {element}, root = e.shadowRoot;
-          const controls = [...root.querySelectorAll('.panel select, .panel input')];
-          return [controls.length, controls.filter((c) => c.disabled).length, root.querySelector('[part=locked]').textContent, e.canvas.title];""")
+          const controls = [...root.querySelectorAll('.panel select, .panel input')].filter((c) => !('file' in c.dataset));
+          return [controls.length, controls.filter((c) => c.disabled).length, root.querySelector('[part=locked]').textContent, e.canvas.title,
+                  [...root.querySelectorAll('.panel input')].filter((c) => 'file' in c.dataset).map((c) => [c.name, c.disabled])];""")
     def drag():
         driver.execute_script(f"""const c = {element}.canvas, r = c.getBoundingClientRect();
           const at = (type, x) => c.dispatchEvent(new PointerEvent(type, {{pointerId: 1, bubbles: true, clientX: r.left + x, clientY: r.top + 100}}));
@@ -152,15 +153,17 @@ try:
         wait_for(f"return {element}.shadowRoot.querySelector('.message').textContent !== ''", 3)
         time.sleep(1.0)
         return driver.execute_script(f"const e = {element}; return [e.camera.azimuth, e.shadowRoot.querySelector('.message').textContent]")
-    controls, off, note, tooltip = open_scene("lecture")
+    controls, off, note, tooltip, files = open_scene("lecture")
     checks.check(controls > 0 and off == controls and "editors" in note and "editors" in tooltip,
                  f"a student's panel is off from the start with the reason ({off} of {controls} controls off, {note!r}; canvas: {tooltip!r})")
     azimuth, said = drag()
     checks.check(abs(azimuth - 30) < 1 and said == "", f"a student's drag does nothing (azimuth {azimuth:.1f}, {said!r})")
     azimuth, said = set_camera()
     checks.check("Refused" in said and abs(azimuth - 30) < 1, f"a change the student's page makes anyway is refused and undone ({said!r}, azimuth {azimuth:.1f})")
-    controls, off, note, tooltip = open_scene("lecture", 'editor-token="t3acher"')
+    controls, off, note, tooltip, files = open_scene("lecture", 'editor-token="t3acher"')
     checks.check(controls > 0 and off == 0 and note == "" and tooltip == "", f"the editor's panel is on ({off} of {controls} controls off)")
+    checks.check(files and all(disabled for _, disabled in files),
+                 f"a parameter naming a file (which a browser cannot read) is shown, not editable: {files}")
     azimuth, said = drag()
     checks.check(said == "" and abs(azimuth - 90) < 1, f"the editor's drag is taken (azimuth {azimuth:.1f})")
 

@@ -33,6 +33,7 @@ json param_json(const ParamSpec& p) {
   json j = {{"name", p.name}, {"type", to_string(p.type)}, {"default", p.default_value}, {"help", p.help}};
   if (p.type == ParamType::Float || p.type == ParamType::Int) j["min"] = p.min, j["max"] = p.max;
   if (!p.choices.empty()) j["choices"] = p.choices;
+  if (p.names_file) j["file"] = true;  // a path on the machine that draws: the browser cannot read it
   return j;
 }
 

@@ -17,7 +17,7 @@ export class ScenePanel {
 
   applyLock() {
     if (!this.menu) return;
-    for (const control of this.root.querySelectorAll('select, input')) control.disabled = Boolean(this.locked);
+    for (const control of this.root.querySelectorAll('select, input')) control.disabled = Boolean(this.locked) || 'file' in control.dataset;
     this.lockNote.textContent = this.locked ?? '';
     this.lockNote.hidden = !this.locked;
   }
@@ -101,6 +101,13 @@ export class ScenePanel {
       } else {
         input.type = 'text';
         input.size = 10;
+        if (p.file) {
+          // A file on the machine that draws (a shade map, a painting style): a browser cannot
+          // read it. Shown, not editable; a native client can set it.
+          input.dataset.file = '';
+          input.disabled = true;
+          label.title = `${p.help} (a file: set it from the native client)`;
+        }
       }
     }
     input.name = p.name;
