@@ -141,6 +141,11 @@ struct TurnFit {
   std::vector<double> perspective_sigma;  // per row, g's standard error
 };
 
+// How far an observation lies off its track's curve under `fit`, in pixels.
+double off_curve(const TrackPath& t, const Observation& o, const TurnFit& fit) {
+  return o.x - fit.axis[size_t(t.row)] - seen_at(t, fit.azimuth[size_t(o.column)], fit.perspective[size_t(t.row)]).x;
+}
+
 // Every photo's azimuth (the first photo's is 0), every row's axis column and perspective and
 // every track's (u, w) by Levenberg-Marquardt on the tracks' x, the tracks' unknowns
 // eliminated per step (a Schur complement, as bundle adjustment does: a few thousand tracks,
@@ -165,9 +170,7 @@ TurnFit fit_turn(std::vector<TrackPath>& tracks, int n, int rows) {
         for (const Observation& o : t.seen) sum += o.x, ++count;
     axis[size_t(r)] = count ? sum / count : 0;
   }
-  const auto residual = [&](const TrackPath& t, const Observation& o) {
-    return o.x - axis[size_t(t.row)] - seen_at(t, azimuth[size_t(o.column)], perspective[size_t(t.row)]).x;
-  };
+  const auto residual = [&](const TrackPath& t, const Observation& o) { return off_curve(t, o, fit); };
   // One observation's derivatives: by the track's (u, w) and by the shared unknowns it touches
   // (its photo's azimuth unless the first, its row's axis and perspective).
   struct Derivatives {
@@ -190,7 +193,7 @@ TurnFit fit_turn(std::vector<TrackPath>& tracks, int n, int rows) {
     double sum = 0;
     for (const TrackPath& t : tracks)
       for (const Observation& o : t.seen)
-        if (o.inlier) sum += residual(t, o) * residual(t, o);
+        if (o.inlier) sum += std::pow(residual(t, o), 2);
     return sum;
   };
   // Each track's (u, w) from the even azimuths first: the start.
@@ -325,16 +328,13 @@ TurnSteps turn_steps_from_photos(const PhotoFolder& photos) {
   const int rows = photos.rows;
   const TurnFit fit = fit_turn(tracks, n, rows);
   std::vector<double> azimuth = fit.azimuth;
-  const auto residual = [&](const TrackPath& t, const Observation& o) {
-    return o.x - fit.axis[size_t(t.row)] - seen_at(t, azimuth[size_t(o.column)], fit.perspective[size_t(t.row)]).x;
-  };
   TurnSteps out;
   out.tracked.assign(size_t(n), 0);
   double squares = 0;
   int count = 0;
   for (const TrackPath& t : tracks)
     for (const Observation& o : t.seen)
-      if (o.inlier) squares += residual(t, o) * residual(t, o), ++count, ++out.tracked[size_t(o.column)];
+      if (o.inlier) squares += std::pow(off_curve(t, o, fit), 2), ++count, ++out.tracked[size_t(o.column)];
   out.residual = float(std::sqrt(squares / std::max(count, 1)));
 
   // Photos with too few tracks are spaced evenly between the nearest fitted ones either side.
