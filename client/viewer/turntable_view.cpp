@@ -7,6 +7,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "client/render/styles.hpp"
+#include "client/render/tween/matte_sample.hpp"
 #include "common/camera.hpp"
 #include "common/error.hpp"
 
@@ -123,25 +124,12 @@ glm::vec2 TurntableView::sample_angles(int index) const {
 }
 
 Image TurntableView::sample_image(const std::filesystem::path& photo, const std::filesystem::path& matte) {
-  Image image = load_image(photo);
-  if (!matte.empty()) {
-    Image alpha = load_image(matte);
-    const float aspect = float(image.width) / float(image.height), own = float(alpha.width) / float(alpha.height);
-    if (alpha.width > image.width || alpha.height > image.height || std::abs(aspect / own - 1.0f) > 0.01f)
-      throw Error(matte.filename().string() + ": the matte's size does not fit its photo's");
-    // A finer level is laid on white by its first-level matte scaled up so (server/products/matte.cpp key_like).
-    if (alpha.width != image.width || alpha.height != image.height) alpha = resized(alpha, image.width, image.height);
-    // The photo is stored laid over white (as a shop shows it): where the matte covers a pixel
-    // in part, the object's own colour is what is left once the white is taken out.
-    for (size_t i = 0; i < image.pixels.size(); i += 4) {
-      const int a = alpha.pixels[i];
-      image.pixels[i + 3] = uint8_t(a);
-      if (a >= 32 && a < 255)
-        for (int c = 0; c < 3; ++c)
-          image.pixels[i + size_t(c)] = uint8_t(std::clamp((int(image.pixels[i + size_t(c)]) * 255 - (255 - a) * 255 + a / 2) / a, 0, 255));
-    }
+  if (matte.empty()) return load_image(photo);
+  try {
+    return object_on_matte(load_image(photo), load_image(matte));
+  } catch (const Error& e) {
+    throw Error(matte.filename().string() + ": " + e.what());
   }
-  return image;
 }
 
 void TurntableView::add_sample(int index, const Image& image, int level) {

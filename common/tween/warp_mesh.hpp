@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <glm/vec2.hpp>
+#include <glm/ext/vector_double2.hpp>
 
 #include "common/tween/tween_data.hpp"
 
@@ -19,8 +20,11 @@ struct WarpMesh {
   std::vector<std::array<uint32_t, 3>> triangles;
 };
 
-// Delaunay triangles of `points` (OpenCV Subdiv2D) as index triples. Points closer than
+// Delaunay triangles of `points` as index triples (Bowyer-Watson, in the browser too: the same
+// steps in client/web/common/warp_mesh.js pick the same triangles where four points lie on one
+// circle, as the border points do; tests/golden/warp-vectors.json pins it). Points closer than
 // 1/8 pixel to an earlier one are left out of the triangles (they would fold).
+std::vector<std::array<uint32_t, 3>> delaunay_triangles(std::span<const glm::dvec2> points);
 std::vector<std::array<uint32_t, 3>> delaunay_triangles(std::span<const glm::vec2> points);
 
 // Border points every `border_step` pixels or so (corners included), the same in every sample.

@@ -23,6 +23,7 @@
 
 namespace inkwire {
 const std::map<std::string, std::string_view>& web_client_files();    // generated from client/web/
+const std::map<std::string, std::string_view>& web_shader_files();    // client/shaders/tween/blend.*, as shaders/tween/...
 const std::map<std::string, std::string_view>& face_template_files();  // generated from common/face/*.json
 }
 
@@ -247,10 +248,11 @@ asio::awaitable<void> HttpServer::serve(ByteStream accepted) {
     co_await reply(response(200, "OK", "text/plain; version=0.0.4", metrics_text(server_)));
     co_return;
   }
-  if (const auto file = web_client_files().find(path.substr(1)); path.size() > 1 && file != web_client_files().end()) {
-    co_await reply(response(200, "OK", content_type(path), std::string(file->second)));
-    co_return;
-  }
+  for (const auto* files : {&web_client_files(), &web_shader_files()})
+    if (const auto file = files->find(path.substr(1)); path.size() > 1 && file != files->end()) {
+      co_await reply(response(200, "OK", content_type(path), std::string(file->second)));
+      co_return;
+    }
   if (path.rfind("/module/", 0) == 0) {
     const ModuleFile* file = module_file(path.substr(8));
     if (!file) {

@@ -4,8 +4,6 @@
 #include <cmath>
 #include <memory>
 
-#include <opencv2/imgproc.hpp>
-
 #include "common/error.hpp"
 
 namespace inkwire {
@@ -27,54 +25,7 @@ gl::Texture make_sample_texture(const Image& image) {
   return gl::Texture::from_image(premultiplied, {.repeat = false, .mipmaps = false, .linear = true});
 }
 
-Image matte_sample(const Image& image, float scale) {
-  const int w = image.width, h = image.height;
-  cv::Mat inside(h, w, CV_8U), outside(h, w, CV_8U);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const bool in = image.at(x, y)[3] >= 128;
-      inside.at<uint8_t>(y, x) = in ? 255 : 0;
-      outside.at<uint8_t>(y, x) = in ? 0 : 255;
-    }
-  // Distances to the nearest pixel of the other side; labels say which pixel, for bleeding colour.
-  cv::Mat to_object, to_background, nearest_object;
-  cv::distanceTransform(outside, to_object, nearest_object, cv::DIST_L2, cv::DIST_MASK_5, cv::DIST_LABEL_PIXEL);
-  cv::distanceTransform(inside, to_background, cv::DIST_L2, cv::DIST_MASK_5);
-  std::vector<cv::Point> object_pixel_of_label(size_t(w) * h + 1, cv::Point(-1, -1));
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      if (inside.at<uint8_t>(y, x)) object_pixel_of_label[size_t(nearest_object.at<int>(y, x))] = {x, y};
-  Image out = image;
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const bool in = inside.at<uint8_t>(y, x) != 0;
-      // The outline lies half a pixel beyond the last pixel of either side; a pixel the matte
-      // covers in part is that far across it, so a sample shown as it is keeps its soft edge.
-      const int alpha = image.at(x, y)[3];
-      float d = (in ? to_background.at<float>(y, x) - 0.5f : 0.5f - to_object.at<float>(y, x)) / scale;
-      if (alpha > 0 && alpha < 255 && std::abs(d) <= 1.0f) d = float(alpha) / 255.0f - 0.5f;
-      uint8_t* p = out.at(x, y);
-      // Too little of the object in it to trust its colour: the nearest object pixel's, up to
-      // kBleedPixels out (the blend reads a sample's colour only where it sees the object or
-      // nearly); further out the colour is the floor layer on white (SPEC T16), kept, soft edge
-      // or not: a finer level's scaled-up soft edge reaches further, and colour bled there
-      // would show as floor (yellow dots along a zoomed-in outline).
-      if (alpha < 32 && to_object.at<float>(y, x) <= kBleedPixels * scale) {
-        const cv::Point src = object_pixel_of_label[size_t(nearest_object.at<int>(y, x))];
-        if (src.x >= 0) std::copy_n(image.at(src.x, src.y), 3, p);
-      }
-      p[3] = uint8_t(std::lround(std::clamp(0.5f + d / (2.0f * kMatteRange), 0.0f, 1.0f) * 255.0f));
-    }
-  return out;
-}
-
-Image without_floor(Image sample) {
-  for (size_t i = 0; i < sample.pixels.size(); i += 4)
-    if (sample.pixels[i + 3] == 0) sample.pixels[i] = sample.pixels[i + 1] = sample.pixels[i + 2] = 255;
-  return sample;
-}
-
-gl::Texture make_matte_texture(const Image& image, float scale) {
+gl::Texture make_matte_texture(const Image& image, double scale) {
   return gl::Texture::from_image(matte_sample(image, scale), {.repeat = false, .mipmaps = false, .linear = true});
 }
 

@@ -19,6 +19,7 @@
 
 #include "client/gl/canvas.hpp"
 #include "client/gl/resources.hpp"
+#include "client/render/tween/matte_sample.hpp"
 #include "common/image.hpp"
 #include "common/tween/warp_mesh.hpp"
 
@@ -37,20 +38,8 @@ struct WarpSource {
 // A sample image as the warper reads it: premultiplied alpha, linear filtering, no wrap.
 gl::Texture make_sample_texture(const Image& image);
 
-// A sample with a matte (its alpha) as the warper reads it when composing by mattes: colour
-// bled outward past the outline by kBleedPixels, beyond that the floor layer as it looks on
-// white (the sample's own colours where its matte is 0: a shadow, or white), alpha the signed
-// distance to the outline (0.5 on it, +-1 at kMatteRange pixels inside / outside), so it
-// interpolates under a warp and a blend.
-// A finer zoom level of a sample (`scale` texels per pixel of the sample's first level) keeps
-// distances and the bleed in first-level pixels, so levels blend with one another.
-inline constexpr float kMatteRange = 16.0f;
-inline constexpr float kBleedPixels = 1.5f;
-Image matte_sample(const Image& image, float scale = 1.0f);
-// A sample with no floor layer, as matte_sample() reads one: white where its matte is 0 (a
-// render leaves black there, which would read as a black floor).
-Image without_floor(Image sample);
-gl::Texture make_matte_texture(const Image& image, float scale = 1.0f);
+// matte_sample() of `image` as the warper reads it.
+gl::Texture make_matte_texture(const Image& image, double scale = 1.0);
 
 class ImageWarper {
  public:

@@ -139,7 +139,8 @@ void TweenRenderer::set_finer_sample(int index, const Image& image) {
   Finer& finer = finer_[index];
   if (&finer.image != &image) finer.image = image;
   finer.scale = scale;
-  finer.texture = std::make_unique<gl::Texture>(matte_ ? make_matte_texture(image, scale) : make_sample_texture(image));
+  // Its matte texture from the ratio in double precision, as the browser's (the same bytes).
+  finer.texture = std::make_unique<gl::Texture>(matte_ ? make_matte_texture(image, double(image.height) / double(model_.data.height)) : make_sample_texture(image));
 }
 
 void TweenRenderer::drop_finer_sample(int index) {

@@ -4,7 +4,7 @@
 // there. A mixin over SessionElement (STYLE 13: one feature a file, as <model-viewer> does).
 import { decodeTweenCell } from '../../common/tween_data.js';
 import { AssetKind, bytesBy } from '../../net/session.js';
-import { matteSample, scaledMatte } from '../../render/tween/matte_sample.js';
+import { matteSample, objectOnMatte } from '../../render/tween/matte_sample.js';
 import { loadTweenShaders, TweenView } from '../../render/tween/tween_view.js';
 import { decodeImage } from '../session_element.js';
 
@@ -113,7 +113,7 @@ export const LoadingMixin = (Base) => class extends Base {
       const size = level === 0 ? product : product.levels[level - 1];
       const photo = level === 0 ? photos[sample] : zoom[(level - 1) * n + sample];
       if (!photo) throw new Error(`the product lists no photo for sample ${sample}${level ? ` at zoom level ${level}` : ''}`);
-      let matte = mattes[sample] ? await pixels(await session.fetchAsset(mattes[sample]), product.width, product.height) : null;
+      const matte = mattes[sample] ? await pixels(await session.fetchAsset(mattes[sample]), product.width, product.height) : null;
       const photoBytes = await session.fetchAsset(photo);
       // What the first view waits for: the snapshot, one matte and one photo (the tween data the
       // server sends after that photo is for the views between photos).
@@ -121,8 +121,8 @@ export const LoadingMixin = (Base) => class extends Base {
       const rgba = await pixels(photoBytes, size.width, size.height);
       if (this.session !== session) return;
       // A finer level is laid on white by its first-level matte scaled up (server/products/matte.cpp key_like).
-      if (matte && level > 0) matte = scaledMatte(matte, product.width, product.height, size.width, size.height);
-      const texture = matteSample(rgba, matte, size.width, size.height, size.height / product.height);
+      const object = objectOnMatte(rgba, matte, product.width, product.height, size.width, size.height);
+      const texture = matteSample(object, size.width, size.height, size.height / product.height);
       if (level === 0) this.view.setSample(sample, texture);
       else this.view.setFiner(sample, level, texture);
       this.progress();

@@ -145,11 +145,12 @@ export class FaceReconstructor {
     gl.useProgram(p);
     gl.activeTexture(gl.TEXTURE0);
     gl.bindTexture(gl.TEXTURE_2D, this.texture);
-    gl.uniform1i(gl.getUniformLocation(p, 'sample0'), 0);
+    gl.uniform1i(gl.getUniformLocation(p, 'samples[0]'), 0);
     gl.uniform3fv(gl.getUniformLocation(p, 'position_weights'), [0, 1, 0]);
     gl.uniform3iv(gl.getUniformLocation(p, 'source'), [0, 0, 0]);
     gl.uniform3fv(gl.getUniformLocation(p, 'weights'), [1, 0, 0]);
-    gl.uniform2f(gl.getUniformLocation(p, 'sample_size'), width, height + kCavityRows);
+    gl.uniform2f(gl.getUniformLocation(p, 'sample_size[0]'), width, height + kCavityRows);
+    gl.uniform1f(gl.getUniformLocation(p, 'depth'), 0.5);
     gl.uniform4fv(gl.getUniformLocation(p, 'to_clip'), toClip);
     gl.enable(gl.DEPTH_TEST);
     gl.depthFunc(gl.LESS);

@@ -16,16 +16,21 @@ function compile(gl, type, source) {
   return shader;
 }
 
+// What client/gl/resources.cpp shader_header() puts before every shader in the WebAssembly
+// build: the shader files carry no #version, so the C++ client's files serve the browser too.
+const kShaderHeader = '#version 300 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n';
+
 export function program(gl, vertex, fragment, defines) {
-  const prepend = (src) => src.replace(/^(#version[^\n]*\n)/, `$1${defines.map((d) => `#define ${d}\n`).join('')}`);
+  const withHeader = (src) => `${kShaderHeader}${defines.map((d) => `#define ${d}\n`).join('')}${src}`;
   const p = gl.createProgram();
-  gl.attachShader(p, compile(gl, gl.VERTEX_SHADER, prepend(vertex)));
-  gl.attachShader(p, compile(gl, gl.FRAGMENT_SHADER, prepend(fragment)));
+  gl.attachShader(p, compile(gl, gl.VERTEX_SHADER, withHeader(vertex)));
+  gl.attachShader(p, compile(gl, gl.FRAGMENT_SHADER, withHeader(fragment)));
   gl.linkProgram(p);
   if (!gl.getProgramParameter(p, gl.LINK_STATUS)) throw new Error(`TweenView: link: ${gl.getProgramInfoLog(p)}`);
   return p;
 }
 
+// The C++ client's own tween shaders (client/shaders/tween/), which the server serves as they are.
 export async function loadTweenShaders() {
   const get = async (name) => (await fetch(new URL(`../../shaders/tween/${name}`, import.meta.url))).text();
   return { vertex: await get('blend.vert'), fragment: await get('blend.frag') };
@@ -166,7 +171,8 @@ export class TweenView {
   locations(p) {
     if (!p.locations) {
       p.locations = {};
-      for (const name of ['sample0', 'sample1', 'sample2', 'position_weights', 'source', 'weights', 'sample_size', 'to_clip'])
+      for (const name of ['samples[0]', 'samples[1]', 'samples[2]', 'sample_size[0]', 'sample_size[1]', 'sample_size[2]', 'position_weights',
+                          'source', 'weights', 'to_clip', 'depth'])
         p.locations[name] = this.gl.getUniformLocation(p, name);
     }
     return p.locations;
@@ -193,13 +199,14 @@ export class TweenView {
       weights[k] = s.weight;
       gl.activeTexture(gl.TEXTURE0 + k);
       gl.bindTexture(gl.TEXTURE_2D, this.textureOf(s.sample));
-      gl.uniform1i(at[`sample${k}`], k);
+      gl.uniform1i(at[`samples[${k}]`], k);
+      gl.uniform2f(at[`sample_size[${k}]`], width, height);  // control points are in first-level pixels, whatever the level
     });
     gl.uniform3fv(at.position_weights, view.positions);
     gl.uniform3iv(at.source, source);
     gl.uniform3fv(at.weights, weights);
-    gl.uniform2f(at.sample_size, width, height);
     gl.uniform4fv(at.to_clip, toClip);
+    gl.uniform1f(at.depth, 0.5);
     // Folded triangles are written once: depth-tested at one depth against a cleared buffer.
     gl.enable(gl.DEPTH_TEST);
     gl.depthFunc(gl.LESS);

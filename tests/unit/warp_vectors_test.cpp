@@ -1,0 +1,232 @@
+// What the browser's turntable and faces compute in JS as the C++ client does (issue: one
+// implementation of each algorithm; the warps stay in JS for the element's first-view budget,
+// docs/benchmarks.md): the C++ answers for fixed inputs, written to tests/golden/warp-vectors.json
+// and checked by client/web/test/warp.test.js. A change to either side fails one of the two until
+// both agree and the file is approved again (INKWIRE_APPROVE_GOLDEN=1).
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <glm/trigonometric.hpp>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "client/render/tween/matte_sample.hpp"
+#include "common/distance_field.hpp"
+#include "common/face/expression_templates.hpp"
+#include "common/tween/view_sphere.hpp"
+#include "common/tween/warp_mesh.hpp"
+#include "synthetic_face.hpp"
+
+namespace inkwire {
+namespace {
+
+std::string base64(const std::vector<uint8_t>& bytes) {
+  static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (size_t i = 0; i < bytes.size(); i += 3) {
+    const uint32_t n = uint32_t(bytes[i]) << 16 | (i + 1 < bytes.size() ? uint32_t(bytes[i + 1]) << 8 : 0) | (i + 2 < bytes.size() ? bytes[i + 2] : 0);
+    for (size_t k = 0; k < 4; ++k) out += i + k <= bytes.size() ? digits[(n >> (18 - 6 * k)) & 63] : '=';
+  }
+  return out;
+}
+
+// A deterministic stream in [0, 1): the same points on every run and machine.
+struct Lcg {
+  uint32_t state = 12345;
+  double next() { return double((state = state * 1664525u + 1013904223u) >> 8) / double(1 << 24); }
+};
+
+nlohmann::json triangles_json(const std::vector<std::array<uint32_t, 3>>& triangles) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& t : triangles) out.push_back({t[0], t[1], t[2]});
+  return out;
+}
+
+// Point sets with what makes triangulations differ: four points on a circle (a grid, the image
+// border), points nearer than 1/8 pixel, collinear rows.
+nlohmann::json delaunay_cases() {
+  nlohmann::json cases = nlohmann::json::array();
+  std::vector<glm::dvec2> grid;
+  for (int y = 0; y < 5; ++y)
+    for (int x = 0; x < 6; ++x) grid.push_back({40.0 * x, 30.0 * y});
+  Lcg random;
+  std::vector<glm::dvec2> scattered;
+  for (int i = 0; i < 80; ++i) scattered.push_back({random.next() * 512, random.next() * 384});
+  for (int i = 0; i < 10; ++i) scattered.push_back(scattered[size_t(i) * 7] + glm::dvec2(random.next() * 0.08, random.next() * 0.08));
+  for (const glm::vec2& b : border_points(512, 384)) scattered.push_back(b);
+  std::vector<glm::dvec2> line{{0, 0}, {10, 0}, {20, 0}, {30, 0}, {15, 10}, {15, -10}, {15, 0.05}};
+  for (const auto& [name, points] : {std::pair{"grid", grid}, {"scattered with near twins and the border", scattered}, {"a row", line}}) {
+    nlohmann::json p = nlohmann::json::array();
+    for (const glm::dvec2& v : points) p.push_back({v.x, v.y});
+    cases.push_back({{"name", name}, {"points", p}, {"triangles", triangles_json(delaunay_triangles(points))}});
+  }
+  return cases;
+}
+
+// Cells as tween data carries them (positions in 1/8 pixels), a pair and a triangle.
+nlohmann::json warp_mesh_cases() {
+  nlohmann::json cases = nlohmann::json::array();
+  Lcg random;
+  for (const std::vector<uint16_t>& samples : {std::vector<uint16_t>{0, 1}, std::vector<uint16_t>{0, 1, 2}}) {
+    TweenCell cell{.samples = samples, .points = {}};
+    for (int i = 0; i < 40; ++i) {
+      ControlPoint p;
+      for (glm::vec2& v : p) v = glm::vec2(std::floor(random.next() * 4096) / 8, std::floor(random.next() * 3072) / 8);
+      cell.points.push_back(p);
+    }
+    nlohmann::json points = nlohmann::json::array();
+    for (const ControlPoint& p : cell.points) points.push_back({{p[0].x, p[0].y}, {p[1].x, p[1].y}, {p[2].x, p[2].y}});
+    const WarpMesh mesh = build_warp_mesh(cell, 512, 384);
+    cases.push_back({{"samples", samples}, {"points", points}, {"width", 512}, {"height", 384},
+                     {"mesh_points", mesh.points.size()}, {"triangles", triangles_json(mesh.triangles)}});
+  }
+  return cases;
+}
+
+// A product photo as a shop's: an ellipse of graded colour with a soft edge and a soft shadow
+// below, laid over white; its matte; the same photo at twice the size for a finer zoom level.
+nlohmann::json matte_cases() {
+  nlohmann::json cases = nlohmann::json::array();
+  const int w = 48, h = 36;
+  Image matte(w, h, {0, 0, 0, 255});
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const double r = std::hypot((x + 0.5 - 22) / 15, (y + 0.5 - 15) / 10);
+      const uint8_t a = uint8_t(std::clamp((1.0 - r) * 10.0 * 255.0, 0.0, 255.0));
+      uint8_t* p = matte.at(x, y);
+      p[0] = p[1] = p[2] = a;
+    }
+  for (const int level : {1, 2}) {
+    Image photo(w * level, h * level);
+    for (int y = 0; y < photo.height; ++y)
+      for (int x = 0; x < photo.width; ++x) {
+        const double fx = (x + 0.5) / level, fy = (y + 0.5) / level;
+        const double r = std::hypot((fx - 22) / 15, (fy - 15) / 10);
+        const double object = std::clamp((1.0 - r) * 10.0, 0.0, 1.0);
+        const double shadow = 0.35 * std::max(0.0, 1.0 - std::hypot((fx - 22) / 18, (fy - 27) / 4));
+        const double colour[3] = {200 - 3 * fx, 60 + 4 * fy, 90.0};
+        uint8_t* p = photo.at(x, y);
+        for (int c = 0; c < 3; ++c) p[c] = uint8_t(std::lround(object * colour[c] + (1 - object) * 255 * (1 - shadow)));
+        p[3] = 255;
+      }
+    const Image object = object_on_matte(photo, matte);
+    const double scale = double(photo.height) / double(h);
+    cases.push_back({{"width", photo.width}, {"height", photo.height}, {"matte_width", w}, {"matte_height", h}, {"scale", scale},
+                     {"photo", base64(photo.pixels)}, {"matte", base64(matte.pixels)}, {"object", base64(object.pixels)},
+                     {"sample", base64(matte_sample(object, scale).pixels)}});
+  }
+  return cases;
+}
+
+nlohmann::json distance_case() {
+  const int w = 23, h = 17;
+  std::vector<uint8_t> seed(size_t(w) * h, 0);
+  // Seeds that make ties: a pair in a row, a pair in a column, a diagonal run, a lone corner.
+  for (const auto& [x, y] : {std::pair{5, 8}, {17, 8}, {0, 16}, {11, 2}, {12, 3}, {13, 4}, {22, 0}, {20, 10}, {20, 16}}) seed[size_t(y) * w + size_t(x)] = 1;
+  const DistanceField field = distance_to_seeds(seed, w, h);
+  return {{"width", w}, {"height", h}, {"seed", seed}, {"distance", field.distance}, {"nearest", field.nearest}};
+}
+
+// A ring of 12 at the equator under a ring of 12 at 30 degrees, joined by triangles as rows are.
+nlohmann::json locate_cases() {
+  TweenData data;
+  data.directions = ring_directions(12);
+  for (const glm::vec3& d : ring_directions(12, 30.0f)) data.directions.push_back(d);
+  for (const auto& c : ring_cells(12)) data.cells.push_back({.samples = c, .points = {}});
+  for (uint16_t i = 0; i < 12; ++i) {
+    const uint16_t next = uint16_t((i + 1) % 12);
+    data.cells.push_back({.samples = {i, next, uint16_t(12 + i)}, .points = {}});
+    data.cells.push_back({.samples = {next, uint16_t(12 + next), uint16_t(12 + i)}, .points = {}});
+  }
+  nlohmann::json directions = nlohmann::json::array(), cells = nlohmann::json::array(), views = nlohmann::json::array();
+  for (const glm::vec3& d : data.directions) directions.push_back({d.x, d.y, d.z});
+  for (const TweenCell& c : data.cells) cells.push_back(c.samples);
+  for (const auto& [azimuth, elevation] : {std::pair{7.0f, 0.0f}, {100.0f, 0.0f}, {200.0f, 10.0f}, {-45.0f, 22.0f}, {80.0f, 60.0f}, {13.0f, -20.0f}}) {
+    const float a = glm::radians(azimuth), e = glm::radians(elevation);
+    const glm::vec3 d(std::sin(a) * std::cos(e), std::sin(e), std::cos(a) * std::cos(e));
+    const CellLocation at = locate_view(data, d);
+    views.push_back({{"direction", {d.x, d.y, d.z}}, {"cell", at.cell}, {"inside", at.inside}, {"t", at.t}, {"weights", at.weights}});
+  }
+  return {{"directions", directions}, {"cells", cells}, {"views", views}};
+}
+
+nlohmann::json face_cases() {
+  const FaceLandmarks neutral = test::synthetic_face(test::FacePose{}, {160, 120}, 60, 0.2f);
+  nlohmann::json points = nlohmann::json::array(), moved = nlohmann::json::array();
+  for (const glm::vec2& p : neutral) points.push_back({p.x, p.y});
+  for (const auto& [expression, intensity] : {std::pair{Expression::Smile, 255}, {Expression::Surprise, 128}, {Expression::VisemeOpen, 200}, {Expression::WinkLeft, 40}}) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const glm::vec2& p : apply_expression(neutral, shipped_templates(), {expression, uint8_t(intensity)})) out.push_back({p.x, p.y});
+    moved.push_back({{"code", int(expression)}, {"intensity", intensity}, {"landmarks", out}});
+  }
+  return {{"neutral", points}, {"expressions", moved}};
+}
+
+TEST(WarpVectorsTest, GoldenVectorsForTheWebClientAreTheseNumbers) {
+  const nlohmann::json golden = {{"delaunay", delaunay_cases()}, {"warp_meshes", warp_mesh_cases()}, {"distance_field", distance_case()},
+                                 {"matte_samples", matte_cases()}, {"locate_view", locate_cases()}, {"faces", face_cases()}};
+  const std::filesystem::path file = std::filesystem::path(INKWIRE_GOLDEN_DIR) / "warp-vectors.json";
+  if (const char* approve = std::getenv("INKWIRE_APPROVE_GOLDEN"); approve && std::string(approve) == "1") {
+    std::ofstream(file) << golden.dump() << "\n";
+    GTEST_SKIP() << "approved " << file;
+  }
+  std::ifstream in(file);
+  ASSERT_TRUE(in) << file << " is missing: approve it with INKWIRE_APPROVE_GOLDEN=1";
+  const nlohmann::json stored = nlohmann::json::parse(in);
+  for (const auto& [key, value] : golden.items())
+    EXPECT_EQ(stored.at(key), value) << key << " changed: make client/web agree (node --test client/web/test/) and approve " << file;
+}
+
+// The properties the vectors stand for, so an approved file cannot hold a wrong answer.
+TEST(WarpVectorsTest, TheDistanceFieldIsExactAndNamesANearestSeed) {
+  const nlohmann::json c = distance_case();
+  const int w = c["width"], h = c["height"];
+  const std::vector<uint8_t> seed = c["seed"];
+  const std::vector<double> distance = c["distance"];
+  const std::vector<int32_t> nearest = c["nearest"];
+  for (int i = 0; i < w * h; ++i) {
+    double best = 1e9;
+    for (int s = 0; s < w * h; ++s)
+      if (seed[size_t(s)]) best = std::min(best, std::hypot(double(i % w - s % w), double(i / w - s / w)));
+    EXPECT_DOUBLE_EQ(distance[size_t(i)], best) << "pixel " << i;
+    const int s = nearest[size_t(i)];
+    ASSERT_TRUE(s >= 0 && seed[size_t(s)]) << "pixel " << i;
+    EXPECT_DOUBLE_EQ(std::hypot(double(i % w - s % w), double(i / w - s / w)), best) << "pixel " << i;
+  }
+  EXPECT_EQ(distance_to_seeds(std::vector<uint8_t>(12, 0), 4, 3).nearest, std::vector<int32_t>(12, -1));
+}
+
+TEST(WarpVectorsTest, DelaunayTrianglesHaveNoPointInsideTheirCircleAndCoverTheBorder) {
+  for (const nlohmann::json& c : delaunay_cases()) {
+    std::vector<glm::dvec2> points;
+    for (const auto& p : c["points"]) points.push_back({p[0].get<double>(), p[1].get<double>()});
+    glm::dvec2 lo(1e9), hi(-1e9);
+    for (const glm::dvec2& p : points) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    const double extent = std::max(hi.x - lo.x, hi.y - lo.y);
+    std::vector<bool> vertex(points.size(), false);
+    for (const auto& t : c["triangles"])
+      for (const auto& v : t) vertex[v.get<size_t>()] = true;
+    double area = 0;
+    for (const auto& t : c["triangles"]) {
+      const glm::dvec2 a = points[t[0]], b = points[t[1]], d = points[t[2]];
+      const double twice = (b.x - a.x) * (d.y - a.y) - (b.y - a.y) * (d.x - a.x);
+      area += std::abs(twice) / 2;
+      // No vertex strictly inside the circumcircle (in-circle determinant, orientation-corrected;
+      // four points on one circle give 0 up to rounding).
+      for (size_t i = 0; i < points.size(); ++i) {
+        if (!vertex[i]) continue;  // a near twin left out
+        const glm::dvec2 u = a - points[i], v = b - points[i], q = d - points[i];
+        const double in = (u.x * u.x + u.y * u.y) * (v.x * q.y - q.x * v.y) - (v.x * v.x + v.y * v.y) * (u.x * q.y - q.x * u.y) +
+                          (q.x * q.x + q.y * q.y) * (u.x * v.y - v.x * u.y);
+        EXPECT_LE(in * (twice > 0 ? 1 : -1), 1e-9 * std::pow(extent, 4)) << c["name"] << ": point " << i;
+      }
+    }
+    if (c["name"] != "a row") EXPECT_NEAR(area, (hi.x - lo.x) * (hi.y - lo.y), 1e-6 * (hi.x - lo.x) * (hi.y - lo.y)) << c["name"];
+  }
+}
+
+}  // namespace
+}  // namespace inkwire
