@@ -1,6 +1,6 @@
 # The rendering library's sources that the native build and the browser's WebAssembly module
 # (client/web/module) both compile: one list, so the two draw from the same code (SPEC W5).
-# Paths relative to client/. The native build adds its contexts, the tween and faces.
+# Paths relative to client/. The native build adds its contexts and the faces.
 set(INKWIRE_SHARED_RENDER_SOURCES
   gl/canvas.cpp
   gl/gl.cpp
@@ -37,10 +37,16 @@ set(INKWIRE_SHARED_RENDER_SOURCES
   render/sketch/stroke_textures.cpp
   render/sketch/textured_sketcher.cpp
   render/styles.cpp
+  render/tween/image_warper.cpp
+  render/tween/matte_sample.cpp
+  render/tween/mesh_samples.cpp
+  render/tween/pair_tween.cpp
+  render/tween/tween_renderer.cpp
   render/wide_lines.cpp)
 # What of common/ they need (paths relative to common/).
 set(INKWIRE_SHARED_COMMON_SOURCES
   camera.cpp
+  distance_field.cpp
   edge_chains.cpp
   glb_mesh.cpp
   image.cpp
@@ -50,4 +56,7 @@ set(INKWIRE_SHARED_COMMON_SOURCES
   mesh_welder.cpp
   orientation.cpp
   style_params.cpp
-  topology.cpp)
+  topology.cpp
+  tween/tween_data.cpp
+  tween/view_sphere.cpp
+  tween/warp_mesh.cpp)

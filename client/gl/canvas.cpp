@@ -58,16 +58,66 @@ Image Canvas::read(int x, int y, int width, int height) const {
   return image;
 }
 
+// WebGL2 reads no depth back (readPixels takes colour only), so both targets read it the way
+// WebGL2 can: the depth copied into a depth texture, drawn into colour as its 24 bits (red the
+// highest), and read as colour.
+struct Canvas::DepthCopy {
+  DepthCopy(int width, int height)
+      : depth(Texture::depth_stencil(width, height)),
+        depth_fbo(Framebuffer::create()),
+        packed(Renderbuffer::create(GL_RGBA8, width, height, 0)),
+        packed_fbo(Framebuffer::create()),
+        program(Program::from_files({"common/packed_depth.vert", "common/packed_depth.frag"})),
+        empty(VertexArray::create()) {
+    depth_fbo.bind();
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, depth.id(), 0);
+    depth_fbo.check_complete("Canvas depth copy");
+    packed_fbo.bind();
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, packed.id());
+    packed_fbo.check_complete("Canvas packed depth");
+  }
+  Texture depth;
+  Framebuffer depth_fbo;
+  Renderbuffer packed;
+  Framebuffer packed_fbo;
+  Program program;
+  VertexArray empty;
+};
+
+Canvas::Canvas(Canvas&&) noexcept = default;
+Canvas& Canvas::operator=(Canvas&&) noexcept = default;
+Canvas::~Canvas() = default;
+
 std::vector<float> Canvas::read_depth() const {
   if (samples_ > 1) throw Error("Canvas::read_depth(): multisampled depth cannot be read back");
+  if (!depth_copy_) depth_copy_ = std::make_unique<DepthCopy>(width_, height_);
+  const DepthCopy& copy = *depth_copy_;
   draw_fbo_.bind(GL_READ_FRAMEBUFFER);
-  std::vector<float> depth(size_t(width_) * height_);
+  copy.depth_fbo.bind(GL_DRAW_FRAMEBUFFER);
+  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT, GL_NEAREST);
+  copy.packed_fbo.bind();
+  glViewport(0, 0, width_, height_);
+  const GLboolean depth_test = glIsEnabled(GL_DEPTH_TEST), blend = glIsEnabled(GL_BLEND);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  copy.program.use();
+  copy.depth.bind(0);
+  copy.program.set("depth", 0);
+  copy.empty.bind();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  if (depth_test) glEnable(GL_DEPTH_TEST);
+  if (blend) glEnable(GL_BLEND);
+  std::vector<uint8_t> bytes(size_t(width_) * size_t(height_) * 4);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
   check_error("Canvas::read_depth");
-  std::vector<float> upright(depth.size());
+  std::vector<float> upright(size_t(width_) * size_t(height_));
   for (int y = 0; y < height_; ++y)
-    std::copy_n(&depth[size_t(height_ - 1 - y) * width_], width_, &upright[size_t(y) * width_]);
+    for (int x = 0; x < width_; ++x) {
+      const uint8_t* p = &bytes[(size_t(height_ - 1 - y) * size_t(width_) + size_t(x)) * 4];  // GL rows run bottom-up
+      upright[size_t(y) * size_t(width_) + size_t(x)] = float(double(uint32_t(p[0]) << 16 | uint32_t(p[1]) << 8 | p[2]) / 16777215.0);
+    }
   bind();
   return upright;
 }

@@ -24,6 +24,7 @@
   X(PFNGLCLEARSTENCILPROC, glClearStencil)                                   \
   X(PFNGLENABLEPROC, glEnable)                                               \
   X(PFNGLDISABLEPROC, glDisable)                                             \
+  X(PFNGLISENABLEDPROC, glIsEnabled)                                         \
   X(PFNGLDEPTHFUNCPROC, glDepthFunc)                                         \
   X(PFNGLDEPTHMASKPROC, glDepthMask)                                         \
   X(PFNGLCOLORMASKPROC, glColorMask)                                         \

@@ -154,6 +154,17 @@ Texture Texture::lookup_row(const std::vector<glm::u8vec4>& texels, bool linear)
   return t;
 }
 
+Texture Texture::depth_stencil(int width, int height) {
+  Texture t = create_bound(GL_TEXTURE_2D);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, width, height, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, nullptr);
+  // GLSL ES 3.00 reads a depth texture only when it is complete with nearest filtering.
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  t.width_ = width;
+  t.height_ = height;
+  return t;
+}
+
 Texture Texture::data_rows(const std::vector<glm::vec4>& texels) {
   Texture t = create_bound(GL_TEXTURE_2D);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);  // float textures filter on neither

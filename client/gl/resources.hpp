@@ -108,6 +108,8 @@ class Texture : public Handle<delete_texture> {
   // laid kDataTextureWidth to a row. What storage buffers do on desktop GL, which WebGL2 lacks.
   static Texture data_rows(const std::vector<glm::vec4>& texels);
   static constexpr int kDataTextureWidth = 1024;
+  // A 24-bit depth and 8-bit stencil target a shader can read (texelFetch), nearest-filtered.
+  static Texture depth_stencil(int width, int height);
   // Replaces a data texture's texels (per-frame data), reallocating only when it must grow.
   void update_rows(const std::vector<glm::vec4>& texels);
   // Replaces a 2D texture's texels (per-frame images: captures, video frames); reallocates

@@ -11,9 +11,7 @@
 #include "client/render/sketch/recursive_sketcher.hpp"
 #include "client/render/sketch/segment_sketcher.hpp"
 #include "client/render/sketch/textured_sketcher.hpp"
-#ifndef __EMSCRIPTEN__
 #include "client/render/tween/tween_renderer.hpp"
-#endif
 #include "common/error.hpp"
 
 namespace inkwire {
@@ -51,21 +49,10 @@ const std::vector<StyleInfo>& styles() {
        .redraw_hz = kBrushMotionHz, .in_effect = &painterly_settings_in_effect, .ground = &painterly_ground},
       {.name = "oil-filter", .summary = "the classic oil-paint image filter over a reference rendering: the baseline brushes must beat", .default_backdrop = "canvas",
        .params = &OilFilterRenderer::params, .create = [] { return std::make_unique<OilFilterRenderer>(); }},
-#ifndef __EMSCRIPTEN__
       {.name = "tween", .summary = "super-realistic: views synthesised by warping sample images (rendered from the mesh, or photos) along control points", .default_backdrop = "#d9dde3",
        .params = &TweenRenderer::params, .create = [] { return std::make_unique<TweenRenderer>(); }},
-#endif
   };
   return all;
-}
-
-std::map<std::string, std::string> styles_not_in_this_build() {
-#ifdef __EMSCRIPTEN__
-  return {{"tween", "draws views warped between sample images, which needs OpenCV (triangulation, distance transform): "
-                    "not in the browser's build; products turn in <inkwire-turntable>"}};
-#else
-  return {};
-#endif
 }
 
 const StyleInfo& find_style(const std::string& name) {
@@ -74,7 +61,6 @@ const StyleInfo& find_style(const std::string& name) {
     if (s.name == name) return s;
     known += (known.empty() ? "" : ", ") + s.name;
   }
-  if (const auto missing = styles_not_in_this_build(); missing.count(name)) throw Error("style '" + name + "' " + missing.at(name));
   throw Error("unknown style '" + name + "' (known: " + known + ")");
 }
 

@@ -29,10 +29,6 @@ struct StyleInfo {
 
 const std::vector<StyleInfo>& styles();
 
-// The styles the native client draws that this build does not, with why (the browser's module
-// leaves out the tween, whose warp needs OpenCV): empty natively.
-std::map<std::string, std::string> styles_not_in_this_build();
-
 // Throws inkwire::Error listing the known names when `name` is not one of them.
 const StyleInfo& find_style(const std::string& name);
 

@@ -20,8 +20,7 @@ namespace inkwire::bench {
 std::vector<Result> run_web_scene_suite(Harness& harness) {
   namespace fs = std::filesystem;
   std::vector<std::string> names;
-  for (const StyleInfo& s : styles())
-    if (s.name != "tween") names.push_back(s.name);  // the tween draws products: not in the browser's build
+  for (const StyleInfo& s : styles()) names.push_back(s.name);
   names.push_back("hatching+sketch-pencil");
 
   const fs::path script = fs::path(INKWIRE_SOURCE_DIR) / "tests/web/web_scene_bench.py";

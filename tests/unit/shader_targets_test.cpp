@@ -30,6 +30,7 @@ std::vector<ProgramVariant> every_program() {
       {{"comic/edges.vert", "comic/edges.frag"}, {}},
       {{"comic/outline.vert", "comic/outline.frag"}, {}},
       {{"common/depth_only.vert", "common/depth_only.frag"}, {}},
+      {{"common/packed_depth.vert", "common/packed_depth.frag"}, {}},
       {{"default/mesh.vert", "default/mesh.frag"}, {}},
       {{"default/mesh.vert", "default/mesh.frag"}, {"TEXTURED 1"}},
       {{"hidden-line/lines.vert", "hidden-line/lines.frag"}, {}},

@@ -29,13 +29,12 @@ if not os.path.exists(MESH):
 if not os.path.exists(os.path.join(BIN, "web", "inkwire-scene.wasm")):
     skip("the server was built without the browser's renderer (-DINKWIRE_BUILD_WEB_MODULE=OFF)")
 WIDTH, HEIGHT = 620, 500
-# Every style of the browser build (the tween draws products, and is left out of it), joined
-# styles, and variants drawn by other code paths.
+# Every style the native client draws, joined styles, and variants drawn by other code paths.
 STYLES = [("default", []), ("hidden-line", []), ("comic", []), ("comic", ["outline=backfaces"]),
           ("comic-extended", []), ("comic-extended", ["orientation=triangle-exact"]), ("sketch-recursive", []),
           ("sketch-segments", []), ("sketch-pencil", []), ("sketch-charcoal", []), ("sketch-chalk", []), ("hatching", []),
           ("hatching", ["variant=multipass"]), ("hatching", ["variant=3d-texture"]), ("painterly", []), ("oil-filter", []),
-          ("hatching+sketch-pencil", [])]
+          ("tween", []), ("hatching+sketch-pencil", [])]
 checks = Checks()
 os.makedirs(OUT, exist_ok=True)
 data = os.path.join(OUT, "data")

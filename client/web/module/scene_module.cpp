@@ -138,12 +138,12 @@ class SceneView {
   long frame_ = 0;
 };
 
-// Every style this build draws and those it cannot, with why: {"styles": [{name, summary}],
-// "unavailable": {name: reason}}. A style's parameters: style_params_json().
+// Every style the native client draws, as the browser draws them too: {"styles": [{name,
+// summary}]}. A style's parameters: style_params_json().
 std::string styles_json() {
   json list = json::array();
   for (const StyleInfo& s : styles()) list.push_back({{"name", s.name}, {"summary", s.summary}});
-  return json{{"styles", list}, {"unavailable", styles_not_in_this_build()}}.dump();
+  return json{{"styles", list}}.dump();
 }
 
 // The parameters of a style or joined style ("hatching+sketch-pencil"), or {"error": reason}.

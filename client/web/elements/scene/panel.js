@@ -36,18 +36,8 @@ export class ScenePanel {
       option.title = style.summary;
       this.menu.add(option);
     }
-    for (const [name, reason] of Object.entries(list.unavailable)) {
-      const option = new Option(`${name} (not in the browser)`, name);
-      option.disabled = true;
-      option.title = reason;
-      this.menu.add(option);
-    }
     this.menu.addEventListener('change', () => this.changed(this.menu.value, {}));
     this.root.append(this.menu);
-    this.notes = document.createElement('div');
-    this.notes.className = 'note';
-    this.notes.textContent = Object.entries(list.unavailable).map(([name, reason]) => `${name}: ${reason}`).join(' ');
-    this.root.append(this.notes);
     this.fields = document.createElement('div');
     this.root.append(this.fields);
     this.applyLock();
