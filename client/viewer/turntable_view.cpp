@@ -34,7 +34,7 @@ TurntableOrbit TurntableOrbit::from_pose(const protocol::ObjectPose& pose) {
   // The decoder has checked the rotation is a unit quaternion and the scale positive.
   const glm::quat turn(pose.rotation.w, pose.rotation.x, pose.rotation.y, pose.rotation.z);
   TurntableOrbit view = from_direction(glm::normalize(glm::conjugate(turn) * glm::vec3(0, 0, 1)));
-  view.zoom = std::clamp(pose.scale, 0.05f, 4.0f);
+  view.zoom = std::clamp(pose.scale, kMinZoom, kMaxZoom);
   return view;
 }
 

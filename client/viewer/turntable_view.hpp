@@ -20,6 +20,10 @@ namespace inkwire {
 // A visitor's view of a product: azimuth from the first sample's direction (turning as the
 // samples do), elevation, and zoom (1: the photos' own scale).
 struct TurntableOrbit {
+  // How far a visitor zooms, in the window, the element (client/web/common/turntable_pose.js,
+  // pinned by tests/golden/warp-vectors.json) and shared poses alike: from half the photos' own
+  // scale (the whole product with room round it) to four times (a 2048-pixel level's detail).
+  static constexpr float kMinZoom = 0.5f, kMaxZoom = 4.0f;
   float azimuth = 0.0f, elevation = 0.0f, zoom = 1.0f;
   glm::vec3 direction() const;
   // The view from unit direction `d` (the inverse of direction()), at zoom 1.

@@ -162,6 +162,8 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
         inertia.stop();
         dirty = true;
       }
+      // The wheel moves the orbit's distance as in a scene; a product zooms within its own range.
+      orbit.distance = 1.0f / std::clamp(1.0f / orbit.distance, TurntableOrbit::kMinZoom, TurntableOrbit::kMaxZoom);
       sync.view().orbit() = {.azimuth = orbit.azimuth, .elevation = orbit.elevation, .zoom = 1.0f / orbit.distance};
       if (present && !(sync.view().orbit() == presented)) {
         presented = sync.view().orbit();

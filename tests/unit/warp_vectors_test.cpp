@@ -8,12 +8,14 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <tuple>
 
 #include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "client/render/tween/matte_sample.hpp"
+#include "client/viewer/turntable_view.hpp"
 #include "common/distance_field.hpp"
 #include "common/face/expression_templates.hpp"
 #include "common/tween/view_sphere.hpp"
@@ -165,9 +167,23 @@ nlohmann::json face_cases() {
   return {{"neutral", points}, {"expressions", moved}};
 }
 
+// A visitor's view shared as a pose (presenter mode) and a shared pose's zoom held to the range.
+nlohmann::json turntable_cases() {
+  nlohmann::json poses = nlohmann::json::array();
+  for (const auto& [azimuth, elevation, zoom] : {std::tuple{30.0f, 20.0f, 1.5f}, {0.0f, 0.0f, 1.0f}, {-170.0f, 40.0f, 0.5f}, {95.0f, -80.0f, 4.0f}}) {
+    const protocol::ObjectPose pose = TurntableOrbit{.azimuth = azimuth, .elevation = elevation, .zoom = zoom}.pose(7);
+    poses.push_back({{"view", {azimuth, elevation, zoom}}, {"rotation", {pose.rotation.x, pose.rotation.y, pose.rotation.z, pose.rotation.w}}});
+  }
+  nlohmann::json held = nlohmann::json::array();
+  for (const float scale : {0.1f, 1.25f, 9.0f})
+    held.push_back({scale, TurntableOrbit::from_pose({.sequence = 0, .rotation = {0, 0, 0, 1}, .translation = glm::vec3(0.0f), .scale = scale}).zoom});
+  return {{"zoom_range", {TurntableOrbit::kMinZoom, TurntableOrbit::kMaxZoom}}, {"poses", poses}, {"zoom_of_scale", held}};
+}
+
 TEST(WarpVectorsTest, GoldenVectorsForTheWebClientAreTheseNumbers) {
   const nlohmann::json golden = {{"delaunay", delaunay_cases()}, {"warp_meshes", warp_mesh_cases()}, {"distance_field", distance_case()},
-                                 {"matte_samples", matte_cases()}, {"locate_view", locate_cases()}, {"faces", face_cases()}};
+                                 {"matte_samples", matte_cases()}, {"locate_view", locate_cases()}, {"faces", face_cases()},
+                                 {"turntable", turntable_cases()}};
   const std::filesystem::path file = std::filesystem::path(INKWIRE_GOLDEN_DIR) / "warp-vectors.json";
   if (const char* approve = std::getenv("INKWIRE_APPROVE_GOLDEN"); approve && std::string(approve) == "1") {
     std::ofstream(file) << golden.dump() << "\n";

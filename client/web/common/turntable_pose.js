@@ -3,6 +3,9 @@
 // product (without roll) so that the first sample's direction, (0, 0, 1), sees it as this view
 // does; the zoom as its scale. Angles in degrees; quaternions [x, y, z, w].
 const kRadiansPerHalfDegree = Math.PI / 360;
+// How far a visitor zooms (TurntableOrbit::kMinZoom, kMaxZoom): the element's wheel and pinch and
+// shared poses alike.
+export const kMinZoom = 0.5, kMaxZoom = 4;
 
 export function poseOfView(azimuth, elevation, zoom, sequence = 0) {
   // Turning by -azimuth about the vertical, then by elevation about the horizontal.
@@ -19,6 +22,6 @@ export function viewOfPose({ rotation: [x, y, z, w], scale }) {
   return {
     azimuth: (Math.atan2(d[0], d[2]) * 180) / Math.PI,
     elevation: (Math.asin(Math.min(Math.max(d[1] / length, -1), 1)) * 180) / Math.PI,
-    zoom: Math.min(Math.max(scale, 0.05), 4),
+    zoom: Math.min(Math.max(scale, kMinZoom), kMaxZoom),
   };
 }

@@ -1,10 +1,11 @@
 // Presenter mode's shared view (common/turntable_pose.js) against the C++ one
-// (TurntableOrbitTest in tests/e2e/turntable_e2e_test.cpp checks the same numbers): a view comes
+// (tests/golden/warp-vectors.json, written by WarpVectorsTest): a view comes
 // back from its pose, and a pose is the same quaternion in both. Run: node --test client/web/test/
 import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
 import { test } from 'node:test';
 
-import { poseOfView, viewOfPose } from '../common/turntable_pose.js';
+import { kMaxZoom, kMinZoom, poseOfView, viewOfPose } from '../common/turntable_pose.js';
 import { decodeFrame, encode } from '../protocol/messages.js';
 
 test('a view shared as a pose comes back as the same view, through the codec too', () => {
@@ -18,8 +19,13 @@ test('a view shared as a pose comes back as the same view, through the codec too
   }
 });
 
-test('the pose is the C++ client\'s quaternion', () => {
-  const { rotation, scale } = poseOfView(30, 20, 1.5);
-  [0.167731, -0.254887, -0.044943, 0.951251].forEach((v, i) => assert.ok(Math.abs(rotation[i] - v) < 1e-6, `rotation[${i}] ${rotation[i]}`));
-  assert.equal(scale, 1.5);
+test('the pose is the C++ client\'s quaternion and a shared zoom is held to the C++ range', () => {
+  const golden = JSON.parse(readFileSync(new URL('../../../tests/golden/warp-vectors.json', import.meta.url))).turntable;
+  for (const { view: [azimuth, elevation, zoom], rotation } of golden.poses) {
+    const pose = poseOfView(azimuth, elevation, zoom);
+    rotation.forEach((v, i) => assert.ok(Math.abs(pose.rotation[i] - v) < 1e-6, `rotation[${i}] ${pose.rotation[i]} against ${v}`));
+    assert.equal(pose.scale, zoom);
+  }
+  assert.deepEqual([kMinZoom, kMaxZoom], golden.zoom_range);
+  for (const [scale, zoom] of golden.zoom_of_scale) assert.equal(viewOfPose({ rotation: [0, 0, 0, 1], scale }).zoom, Math.fround(zoom));
 });

@@ -4,6 +4,8 @@
 // AbortSignal and go when the element leaves the page (STYLE 17), so an element moved in the
 // page turns once as far, never twice.
 
+import { kMaxZoom, kMinZoom } from '../../common/turntable_pose.js';
+
 const kDegreesPerPixel = 0.4;  // as the C++ window turns
 
 function nearestIndex(values, value) {
@@ -96,7 +98,7 @@ export const ControlsMixin = (Base) => class extends Base {
   }
 
   setZoom(zoom) {
-    this.zoom = Math.min(Math.max(zoom, 0.5), 4);
+    this.zoom = Math.min(Math.max(zoom, kMinZoom), kMaxZoom);
     this.redraw();
   }
 };
