@@ -120,6 +120,23 @@ try:
         print(f"web: element {size}: {fps:.1f} fps while dragging, first view {first_bytes} bytes in {first_ms:.0f} ms, {total} bytes in all",
               file=sys.stderr)
 
+    # What drawing the turntable with the C++ warp compiled to WebAssembly (the scene module, which
+    # holds it) would add before a first view: the module's bytes and the time to fetch, compile
+    # and instantiate it, uncached, on this page (issue: one implementation of each algorithm).
+    driver.execute_cdp_cmd("Network.enable", {})
+    driver.execute_cdp_cmd("Network.setCacheDisabled", {"cacheDisabled": True})
+    driver.get(f"http://127.0.0.1:{server.http}/")
+    module_ms, module_bytes = driver.execute_async_script("""const done = arguments[0], t0 = performance.now();
+      import('/module/inkwire-scene.js').then((m) => m.default()).then(() => done([performance.now() - t0,
+        performance.getEntriesByType('resource').filter((r) => r.name.includes('/module/')).reduce((s, r) => s + r.transferSize, 0)]),
+        (e) => done([null, String(e)]));""")
+    driver.execute_cdp_cmd("Network.setCacheDisabled", {"cacheDisabled": False})
+    if module_ms is not None:
+        rows.append({"variant": "module,uncached", "counters": {"bytes_first_view": module_bytes, "ms_first_view": module_ms}})
+        print(f"web: the WebAssembly module alone: {module_bytes} bytes, {module_ms:.0f} ms to instantiate", file=sys.stderr)
+    else:
+        print(f"web: the WebAssembly module did not load: {module_bytes}", file=sys.stderr)
+
     # The spin page: what the browser downloads, per its resource timing (encoded body sizes).
     driver.get(f"http://127.0.0.1:{httpd.server_address[1]}/index.html")
     start = time.time()
