@@ -40,9 +40,10 @@ std::vector<BenchObject>& Harness::lod_series() {
   return lods_;
 }
 
-Result Harness::time_frames(Renderer& renderer, const BenchObject& object, int frames, Canvas* target) {
+Result Harness::time_frames(Renderer& renderer, const BenchObject& object, int frames, Canvas* target, const Backdrop* backdrop) {
   Canvas& canvas = target ? *target : *canvas_;
-  const Backdrop clear(BackdropSpec::parse("#d9dde3"));
+  const Backdrop grey(BackdropSpec::parse("#d9dde3"));
+  const Backdrop& clear = backdrop ? *backdrop : grey;
   // The object turns a full revolution every 1000 frames about its vertical axis, so every
   // frame's view-dependent work (orientation, silhouettes) is real work, as it is for a user
   // turning the object; counters are read at the study's pose.

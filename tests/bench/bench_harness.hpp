@@ -56,12 +56,12 @@ class Harness {
   void set_machine(const std::string& key, const std::string& value) { machine_notes_[key] = value; }
   const std::map<std::string, std::string>& machine_notes() const { return machine_notes_; }
 
-  // Times `frames` frames of `renderer` (after a short warm-up) drawing `object` over a flat
-  // clear while it turns, finishing GL work each frame so the time is the frame's real cost.
+  // Times `frames` frames of `renderer` (after a short warm-up) drawing `object` over `backdrop`
+  // (a flat grey when none is given, as the study drew) while it turns, finishing GL work each frame so the time is the frame's real cost.
   // Ends with one frame at the study's pose, so the renderer's counters describe that pose.
   // Fills fps fields and `frames`; the caller fills names and counters. Draws into `target`
   // when given (suites with their own image size), else the 620x500 canvas.
-  Result time_frames(Renderer& renderer, const BenchObject& object, int frames, Canvas* target = nullptr);
+  Result time_frames(Renderer& renderer, const BenchObject& object, int frames, Canvas* target = nullptr, const Backdrop* backdrop = nullptr);
 
  private:
   Options options_;
