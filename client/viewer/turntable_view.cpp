@@ -10,6 +10,7 @@
 #include "client/render/tween/matte_sample.hpp"
 #include "common/camera.hpp"
 #include "common/error.hpp"
+#include "common/tween/view_sphere.hpp"
 
 namespace inkwire {
 
@@ -77,45 +78,18 @@ float TurntableView::row_elevation(float elevation, int rows) const {
   return row_heights_[size_t(index)];
 }
 
-int TurntableView::nearest_sample(const TurntableOrbit& orbit) const {
-  const glm::vec3 d = orbit.direction();
-  int best = -1;
-  float best_cos = -2.0f;
-  for (size_t i = 0; i < product_.directions.size(); ++i) {
-    const float c = glm::dot(product_.directions[i], d);
-    if (c > best_cos) best_cos = c, best = int(i);
-  }
-  return best;
-}
+int TurntableView::nearest_sample(const TurntableOrbit& orbit) const { return inkwire::nearest_sample(product_.directions, orbit.direction()); }
 
 int TurntableView::wanted_level(const TurntableOrbit& orbit) const {
-  const float shown = float(display_.y) * orbit.zoom;  // the photos' height on the display (TurntableView::draw)
-  if (shown <= kLevelSlack * float(product_.height)) return 0;
-  for (size_t l = 0; l < product_.levels.size(); ++l)
-    if (shown <= kLevelSlack * float(product_.levels[l].height)) return int(l) + 1;
-  return int(product_.levels.size());
+  std::vector<int> level_heights;
+  for (const auto& level : product_.levels) level_heights.push_back(level.height);
+  // The photos' height on the display, as draw() shows them.
+  return inkwire::wanted_level(product_.height, level_heights, double(display_.y) * double(orbit.zoom));
 }
 
-std::optional<TurntableView::PhotoFetch> TurntableView::next_fetch(const TurntableOrbit& orbit) const {
+std::optional<PhotoFetch> TurntableView::next_fetch(const TurntableOrbit& orbit) const {
   const glm::vec3 d = orbit.direction();
-  std::vector<int> drawn_from = renderer_.view_samples(d);
-  std::sort(drawn_from.begin(), drawn_from.end(), [&](int a, int b) {
-    return glm::dot(product_.directions[size_t(a)], d) > glm::dot(product_.directions[size_t(b)], d);
-  });
-  for (int s : drawn_from)
-    if (!has_[size_t(s)]) return PhotoFetch{s, 0};
-  if (const int level = wanted_level(orbit); level > 0)
-    for (int s : drawn_from)
-      if (const auto it = finer_level_.find(s); it == finer_level_.end() || it->second < level) return PhotoFetch{s, level};
-  int best = -1;
-  float best_cos = -2.0f;
-  for (size_t i = 0; i < product_.directions.size(); ++i) {
-    if (has_[i]) continue;
-    const float c = glm::dot(product_.directions[i], d);
-    if (c > best_cos) best_cos = c, best = int(i);
-  }
-  if (best < 0) return std::nullopt;
-  return PhotoFetch{best, 0};
+  return next_photo_fetch(product_.directions, d, renderer_.view_samples(d), has_, finer_level_, wanted_level(orbit));
 }
 
 glm::vec2 TurntableView::sample_angles(int index) const {

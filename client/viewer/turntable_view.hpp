@@ -12,6 +12,7 @@
 #include <glm/vec3.hpp>
 
 #include "client/render/tween/tween_renderer.hpp"
+#include "client/viewer/photo_fetch.hpp"
 #include "common/image.hpp"
 #include "protocol/messages.hpp"
 
@@ -42,21 +43,14 @@ class TurntableView {
   // Starts on the product a snapshot describes. Throws inkwire::Error if it is malformed.
   TurntableView(const protocol::Snapshot& state);
 
-  // A photo to fetch: sample `sample` at `level` (0 the first level, l > 0 the product's
-  // levels[l - 1], SPEC T18).
-  struct PhotoFetch {
-    int sample = -1, level = 0;
-    bool operator==(const PhotoFetch&) const = default;
-  };
+  using PhotoFetch = inkwire::PhotoFetch;
   // What to fetch next for `orbit`'s view on the display last drawn (or set_display()): the
   // first level of the photos the view is drawn from, then their finer level when the view shows
   // them larger than the first (wanted_level()), then the other photos' first level, nearest
   // first; nothing when all of that is there.
   std::optional<PhotoFetch> next_fetch(const TurntableOrbit& orbit) const;
-  // The level `orbit`'s view needs on the display: 0 while the first level is shown at most
-  // kLevelSlack times its size, else the smallest level that is not, else the finest.
+  // The level `orbit`'s view needs on the display (photo_fetch.hpp wanted_level()).
   int wanted_level(const TurntableOrbit& orbit) const;
-  static constexpr float kLevelSlack = 1.25f;
   void set_display(glm::ivec2 viewport) { display_ = viewport; }
   // A sample photo made ready to draw, with its matte when the product has them (empty path if
   // not; a finer level's photo takes its first-level matte scaled up). Touches no GL, so it runs

@@ -143,4 +143,30 @@ CellLocation locate_view(const TweenData& data, const glm::vec3& direction) {
   return best;
 }
 
+double nearness(const glm::vec3& sample, const glm::vec3& direction) {
+  const double x = sample.x, y = sample.y, z = sample.z;
+  return (x * double(direction.x) + y * double(direction.y) + z * double(direction.z)) / std::sqrt(x * x + y * y + z * z);
+}
+
+int nearest_sample(const std::vector<glm::vec3>& directions, const glm::vec3& direction, const std::function<bool(int)>& usable) {
+  int best = -1;
+  double best_nearness = 0.0;
+  for (size_t i = 0; i < directions.size(); ++i) {
+    if (usable && !usable(int(i))) continue;
+    const double n = nearness(directions[i], direction);
+    if (best < 0 || n > best_nearness) best = int(i), best_nearness = n;
+  }
+  return best;
+}
+
+std::vector<int> view_samples(const TweenData& data, const glm::vec3& direction) {
+  std::vector<int> out;
+  const CellLocation at = locate_view(data, direction);
+  if (at.cell >= 0 && at.inside)
+    for (uint16_t s : data.cells[size_t(at.cell)].samples) out.push_back(s);
+  const int nearest = nearest_sample(data.directions, direction);
+  if (nearest >= 0 && std::find(out.begin(), out.end(), nearest) == out.end()) out.push_back(nearest);
+  return out;
+}
+
 }  // namespace inkwire

@@ -3,6 +3,7 @@
 // rings on the equator, geodesic spheres, and locating a view direction among the cells.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -44,5 +45,17 @@ struct CellLocation {
   bool inside = false;  // the view lies within the cell (not past an open ring's end, above the top row, ...)
 };
 CellLocation locate_view(const TweenData& data, const glm::vec3& direction);
+
+// How near a sample's direction lies to a view direction: the cosine of their angle times the
+// view direction's length (the same for every sample, so it orders them as the cosine does).
+// In double, step for step as the browser's client/web/common/view_sphere.js nearness(), so both
+// pick the same sample on a tie (tests/golden/warp-vectors.json).
+double nearness(const glm::vec3& sample, const glm::vec3& direction);
+// The sample nearest `direction` among those `usable` allows (every one when empty), the first on
+// a tie; -1 when none is.
+int nearest_sample(const std::vector<glm::vec3>& directions, const glm::vec3& direction, const std::function<bool(int)>& usable = {});
+// The samples a view from `direction` is drawn from once they are there: its cell's when it lies
+// inside one, and the nearest.
+std::vector<int> view_samples(const TweenData& data, const glm::vec3& direction);
 
 }  // namespace inkwire

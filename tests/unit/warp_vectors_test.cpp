@@ -3,10 +3,13 @@
 // docs/benchmarks.md): the C++ answers for fixed inputs, written to tests/golden/warp-vectors.json
 // and checked by client/web/test/warp.test.js. A change to either side fails one of the two until
 // both agree and the file is approved again (INKWIRE_APPROVE_GOLDEN=1).
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <set>
 #include <string>
 #include <tuple>
 
@@ -15,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "client/render/tween/matte_sample.hpp"
+#include "client/viewer/photo_fetch.hpp"
 #include "client/viewer/turntable_view.hpp"
 #include "common/distance_field.hpp"
 #include "common/face/expression_templates.hpp"
@@ -133,7 +137,7 @@ nlohmann::json distance_case() {
 }
 
 // A ring of 12 at the equator under a ring of 12 at 30 degrees, joined by triangles as rows are.
-nlohmann::json locate_cases() {
+TweenData two_rows() {
   TweenData data;
   data.directions = ring_directions(12);
   for (const glm::vec3& d : ring_directions(12, 30.0f)) data.directions.push_back(d);
@@ -143,16 +147,61 @@ nlohmann::json locate_cases() {
     data.cells.push_back({.samples = {i, next, uint16_t(12 + i)}, .points = {}});
     data.cells.push_back({.samples = {next, uint16_t(12 + next), uint16_t(12 + i)}, .points = {}});
   }
+  return data;
+}
+
+glm::vec3 view_direction(float azimuth_degrees, float elevation_degrees) {
+  const float a = glm::radians(azimuth_degrees), e = glm::radians(elevation_degrees);
+  return {std::sin(a) * std::cos(e), std::sin(e), std::cos(a) * std::cos(e)};
+}
+
+nlohmann::json locate_cases() {
+  const TweenData data = two_rows();
   nlohmann::json directions = nlohmann::json::array(), cells = nlohmann::json::array(), views = nlohmann::json::array();
   for (const glm::vec3& d : data.directions) directions.push_back({d.x, d.y, d.z});
   for (const TweenCell& c : data.cells) cells.push_back(c.samples);
   for (const auto& [azimuth, elevation] : {std::pair{7.0f, 0.0f}, {100.0f, 0.0f}, {200.0f, 10.0f}, {-45.0f, 22.0f}, {80.0f, 60.0f}, {13.0f, -20.0f}}) {
-    const float a = glm::radians(azimuth), e = glm::radians(elevation);
-    const glm::vec3 d(std::sin(a) * std::cos(e), std::sin(e), std::cos(a) * std::cos(e));
+    const glm::vec3 d = view_direction(azimuth, elevation);
     const CellLocation at = locate_view(data, d);
     views.push_back({{"direction", {d.x, d.y, d.z}}, {"cell", at.cell}, {"inside", at.inside}, {"t", at.t}, {"weights", at.weights}});
   }
   return {{"directions", directions}, {"cells", cells}, {"views", views}};
+}
+
+// The two rows and, as spin sets often end, the first photo's direction again (a tie for nearest).
+TweenData two_rows_and_a_twin() {
+  TweenData data = two_rows();
+  data.directions.push_back(data.directions[0]);
+  return data;
+}
+
+// A visitor on the two rows looks, turns and zooms (photos 300 pixels high, finer levels of 600
+// and 1200): the level each view wants and every photo fetched, in order, each taken as there.
+nlohmann::json photo_fetch_cases() {
+  const TweenData data = two_rows_and_a_twin();
+  const int first_height = 300;
+  const std::vector<int> level_heights = {600, 1200};
+  std::vector<bool> has_first(data.directions.size(), false);
+  std::map<int, int> finer_level;
+  nlohmann::json steps = nlohmann::json::array();
+  for (const auto& [azimuth, elevation, shown, fetches] : {std::tuple{7.0f, 0.0f, 300.0, 4}, {15.0f, 15.0f, 300.0, 3}, {15.0f, 15.0f, 500.0, 4},
+                                                           {15.0f, 15.0f, 1600.0, 4}, {200.0f, 30.0f, 1000.0, 4}, {45.0f, 0.0f, 375.0, 40}}) {
+    const glm::vec3 d = view_direction(azimuth, elevation);
+    const int wanted = wanted_level(first_height, level_heights, shown);
+    nlohmann::json fetched = nlohmann::json::array();
+    for (int i = 0; i < fetches; ++i) {
+      const auto next = next_photo_fetch(data.directions, d, view_samples(data, d), has_first, finer_level, wanted);
+      if (!next) break;
+      fetched.push_back({next->sample, next->level});
+      if (next->level == 0) has_first[size_t(next->sample)] = true;
+      else finer_level[next->sample] = next->level;
+    }
+    steps.push_back({{"direction", {d.x, d.y, d.z}}, {"shown", shown}, {"fetches", fetches}, {"wanted", wanted}, {"fetched", fetched}});
+  }
+  nlohmann::json directions = nlohmann::json::array(), cells = nlohmann::json::array();
+  for (const glm::vec3& d : data.directions) directions.push_back({d.x, d.y, d.z});
+  for (const TweenCell& c : data.cells) cells.push_back(c.samples);
+  return {{"directions", directions}, {"cells", cells}, {"first_height", first_height}, {"level_heights", level_heights}, {"steps", steps}};
 }
 
 nlohmann::json face_cases() {
@@ -182,7 +231,8 @@ nlohmann::json turntable_cases() {
 
 TEST(WarpVectorsTest, GoldenVectorsForTheWebClientAreTheseNumbers) {
   const nlohmann::json golden = {{"delaunay", delaunay_cases()}, {"warp_meshes", warp_mesh_cases()}, {"distance_field", distance_case()},
-                                 {"matte_samples", matte_cases()}, {"locate_view", locate_cases()}, {"faces", face_cases()},
+                                 {"matte_samples", matte_cases()}, {"locate_view", locate_cases()}, {"photo_fetch", photo_fetch_cases()},
+                                 {"faces", face_cases()},
                                  {"turntable", turntable_cases()}};
   const std::filesystem::path file = std::filesystem::path(INKWIRE_GOLDEN_DIR) / "warp-vectors.json";
   if (const char* approve = std::getenv("INKWIRE_APPROVE_GOLDEN"); approve && std::string(approve) == "1") {
@@ -240,8 +290,39 @@ TEST(WarpVectorsTest, DelaunayTrianglesHaveNoPointInsideTheirCircleAndCoverTheBo
         EXPECT_LE(in * (twice > 0 ? 1 : -1), 1e-9 * std::pow(extent, 4)) << c["name"] << ": point " << i;
       }
     }
-    if (c["name"] != "a row") EXPECT_NEAR(area, (hi.x - lo.x) * (hi.y - lo.y), 1e-6 * (hi.x - lo.x) * (hi.y - lo.y)) << c["name"];
+    if (c["name"] != "a row") {
+      EXPECT_NEAR(area, (hi.x - lo.x) * (hi.y - lo.y), 1e-6 * (hi.x - lo.x) * (hi.y - lo.y)) << c["name"];
+    }
   }
+}
+
+TEST(WarpVectorsTest, PhotosComeForTheViewFirstThenItsLevelThenNearestFirst) {
+  const nlohmann::json c = photo_fetch_cases();
+  const TweenData data = two_rows_and_a_twin();
+  // The first view: its pair's photos, nearest first (7 degrees: the photo at 0, then at 30).
+  EXPECT_EQ(c["steps"][0]["fetched"][0], nlohmann::json({0, 0}));
+  EXPECT_EQ(c["steps"][0]["fetched"][1], nlohmann::json({1, 0}));
+  // Zoomed between the rows: the triangle's photos at the level the view wants, before any other.
+  EXPECT_EQ(c["steps"][2]["wanted"], 1);
+  EXPECT_EQ(c["steps"][3]["wanted"], 2);
+  for (int step : {2, 3})
+    for (const auto& f : c["steps"][step]["fetched"]) {
+      const std::vector<int> drawn_from = view_samples(data, view_direction(15.0f, 15.0f));
+      EXPECT_NE(std::find(drawn_from.begin(), drawn_from.end(), f[0].get<int>()), drawn_from.end()) << f;
+      EXPECT_EQ(f[1], c["steps"][step]["wanted"]) << f;
+    }
+  // Of the twins, the first is the nearest; the second comes when it is the nearest not there.
+  EXPECT_EQ(nearest_sample(data.directions, data.directions[24]), 0);
+  EXPECT_EQ(c["steps"][0]["fetched"][2], nlohmann::json({24, 0}));
+  // In the end every photo's first level is there, each fetched once.
+  std::set<int> first;
+  for (const auto& step : c["steps"])
+    for (const auto& f : step["fetched"])
+      if (f[1] == 0) {
+        EXPECT_TRUE(first.insert(f[0].get<int>()).second) << "photo " << f[0] << " fetched twice";
+      }
+  EXPECT_EQ(first.size(), data.directions.size());
+  EXPECT_LT(c["steps"].back()["fetched"].size(), c["steps"].back()["fetches"].get<size_t>()) << "the last view ran out of photos to fetch";
 }
 
 }  // namespace

@@ -152,18 +152,7 @@ int TweenRenderer::finer_in_view() const {
   return int(std::count_if(last_view_.sources.begin(), last_view_.sources.end(), [](const WarpSource& w) { return w.scale > 1.0f; }));
 }
 
-std::vector<int> TweenRenderer::view_samples(const glm::vec3& direction) const {
-  std::vector<int> out;
-  const CellLocation at = locate_view(model_.data, direction);
-  if (at.cell >= 0 && at.inside)
-    for (uint16_t s : model_.data.cells[size_t(at.cell)].samples) out.push_back(s);
-  int nearest = 0;
-  const glm::vec3 d = glm::normalize(direction);
-  for (int i = 1; i < model_.data.sample_count(); ++i)
-    if (glm::dot(glm::normalize(model_.data.directions[size_t(i)]), d) > glm::dot(glm::normalize(model_.data.directions[size_t(nearest)]), d)) nearest = i;
-  if (std::find(out.begin(), out.end(), nearest) == out.end()) out.push_back(nearest);
-  return out;
-}
+std::vector<int> TweenRenderer::view_samples(const glm::vec3& direction) const { return inkwire::view_samples(model_.data, direction); }
 
 WarpSource TweenRenderer::source_of(int index, int position, float weight) const {
   if (use_finer_)
@@ -202,19 +191,12 @@ void TweenRenderer::upload() {
 
 TweenRenderer::View TweenRenderer::nearest_loaded(const glm::vec3& direction) {
   View view;
-  const glm::vec3 d = glm::normalize(direction);
-  float best = -2.0f;
-  for (int i = 0; i < model_.data.sample_count(); ++i) {
-    if (!textures_[size_t(i)]) continue;
-    const float c = glm::dot(glm::normalize(model_.data.directions[size_t(i)]), d);
-    if (c > best) {
-      best = c;
-      view.mesh = plain_mesh_;
-      view.positions = {1.0f, 0.0f, 0.0f};
-      view.sources = {source_of(i, 0, 1.0f)};
-      view.sample = i;
-    }
-  }
+  const int i = nearest_sample(model_.data.directions, direction, [&](int s) { return textures_[size_t(s)] != nullptr; });
+  if (i < 0) return view;
+  view.mesh = plain_mesh_;
+  view.positions = {1.0f, 0.0f, 0.0f};
+  view.sources = {source_of(i, 0, 1.0f)};
+  view.sample = i;
   return view;
 }
 

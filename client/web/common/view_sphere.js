@@ -59,3 +59,33 @@ export function locateView(directions, cells, direction) {
   });
   return best;
 }
+
+// How near a sample's direction lies to a view direction: the cosine of their angle times the
+// view direction's length (the same for every sample). Step for step as the C++
+// (common/tween/view_sphere.cpp nearness()), so both pick the same sample on a tie.
+export function nearness(sample, direction) {
+  const [x, y, z] = sample;
+  return (x * direction[0] + y * direction[1] + z * direction[2]) / Math.sqrt(x * x + y * y + z * z);
+}
+
+// The sample nearest `direction` among those `usable(i)` allows (every one without it), the first
+// on a tie; -1 when none is.
+export function nearestSample(directions, direction, usable) {
+  let best = -1, bestNearness = 0;
+  directions.forEach((d, i) => {
+    if (usable && !usable(i)) return;
+    const n = nearness(d, direction);
+    if (best < 0 || n > bestNearness) best = i, bestNearness = n;
+  });
+  return best;
+}
+
+// The samples a view from `direction` is drawn from once they are there: its cell's when it lies
+// inside one, and the nearest (view_sphere.cpp view_samples()).
+export function viewSamples(directions, cells, direction) {
+  const at = locateView(directions, cells, direction);
+  const out = at.cell >= 0 && at.inside ? [...cells[at.cell].samples] : [];
+  const nearest = nearestSample(directions, direction);
+  if (nearest >= 0 && !out.includes(nearest)) out.push(nearest);
+  return out;
+}

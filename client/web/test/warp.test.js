@@ -1,13 +1,14 @@
 // The browser's warps against the C++ client's (tests/golden/warp-vectors.json, written by
 // WarpVectorsTest in tests/unit/warp_vectors_test.cpp): the same triangles, the same distance
 // field, the same matte textures byte for byte, the same cell and weights for a view, the same
-// face for an expression code. Run: node --test client/web/test/
+// face for an expression code, the same photos fetched in the same order. Run: node --test client/web/test/
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { test } from 'node:test';
 
 import { applyExpression, parseTemplates } from '../common/face.js';
-import { locateView } from '../common/view_sphere.js';
+import { nextPhotoFetch, wantedLevel } from '../common/photo_fetch.js';
+import { locateView, viewSamples } from '../common/view_sphere.js';
 import { buildWarpMesh, delaunayTriangles } from '../common/warp_mesh.js';
 import { distanceToSeeds, matteSample, objectOnMatte } from '../render/tween/matte_sample.js';
 
@@ -57,5 +58,24 @@ test('an expression code moves the face\'s landmarks as the C++ client moves the
   for (const e of golden.faces.expressions) {
     const moved = applyExpression(golden.faces.neutral, templates, e.code, e.intensity);
     moved.forEach((p, i) => assert.ok(Math.hypot(p[0] - e.landmarks[i][0], p[1] - e.landmarks[i][1]) < 1e-3, `code ${e.code}, landmark ${i}`));
+  }
+});
+
+test('photos are fetched in the C++ client\'s order as a visitor looks, turns and zooms', () => {
+  const { directions, cells, first_height: firstHeight, level_heights: levelHeights, steps } = golden.photo_fetch;
+  const hasFirst = new Set(), finer = new Map();
+  for (const s of steps) {
+    const wanted = wantedLevel(firstHeight, levelHeights, s.shown);
+    assert.equal(wanted, s.wanted, `the level wanted ${s.shown} pixels high`);
+    const fetched = [];
+    for (let i = 0; i < s.fetches; ++i) {
+      const next = nextPhotoFetch(directions, s.direction, viewSamples(directions, cells.map((samples) => ({ samples })), s.direction),
+                                  (k) => hasFirst.has(k), (k) => finer.get(k) ?? 0, wanted);
+      if (!next) break;
+      fetched.push([next.sample, next.level]);
+      if (next.level === 0) hasFirst.add(next.sample);
+      else finer.set(next.sample, next.level);
+    }
+    assert.deepEqual(fetched, s.fetched, `fetches from ${s.direction}`);
   }
 });

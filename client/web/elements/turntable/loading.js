@@ -2,13 +2,12 @@
 // (each matte, then the photo, nearest the current view first, each drawn as it comes), its
 // tween cells whenever they arrive, a progress bar, and the attribute `loaded` once all are
 // there. A mixin over SessionElement (STYLE 13: one feature a file, as <model-viewer> does).
+import { nextPhotoFetch, wantedLevel } from '../../common/photo_fetch.js';
 import { decodeTweenCell } from '../../common/tween_data.js';
 import { AssetKind, bytesBy } from '../../net/session.js';
 import { matteSample, objectOnMatte } from '../../render/tween/matte_sample.js';
 import { loadTweenShaders, TweenView } from '../../render/tween/tween_view.js';
 import { decodeImage } from '../session_element.js';
-
-const kLevelSlack = 1.25;  // turntable_view.hpp kLevelSlack
 
 // A product photo or matte's RGBA bytes, checked against the size it should have.
 async function pixels(bytes, width, height) {
@@ -66,33 +65,18 @@ export const LoadingMixin = (Base) => class extends Base {
     return [Math.cos(el) * Math.sin(az), Math.sin(el), Math.cos(el) * Math.cos(az)];
   }
 
-  // The zoom level the view needs (turntable_view.cpp wanted_level()): 0 while the first level
-  // is shown at most kLevelSlack times its size, else the smallest level that is not, else the
-  // finest. The display's height is in device pixels, from the last frame drawn.
+  // The zoom level the view needs (photo_fetch.js), the display's height in device pixels from
+  // the last frame drawn.
   wantedLevel() {
-    const { height, levels } = this.snapshot.product, shown = (this.displayHeight ?? 0) * this.zoom;
-    if (shown <= kLevelSlack * height) return 0;
-    const enough = levels.findIndex((l) => shown <= kLevelSlack * l.height);
-    return enough < 0 ? levels.length : enough + 1;
+    const { height, levels } = this.snapshot.product;
+    return wantedLevel(height, levels.map((l) => l.height), (this.displayHeight ?? 0) * this.zoom);
   }
 
-  // What to fetch next (turntable_view.cpp next_fetch()): the first level of the photos the view
-  // is drawn from, then their finer level when the view needs one, then the other photos' first
-  // level, nearest the view first; null when all of that is there.
+  // What to fetch next (photo_fetch.js): {sample, level}, or null when all the view needs is there.
   nextFetch() {
-    const d = this.direction(), directions = this.snapshot.product.directions;
-    const near = (i) => directions[i][0] * d[0] + directions[i][1] * d[1] + directions[i][2] * d[2];
-    const drawnFrom = this.view.viewSamples(d).sort((a, b) => near(b) - near(a));
-    const first = drawnFrom.find((s) => !this.view.textures[s]);
-    if (first !== undefined) return { sample: first, level: 0 };
-    const level = this.wantedLevel();
-    const finer = level > 0 ? drawnFrom.find((s) => this.view.finerLevel(s) < level) : undefined;
-    if (finer !== undefined) return { sample: finer, level };
-    let next = -1, best = -2;
-    directions.forEach((_, i) => {
-      if (!this.view.textures[i] && near(i) > best) best = near(i), next = i;
-    });
-    return next < 0 ? null : { sample: next, level: 0 };
+    const d = this.direction();
+    return nextPhotoFetch(this.snapshot.product.directions, d, this.view.viewSamples(d), (i) => !!this.view.textures[i],
+                          (i) => this.view.finerLevel(i), this.wantedLevel());
   }
 
   // Photos one at a time, as nextFetch() says; each drawn as it comes. With nothing to fetch it

@@ -4,7 +4,7 @@
 // on a ring, trilinear on a sphere. Until a view's cell and its photos are there, the nearest
 // photo that is shows, as it is.
 import { pathWeights } from '../../common/tween_data.js';
-import { locateView } from '../../common/view_sphere.js';
+import { locateView, nearestSample, viewSamples } from '../../common/view_sphere.js';
 import { buildWarpMesh } from '../../common/warp_mesh.js';
 import { kBleedPixels, kMatteRange } from './matte_sample.js';
 
@@ -103,19 +103,8 @@ export class TweenView {
   // Sample `index` as the view reads it: its finer level while finer views are asked for.
   textureOf(index) { return (this.useFiner && this.finer.get(index)?.texture) || this.textures[index]; }
 
-  // The samples a view from `direction` is drawn from once they are there: its cell's and the
-  // nearest (tween_renderer.cpp view_samples()).
-  viewSamples(direction) {
-    const at = locateView(this.product.directions, this.cells, direction);
-    const out = at.cell >= 0 && at.inside ? [...this.cells[at.cell].samples] : [];
-    let nearest = 0, best = -2;
-    this.product.directions.forEach((d, i) => {
-      const c = d[0] * direction[0] + d[1] * direction[1] + d[2] * direction[2];
-      if (c > best) best = c, nearest = i;
-    });
-    if (!out.includes(nearest)) out.push(nearest);
-    return out;
-  }
+  // The samples a view from `direction` is drawn from once they are there (view_sphere.js).
+  viewSamples(direction) { return viewSamples(this.product.directions, this.cells, direction); }
 
   texture(rgba, width, height) {
     const gl = this.gl;
@@ -137,12 +126,7 @@ export class TweenView {
 
   // The nearest photo that is there, drawn as it is.
   nearestLoaded(direction) {
-    let best = -1, bestCos = -2;
-    this.textures.forEach((t, i) => {
-      if (!t) return;
-      const d = this.product.directions[i], c = (d[0] * direction[0] + d[1] * direction[1] + d[2] * direction[2]) / Math.hypot(...direction);
-      if (c > bestCos) bestCos = c, best = i;
-    });
+    const best = nearestSample(this.product.directions, direction, (i) => this.textures[i]);
     return best < 0 ? null : { mesh: this.plain, positions: [1, 0, 0], sources: [{ sample: best, slot: 0, weight: 1 }], sample: best };
   }
 

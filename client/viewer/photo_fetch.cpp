@@ -1,0 +1,32 @@
+#include "client/viewer/photo_fetch.hpp"
+
+#include <algorithm>
+
+#include "common/tween/view_sphere.hpp"
+
+namespace inkwire {
+
+int wanted_level(int first_height, const std::vector<int>& level_heights, double shown_height) {
+  if (shown_height <= kLevelSlack * first_height) return 0;
+  for (size_t l = 0; l < level_heights.size(); ++l)
+    if (shown_height <= kLevelSlack * level_heights[l]) return int(l) + 1;
+  return int(level_heights.size());
+}
+
+std::optional<PhotoFetch> next_photo_fetch(const std::vector<glm::vec3>& directions, const glm::vec3& direction, std::vector<int> drawn_from,
+                                           const std::vector<bool>& has_first, const std::map<int, int>& finer_level, int wanted) {
+  // Nearest first; of two as near, the one the view's cell lists first (a stable sort, as the
+  // script's Array.prototype.sort is).
+  std::stable_sort(drawn_from.begin(), drawn_from.end(),
+                   [&](int a, int b) { return nearness(directions[size_t(a)], direction) > nearness(directions[size_t(b)], direction); });
+  for (int s : drawn_from)
+    if (!has_first[size_t(s)]) return PhotoFetch{s, 0};
+  if (wanted > 0)
+    for (int s : drawn_from)
+      if (const auto it = finer_level.find(s); it == finer_level.end() || it->second < wanted) return PhotoFetch{s, wanted};
+  const int other = nearest_sample(directions, direction, [&](int s) { return !has_first[size_t(s)]; });
+  if (other < 0) return std::nullopt;
+  return PhotoFetch{other, 0};
+}
+
+}  // namespace inkwire

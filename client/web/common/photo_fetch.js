@@ -1,0 +1,29 @@
+// Which product photo the element fetches next (SPEC T12, T18), as the C++ client does
+// (client/viewer/photo_fetch.cpp), pinned by tests/golden/warp-vectors.json: the first level of
+// the photos the view is drawn from, then their finer level when the view shows them larger than
+// the first, then the other photos' first level, nearest the view first.
+import { nearestSample, nearness } from './view_sphere.js';
+
+export const kLevelSlack = 1.25;  // a level is enough while shown at most this many times its size
+
+// The level a view needs whose photos are `shown` device pixels high: 0 while the first level
+// (`firstHeight`) is enough, else the smallest of `levelHeights` that is, else the finest.
+export function wantedLevel(firstHeight, levelHeights, shown) {
+  if (shown <= kLevelSlack * firstHeight) return 0;
+  const enough = levelHeights.findIndex((h) => shown <= kLevelSlack * h);
+  return enough < 0 ? levelHeights.length : enough + 1;
+}
+
+// What to fetch next, {sample, level}, for a view from `direction` drawn from `drawnFrom`
+// (viewSamples()); `hasFirst(i)` says whether sample i's first level is there, `finerLevel(i)`
+// which finer level it has (0: none); `wanted` the view's level. Null when all of that is there.
+export function nextPhotoFetch(directions, direction, drawnFrom, hasFirst, finerLevel, wanted) {
+  // Nearest first; of two as near, the one the view's cell lists first (the sort is stable).
+  const sorted = [...drawnFrom].sort((a, b) => nearness(directions[b], direction) - nearness(directions[a], direction));
+  const first = sorted.find((s) => !hasFirst(s));
+  if (first !== undefined) return { sample: first, level: 0 };
+  const finer = wanted > 0 ? sorted.find((s) => finerLevel(s) < wanted) : undefined;
+  if (finer !== undefined) return { sample: finer, level: wanted };
+  const other = nearestSample(directions, direction, (i) => !hasFirst(i));
+  return other < 0 ? null : { sample: other, level: 0 };
+}
