@@ -29,4 +29,15 @@ std::optional<PhotoFetch> next_photo_fetch(const std::vector<glm::vec3>& directi
   return PhotoFetch{other, 0};
 }
 
+int finer_to_drop(const std::vector<glm::vec3>& directions, int added, const std::map<int, int>& finer_level) {
+  if (int(finer_level.size()) <= kFinerKept) return -1;
+  int farthest = -1;
+  double farthest_nearness = 0.0;
+  for (const auto& [sample, level] : finer_level) {  // by index
+    const double n = nearness(directions[size_t(sample)], directions[size_t(added)]);
+    if (farthest < 0 || n < farthest_nearness) farthest = sample, farthest_nearness = n;
+  }
+  return farthest;
+}
+
 }  // namespace inkwire

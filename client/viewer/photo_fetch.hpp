@@ -30,4 +30,11 @@ int wanted_level(int first_height, const std::vector<int>& level_heights, double
 std::optional<PhotoFetch> next_photo_fetch(const std::vector<glm::vec3>& directions, const glm::vec3& direction, std::vector<int> drawn_from,
                                            const std::vector<bool>& has_first, const std::map<int, int>& finer_level, int wanted);
 
+// At most this many samples keep a finer level (a 2048-pixel level is 16 MB on the GPU).
+inline constexpr int kFinerKept = 6;
+// When sample `added` has just taken a finer level and more than kFinerKept hold one: the holder
+// that gives way, the farthest from `added` (zoomed-in views turn slowly: it is needed last), the
+// lowest index on a tie; -1 while none need give way.
+int finer_to_drop(const std::vector<glm::vec3>& directions, int added, const std::map<int, int>& finer_level);
+
 }  // namespace inkwire

@@ -122,14 +122,9 @@ void TurntableView::add_sample(int index, const Image& image, int level) {
   }
   renderer_.set_finer_sample(index, image);
   finer_level_[index] = level;
-  if (int(finer_level_.size()) > kFinerKept) {
-    // Zoomed-in views turn slowly: the sample farthest from this one is needed last.
-    const glm::vec3 here = product_.directions[size_t(index)];
-    const auto farthest = std::min_element(finer_level_.begin(), finer_level_.end(), [&](const auto& a, const auto& b) {
-      return glm::dot(product_.directions[size_t(a.first)], here) < glm::dot(product_.directions[size_t(b.first)], here);
-    });
-    renderer_.drop_finer_sample(farthest->first);
-    finer_level_.erase(farthest);
+  if (const int drop = finer_to_drop(product_.directions, index, finer_level_); drop >= 0) {
+    renderer_.drop_finer_sample(drop);
+    finer_level_.erase(drop);
   }
 }
 

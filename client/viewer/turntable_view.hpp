@@ -58,9 +58,8 @@ class TurntableView {
   // it cannot be used.
   static Image sample_image(const std::filesystem::path& photo, const std::filesystem::path& matte);
   // Sample `index` at `level` (an image from sample_image(), of that level's size) is there. At
-  // most kFinerKept samples keep a finer level: the one farthest from this one gives way.
+  // most kFinerKept samples keep a finer level (photo_fetch.hpp finer_to_drop()).
   void add_sample(int index, const Image& image, int level = 0);
-  static constexpr int kFinerKept = 6;
   int finer_loaded() const { return int(finer_level_.size()); }
   int finer_in_view() const { return renderer_.finer_in_view(); }  // of the last view's photos
   // Cells of tween data not seen before are decoded and added; a malformed one is refused

@@ -176,7 +176,8 @@ TweenData two_rows_and_a_twin() {
 }
 
 // A visitor on the two rows looks, turns and zooms (photos 300 pixels high, finer levels of 600
-// and 1200): the level each view wants and every photo fetched, in order, each taken as there.
+// and 1200): the level each view wants and every photo fetched, in order, each taken as there,
+// and the finer levels given way when more than kFinerKept photos hold one.
 nlohmann::json photo_fetch_cases() {
   const TweenData data = two_rows_and_a_twin();
   const int first_height = 300;
@@ -185,18 +186,22 @@ nlohmann::json photo_fetch_cases() {
   std::map<int, int> finer_level;
   nlohmann::json steps = nlohmann::json::array();
   for (const auto& [azimuth, elevation, shown, fetches] : {std::tuple{7.0f, 0.0f, 300.0, 4}, {15.0f, 15.0f, 300.0, 3}, {15.0f, 15.0f, 500.0, 4},
-                                                           {15.0f, 15.0f, 1600.0, 4}, {200.0f, 30.0f, 1000.0, 4}, {45.0f, 0.0f, 375.0, 40}}) {
+                                                           {15.0f, 15.0f, 1600.0, 4}, {200.0f, 30.0f, 1000.0, 7}, {45.0f, 0.0f, 375.0, 40}}) {
     const glm::vec3 d = view_direction(azimuth, elevation);
     const int wanted = wanted_level(first_height, level_heights, shown);
-    nlohmann::json fetched = nlohmann::json::array();
+    nlohmann::json fetched = nlohmann::json::array(), dropped = nlohmann::json::array();
     for (int i = 0; i < fetches; ++i) {
       const auto next = next_photo_fetch(data.directions, d, view_samples(data, d), has_first, finer_level, wanted);
       if (!next) break;
       fetched.push_back({next->sample, next->level});
       if (next->level == 0) has_first[size_t(next->sample)] = true;
       else finer_level[next->sample] = next->level;
+      if (const int drop = next->level > 0 ? finer_to_drop(data.directions, next->sample, finer_level) : -1; drop >= 0) {
+        finer_level.erase(drop);
+        dropped.push_back(drop);
+      }
     }
-    steps.push_back({{"direction", {d.x, d.y, d.z}}, {"shown", shown}, {"fetches", fetches}, {"wanted", wanted}, {"fetched", fetched}});
+    steps.push_back({{"direction", {d.x, d.y, d.z}}, {"shown", shown}, {"fetches", fetches}, {"wanted", wanted}, {"fetched", fetched}, {"dropped", dropped}});
   }
   nlohmann::json directions = nlohmann::json::array(), cells = nlohmann::json::array();
   for (const glm::vec3& d : data.directions) directions.push_back({d.x, d.y, d.z});
@@ -311,6 +316,8 @@ TEST(WarpVectorsTest, PhotosComeForTheViewFirstThenItsLevelThenNearestFirst) {
       EXPECT_NE(std::find(drawn_from.begin(), drawn_from.end(), f[0].get<int>()), drawn_from.end()) << f;
       EXPECT_EQ(f[1], c["steps"][step]["wanted"]) << f;
     }
+  // Turned to the far side zoomed in, the finer levels farthest from there give way.
+  EXPECT_EQ(c["steps"][4]["dropped"].size(), 1u);
   // Of the twins, the first is the nearest; the second comes when it is the nearest not there.
   EXPECT_EQ(nearest_sample(data.directions, data.directions[24]), 0);
   EXPECT_EQ(c["steps"][0]["fetched"][2], nlohmann::json({24, 0}));

@@ -5,6 +5,7 @@
 import { nearestSample, nearness } from './view_sphere.js';
 
 export const kLevelSlack = 1.25;  // a level is enough while shown at most this many times its size
+export const kFinerKept = 6;  // samples keeping a finer level at most (a 2048-pixel level is 16 MB on the GPU)
 
 // The level a view needs whose photos are `shown` device pixels high: 0 while the first level
 // (`firstHeight`) is enough, else the smallest of `levelHeights` that is, else the finest.
@@ -26,4 +27,17 @@ export function nextPhotoFetch(directions, direction, drawnFrom, hasFirst, finer
   if (finer !== undefined) return { sample: finer, level: wanted };
   const other = nearestSample(directions, direction, (i) => !hasFirst(i));
   return other < 0 ? null : { sample: other, level: 0 };
+}
+
+// When sample `added` has just taken a finer level and more than kFinerKept hold one (`holders`,
+// their indices): the holder that gives way, the farthest from `added` (zoomed-in views turn
+// slowly: it is needed last), the lowest index on a tie; -1 while none need give way.
+export function finerToDrop(directions, added, holders) {
+  if (holders.length <= kFinerKept) return -1;
+  let farthest = -1, farthestNearness = 0;
+  for (const s of [...holders].sort((a, b) => a - b)) {
+    const n = nearness(directions[s], directions[added]);
+    if (farthest < 0 || n < farthestNearness) farthest = s, farthestNearness = n;
+  }
+  return farthest;
 }

@@ -7,7 +7,7 @@ import { readFileSync } from 'node:fs';
 import { test } from 'node:test';
 
 import { applyExpression, parseTemplates } from '../common/face.js';
-import { nextPhotoFetch, wantedLevel } from '../common/photo_fetch.js';
+import { finerToDrop, nextPhotoFetch, wantedLevel } from '../common/photo_fetch.js';
 import { locateView, viewSamples } from '../common/view_sphere.js';
 import { buildWarpMesh, delaunayTriangles } from '../common/warp_mesh.js';
 import { distanceToSeeds, matteSample, objectOnMatte } from '../render/tween/matte_sample.js';
@@ -67,7 +67,7 @@ test('photos are fetched in the C++ client\'s order as a visitor looks, turns an
   for (const s of steps) {
     const wanted = wantedLevel(firstHeight, levelHeights, s.shown);
     assert.equal(wanted, s.wanted, `the level wanted ${s.shown} pixels high`);
-    const fetched = [];
+    const fetched = [], dropped = [];
     for (let i = 0; i < s.fetches; ++i) {
       const next = nextPhotoFetch(directions, s.direction, viewSamples(directions, cells.map((samples) => ({ samples })), s.direction),
                                   (k) => hasFirst.has(k), (k) => finer.get(k) ?? 0, wanted);
@@ -75,7 +75,10 @@ test('photos are fetched in the C++ client\'s order as a visitor looks, turns an
       fetched.push([next.sample, next.level]);
       if (next.level === 0) hasFirst.add(next.sample);
       else finer.set(next.sample, next.level);
+      const drop = next.level > 0 ? finerToDrop(directions, next.sample, [...finer.keys()]) : -1;
+      if (drop >= 0) finer.delete(drop), dropped.push(drop);
     }
     assert.deepEqual(fetched, s.fetched, `fetches from ${s.direction}`);
+    assert.deepEqual(dropped, s.dropped, `finer levels given way at ${s.direction}`);
   }
 });

@@ -3,6 +3,7 @@
 // the view, composed by their mattes in one pass (image_warper.cpp's one-pass view), bilinear
 // on a ring, trilinear on a sphere. Until a view's cell and its photos are there, the nearest
 // photo that is shows, as it is.
+import { finerToDrop } from '../../common/photo_fetch.js';
 import { pathWeights } from '../../common/tween_data.js';
 import { locateView, nearestSample, viewSamples } from '../../common/view_sphere.js';
 import { buildWarpMesh } from '../../common/warp_mesh.js';
@@ -36,7 +37,6 @@ export async function loadTweenShaders() {
   return { vertex: await get('blend.vert'), fragment: await get('blend.frag') };
 }
 
-const kFinerKept = 6;  // samples keeping a finer level (turntable_view.hpp kFinerKept)
 
 export class TweenView {
   // `product`: a snapshot's product block; `shaders`: from loadTweenShaders().
@@ -46,7 +46,7 @@ export class TweenView {
     this.programs = [1, 2, 3].map((n) => program(gl, shaders.vertex, shaders.fragment, [`SAMPLES ${n}`, 'MATTE', `MATTE_RANGE ${kMatteRange.toFixed(1)}`, `BLEED ${kBleedPixels.toFixed(1)}`]));
     this.textures = new Array(product.directions.length).fill(null);
     // Zoom (SPEC T18): samples holding a finer level, index -> {texture, level}; drawn from while
-    // useFiner is on (turntable_view.cpp add_sample: at most kFinerKept, the farthest gives way).
+    // useFiner is on; at most kFinerKept of them (photo_fetch.js finerToDrop()).
     this.finer = new Map();
     this.useFiner = false;
     this.finerInView = 0;
@@ -90,12 +90,10 @@ export class TweenView {
     const before = this.finer.get(index);
     if (before) this.gl.deleteTexture(before.texture);
     this.finer.set(index, { texture: this.texture(rgba, width, height), level });
-    if (this.finer.size <= kFinerKept) return;
-    // Zoomed-in views turn slowly: the sample farthest from this one is needed last.
-    const here = this.product.directions[index], dot = (d) => d[0] * here[0] + d[1] * here[1] + d[2] * here[2];
-    const [farthest] = [...this.finer.keys()].sort((a, b) => dot(this.product.directions[a]) - dot(this.product.directions[b]));
-    this.gl.deleteTexture(this.finer.get(farthest).texture);
-    this.finer.delete(farthest);
+    const drop = finerToDrop(this.product.directions, index, [...this.finer.keys()]);
+    if (drop < 0) return;
+    this.gl.deleteTexture(this.finer.get(drop).texture);
+    this.finer.delete(drop);
   }
 
   finerLevel(index) { return this.finer.get(index)?.level ?? 0; }
