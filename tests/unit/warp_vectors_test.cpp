@@ -22,6 +22,7 @@
 #include "client/viewer/turntable_view.hpp"
 #include "common/distance_field.hpp"
 #include "common/face/expression_templates.hpp"
+#include "common/face/face_mesh.hpp"
 #include "common/tween/view_sphere.hpp"
 #include "common/tween/warp_mesh.hpp"
 #include "synthetic_face.hpp"
@@ -209,6 +210,29 @@ nlohmann::json photo_fetch_cases() {
   return {{"directions", directions}, {"cells", cells}, {"first_height", first_height}, {"level_heights", level_heights}, {"steps", steps}};
 }
 
+// The mesh a face is redrawn over, for a closed mouth (cavity triangles) and an open one, rolled
+// and near the photo's edge (anchors left out), and the cavity colour over a patterned photo.
+nlohmann::json face_mesh_cases() {
+  nlohmann::json cases = nlohmann::json::array();
+  for (const auto& [mouth_open, centre, roll] : {std::tuple{0.0f, glm::vec2(160, 120), 0.2f}, {0.3f, glm::vec2(100, 90), -0.1f}}) {
+    test::FacePose pose;
+    pose.mouth_open = mouth_open;
+    const FaceLandmarks landmarks = test::synthetic_face(pose, centre, 60, roll);
+    const FaceMesh m = build_face_mesh(landmarks, shipped_templates(), 320, 240);
+    Image photo(320, 240);
+    for (int y = 0; y < photo.height; ++y)
+      for (int x = 0; x < photo.width; ++x)
+        for (int c = 0; c < 4; ++c) photo.at(x, y)[c] = uint8_t((x * 7 + y * 13 + c * 50) % 256);
+    nlohmann::json in = nlohmann::json::array(), read = nlohmann::json::array(), drawn = nlohmann::json::array();
+    for (const glm::vec2& p : landmarks) in.push_back({p.x, p.y});
+    for (const ControlPoint& p : m.mesh.points) read.push_back({p[0].x, p[0].y}), drawn.push_back({p[1].x, p[1].y});
+    const glm::u8vec4 cavity = cavity_colour(photo, landmarks);
+    cases.push_back({{"landmarks", in}, {"width", 320}, {"height", 240}, {"read", read}, {"drawn", drawn}, {"triangles", m.mesh.triangles},
+                     {"landmark_of", m.landmark_of}, {"cavity_colour", {cavity.r, cavity.g, cavity.b}}});
+  }
+  return cases;
+}
+
 nlohmann::json face_cases() {
   const FaceLandmarks neutral = test::synthetic_face(test::FacePose{}, {160, 120}, 60, 0.2f);
   nlohmann::json points = nlohmann::json::array(), moved = nlohmann::json::array();
@@ -218,7 +242,7 @@ nlohmann::json face_cases() {
     for (const glm::vec2& p : apply_expression(neutral, shipped_templates(), {expression, uint8_t(intensity)})) out.push_back({p.x, p.y});
     moved.push_back({{"code", int(expression)}, {"intensity", intensity}, {"landmarks", out}});
   }
-  return {{"neutral", points}, {"expressions", moved}};
+  return {{"neutral", points}, {"expressions", moved}, {"meshes", face_mesh_cases()}};
 }
 
 // A visitor's view shared as a pose (presenter mode) and a shared pose's zoom held to the range.

@@ -2,41 +2,9 @@
 // the neutral photo warped over a triangulation of its 68 landmarks, a fixed ring of anchors
 // around the face and the image border; the landmarks moved by the received expression's
 // template, tweened over 100 ms; an opening mouth of a closed-mouthed photo shows a dark cavity.
-import { applyExpression, faceFrame, kFaceLandmarks, toFace, toImage } from '../../common/face.js';
-import { borderPoints, delaunayTriangles } from '../../common/warp_mesh.js';
+import { applyExpression } from '../../common/face.js';
+import { buildFaceMesh, cavityColour, kCavityRows } from '../../common/face_mesh.js';
 import { program } from '../tween/tween_view.js';
-
-const kCavityRows = 8;           // the atlas strip under the photo that cavity triangles read
-const kClosedMouthGap = 0.04;    // inner lips closer than this (inter-ocular) count as closed
-const kVisemeOpen = 10;
-
-function faceAnchors(face) {
-  const centre = [0, 0.45], anchors = [];
-  for (let i = 0; i <= 16; i += 2) anchors.push([centre[0] + 1.6 * (face[i][0] - centre[0]), centre[1] + 1.6 * (face[i][1] - centre[1])]);
-  for (let i = 17; i <= 26; i += 3) anchors.push([face[i][0], face[i][1] - 0.8]);
-  anchors.push([face[26][0], face[26][1] - 0.8]);
-  return anchors;
-}
-
-function inside(polygon, [x, y]) {  // even-odd rule
-  let result = false;
-  for (let i = 0, j = polygon.length - 1; i < polygon.length; j = i++) {
-    const [ax, ay] = polygon[i], [bx, by] = polygon[j];
-    if ((ay > y) !== (by > y) && x < ((bx - ax) * (y - ay)) / (by - ay) + ax) result = !result;
-  }
-  return result;
-}
-
-function cavityColour(photo, width, height, p) {
-  const sum = [0, 0, 0];
-  for (let i = 48; i <= 59; ++i) {
-    const j = 60 + Math.trunc(((i - 48) * 8) / 12);
-    const x = Math.min(Math.max(Math.trunc(0.5 * (p[i][0] + p[j][0])), 0), width - 1);
-    const y = Math.min(Math.max(Math.trunc(0.5 * (p[i][1] + p[j][1])), 0), height - 1);
-    for (let c = 0; c < 3; ++c) sum[c] += photo[4 * (y * width + x) + c];
-  }
-  return sum.map((v) => Math.trunc((0.3 * v) / 12));
-}
 
 export class FaceReconstructor {
   // `photo`: RGBA bytes; `landmarks`: 68 [x, y]; `templates`: parseTemplates().
@@ -44,40 +12,7 @@ export class FaceReconstructor {
     if (width < 16 || height < 16) throw new Error('face reconstruction: the neutral photo is too small');
     for (const [x, y] of landmarks) if (!(x >= 0 && y >= 0 && x <= width && y <= height)) throw new Error('face reconstruction: a landmark lies outside the photo');
     Object.assign(this, { gl, width, height, neutral: landmarks, templates, tweenSeconds });
-    const frame = faceFrame(landmarks), face = landmarks.map((p) => toFace(frame, p));
-    const points = landmarks.map((p) => [p[0], p[1]]);
-    this.landmarkOf = points.map((_, i) => i);
-    const margin = 0.04 * Math.min(width, height);
-    for (const f of faceAnchors(face)) {
-      const a = toImage(frame, f);
-      if (a[0] > margin && a[1] > margin && a[0] < width - margin && a[1] < height - margin) points.push(a);
-    }
-    for (const b of borderPoints(width, height)) points.push(b);
-    while (this.landmarkOf.length < points.length) this.landmarkOf.push(-1);
-    // Triangulated with the mouth open, so the inner lips are apart.
-    const open = applyExpression(landmarks, templates, kVisemeOpen, 255);
-    const layout = points.map((p, i) => (i < kFaceLandmarks ? open[i] : p));
-    const triangles = delaunayTriangles(layout);
-    const innerLips = open.slice(60, 68);
-    const d = (a, b) => Math.hypot(face[a][0] - face[b][0], face[a][1] - face[b][1]);
-    const fillCavity = (d(61, 67) + d(62, 66) + d(63, 65)) / 3 < kClosedMouthGap;
-    this.points = points.map((p) => [p, p, p]);
-    this.triangles = [];
-    const cavityY = height + 0.5 * kCavityRows;
-    for (const t of triangles) {
-      const centroid = [0, 1].map((k) => (layout[t[0]][k] + layout[t[1]][k] + layout[t[2]][k]) / 3);
-      const mouth = t.every((v) => v >= 60 && v < 68);
-      if (!(fillCavity && mouth && inside(innerLips, centroid))) {
-        this.triangles.push(t);
-        continue;
-      }
-      const copy = t.map((v) => {
-        this.points.push([[points[v][0], cavityY], points[v], points[v]]);
-        this.landmarkOf.push(v);
-        return this.points.length - 1;
-      });
-      this.triangles.push(copy);
-    }
+    ({ points: this.points, triangles: this.triangles, landmarkOf: this.landmarkOf } = buildFaceMesh(landmarks, templates, width, height));
     // The atlas: the photo, and under it a strip of the mouth cavity's colour.
     const atlas = new Uint8Array(width * (height + kCavityRows) * 4);
     atlas.set(photo);
