@@ -2,8 +2,10 @@
 // tests/web/web_scene_bench.py measures the element in Debian's headless chromium, on SwiftShader
 // and on llvmpipe (frames per second during a drag at 620x500, first-frame bytes and time, the
 // module's compressed size, PSNR against the native client); this suite times the same renderers
-// natively on the same mesh, size and turning camera in the same run and gives the ratio. No
-// rows, and a message, without the browser or the script.
+// natively on the same mesh, size and turning camera in the same run and gives the ratio. A first
+// row, "bare-webgl2", is the platform's own ratio: the least GL a frame can be, written by hand in
+// script and timed natively (bare_sphere.hpp). No rows, and a message, without the browser or the
+// script.
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -12,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bare_sphere.hpp"
 #include "bench_harness.hpp"
 #include "client/render/backdrop.hpp"
 #include "client/render/styles.hpp"
@@ -36,13 +39,23 @@ std::vector<Result> run_web_scene_suite(Harness& harness) {
   cow.frame.viewport = {kWidth, kHeight};
   std::map<std::string, Result> native;
   std::vector<Result> rows;
+  BareSphere bare;
+  const fs::path bare_json = out / "bare-sphere.json";
+  std::ofstream(bare_json) << bare.page_json();
+  const Backdrop white(BackdropSpec::parse("#ffffff"));
+  native["bare-webgl2"] = harness.time_frames(bare, cow, harness.options().frames, nullptr, &white);
+  const Image bare_picture = harness.canvas().read();
+  size_t covered = 0;
+  for (int y = 0; y < bare_picture.height; ++y)
+    for (int x = 0; x < bare_picture.width; ++x) covered += bare_picture.at(x, y)[0] != 255;
+  native["bare-webgl2"].counters["native_covered_share"] = double(covered) / (double(bare_picture.width) * bare_picture.height);
   // The browser's WebGL2 on either software rasteriser (tests/web/browser_support.py): SwiftShader,
   // what a browser without a GPU uses, and ANGLE over llvmpipe, the one the native client uses.
   for (const std::string gl : {"swiftshader", "llvmpipe"}) {
     const fs::path json = out / ("web-scene-" + gl + ".json");
     fs::remove(json);
     std::string command = "INKWIRE_BROWSER_GL=" + gl + " /usr/bin/python3 '" + script.string() + "' '" + INKWIRE_BIN_DIR + "' '" +
-                          (out / gl).string() + "' '" + json.string() + "'";
+                          (out / gl).string() + "' '" + json.string() + "' '" + bare_json.string() + "'";
     for (const std::string& n : names) command += " '" + n + "'";
     if (std::system(command.c_str()) != 0 || !fs::exists(json)) {
       std::fprintf(stderr, "inkwire-bench: the web-scene suite did not run (%s): no web-scene rows for %s\n", command.c_str(), gl.c_str());
@@ -65,7 +78,10 @@ std::vector<Result> run_web_scene_suite(Harness& harness) {
       r.counters["native_fps"] = r.fps_median;
       r.counters["fps"] = row.at("fps").get<double>();
       r.counters["rel_native"] = r.counters["fps"] / r.fps_median;
-      r.counters["psnr_vs_native"] = row.at("psnr_vs_native").get<double>();
+      if (row.contains("covered_share")) r.counters["covered_share"] = row.at("covered_share").get<double>();
+      if (row.contains("psnr_vs_native")) r.counters["psnr_vs_native"] = row.at("psnr_vs_native").get<double>();
+      r.counters["ms_frame"] = 1000.0 / r.counters["fps"];
+      r.counters["ms_in_page_calls"] = row.at("ms_in_page_calls").get<double>();
       r.counters["ms_first_frame"] = j.at("ms_first_frame").get<double>();
       r.counters["bytes_first_frame"] = j.at("bytes_first_frame").get<double>();
       r.counters["module_bytes_compressed"] = j.at("module_bytes_compressed").get<double>();

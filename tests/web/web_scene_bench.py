@@ -2,10 +2,12 @@
 """The scene benchmark's browser half (`inkwire-bench --suite web-scene` runs it; SPEC W5-W7): in
 headless Chromium (SwiftShader) on loopback, /scene/bench at 620x500: bytes and milliseconds to
 the first frame (module and model), the module's compressed size, then per style the frames per
-second while the camera turns a degree a frame (a drag), and the picture against the native
-headless client's of the same session (PSNR). The native renderers' speed is measured by the C++
-suite in the same run.
-  web_scene_bench.py BIN_DIR OUT_DIR JSON_OUT STYLE..."""
+second while the camera turns a degree a frame (a drag), the milliseconds a frame spends in the
+page's own calls (script and module: the rest is the browser drawing), and the picture against the
+native headless client's of the same session (PSNR). First, the platform's own figure: the
+C++ suite's bare sphere (BARE_JSON: triangles and shaders), drawn by a page's script with the
+same calls. The native speeds are measured by the C++ suite in the same run.
+  web_scene_bench.py BIN_DIR OUT_DIR JSON_OUT BARE_JSON STYLE..."""
 import base64
 import json
 import os
@@ -17,7 +19,7 @@ import time
 sys.path.insert(0, os.path.dirname(__file__))
 from browser_support import Server, chromium, psnr, read_image, skip  # skips without the browser
 
-BIN, OUT, JSON_OUT, STYLES = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4:]
+BIN, OUT, JSON_OUT, BARE_JSON, STYLES = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4], sys.argv[5:]
 MESH = os.path.join(BIN, "..", "packaged-data", "data", "meshes", "cow.off")
 if not os.path.exists(MESH):
     skip(f"{MESH} is missing (libcgal-demo)")
@@ -28,8 +30,27 @@ shutil.rmtree(data, ignore_errors=True)
 server = Server(BIN, OUT, data, {"sessions": [{"name": "bench", "kind": "scene", "style": "default", "assets": [{"path": MESH}]}],
                                  "http": "127.0.0.1:0"})
 element = "document.querySelector('inkwire-scene')"
+
+
+def timed_frames():
+    """Script that times FRAMES calls of the page's `frame(i)` drawing into WebGL2 context `g`,
+    three times after a warm-up, one pixel read after each run waiting for the browser to draw
+    them all: `timed`, the median run's frames a second and milliseconds a frame spent in the
+    page's own calls (script and module; the rest is the browser drawing)."""
+    return f"""const pixel = new Uint8Array(4), runs = [];
+      for (let i = 0; i < 5; ++i) frame(i);
+      g.readPixels(0, 0, 1, 1, g.RGBA, g.UNSIGNED_BYTE, pixel);
+      for (let run = 0; run < 3; ++run) {{
+        let inCalls = 0; const start = performance.now();
+        for (let i = 0; i < {FRAMES}; ++i) {{ const t = performance.now(); frame(i); inCalls += performance.now() - t; }}
+        g.readPixels(0, 0, 1, 1, g.RGBA, g.UNSIGNED_BYTE, pixel);
+        runs.push([{FRAMES} * 1000 / (performance.now() - start), inCalls / {FRAMES}]);
+      }}
+      const timed = runs.sort((a, b) => a[0] - b[0])[1];"""
+
+
 driver = chromium(OUT, WIDTH + 40, HEIGHT + 200)
-driver.set_script_timeout(600)  # painterly in SwiftShader takes a while for 60 frames
+driver.set_script_timeout(600)  # painterly in SwiftShader takes a while for 3 x 60 frames
 rows = []
 try:
     driver.get(f"http://127.0.0.1:{server.http}/scene/bench")
@@ -41,6 +62,39 @@ try:
                                      "const x = g.getExtension('WEBGL_debug_renderer_info'); return x ? g.getParameter(x.UNMASKED_RENDERER_WEBGL) : '';")
     driver.execute_script(f"document.body.style.margin = '0'; {element}.style.cssText = 'width:{WIDTH}px;height:{HEIGHT}px;flex:none';"
                           f"{element}.shadowRoot.querySelector('details').style.display = 'none'")
+    # The least GL a frame can be, in a canvas made as the module makes its own (one clear, one
+    # indexed draw): what the browser's WebGL2 costs before any of the module's work.
+    with open(BARE_JSON) as f:
+        bare = json.load(f)
+    fps, in_calls, covered = driver.execute_script(f"""const bare = arguments[0], c = document.createElement('canvas');
+      c.width = {WIDTH}; c.height = {HEIGHT}; document.body.appendChild(c);
+      const g = c.getContext('webgl2', {{alpha: false, depth: true, stencil: true, antialias: false, preserveDrawingBuffer: true}});
+      const header = '#version 300 es\\nprecision highp float;\\n', program = g.createProgram();
+      for (const [stage, source] of [[g.VERTEX_SHADER, bare.vertex], [g.FRAGMENT_SHADER, bare.fragment]]) {{
+        const s = g.createShader(stage); g.shaderSource(s, header + source); g.compileShader(s); g.attachShader(program, s);
+      }}
+      g.linkProgram(program);
+      const vertexArray = g.createVertexArray(); g.bindVertexArray(vertexArray);
+      g.bindBuffer(g.ARRAY_BUFFER, g.createBuffer()); g.bufferData(g.ARRAY_BUFFER, new Float32Array(bare.positions), g.STATIC_DRAW);
+      g.enableVertexAttribArray(0); g.vertexAttribPointer(0, 3, g.FLOAT, false, 12, 0);
+      g.bindBuffer(g.ELEMENT_ARRAY_BUFFER, g.createBuffer()); g.bufferData(g.ELEMENT_ARRAY_BUFFER, new Uint16Array(bare.indices), g.STATIC_DRAW);
+      const turn = g.getUniformLocation(program, 'turn');
+      const frame = (i) => {{
+        g.bindFramebuffer(g.FRAMEBUFFER, null); g.viewport(0, 0, {WIDTH}, {HEIGHT});
+        g.clearColor(1, 1, 1, 1); g.clear(g.COLOR_BUFFER_BIT | g.DEPTH_BUFFER_BIT | g.STENCIL_BUFFER_BIT);
+        g.enable(g.DEPTH_TEST); g.enable(g.CULL_FACE); g.useProgram(program);
+        g.uniform2f(turn, Math.cos(0.02 * i), Math.sin(0.02 * i)); g.bindVertexArray(vertexArray);
+        g.drawElements(g.TRIANGLES, bare.indices.length, g.UNSIGNED_SHORT, 0);
+      }};
+      {timed_frames()}
+      const all = new Uint8Array({WIDTH} * {HEIGHT} * 4);
+      g.readPixels(0, 0, {WIDTH}, {HEIGHT}, g.RGBA, g.UNSIGNED_BYTE, all);
+      let covered = 0; for (let p = 0; p < all.length; p += 4) covered += all[p] !== 255;
+      c.remove();
+      return [...timed, covered / ({WIDTH} * {HEIGHT})];""", bare)
+    rows.append({"style": "bare-webgl2", "fps": fps, "ms_in_page_calls": in_calls, "covered_share": covered})
+    print(f"bare-webgl2: {fps:.1f} fps in the browser ({in_calls:.2f} ms a frame in the page's calls), {covered:.3f} of the picture covered", flush=True)
+
     for style in STYLES:
         subprocess.run([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{server.tcp}", "--session", "bench", "--headless", "--frames", "1",
                         "--size", f"{WIDTH}x{HEIGHT}", "--view", "30,20,1.4", "--style", style, "--out", os.path.join(OUT, "native.png"),
@@ -50,16 +104,13 @@ try:
         with open(os.path.join(OUT, "browser.png"), "wb") as f:
             f.write(base64.b64decode(png.split(",", 1)[1]))
         db = psnr(read_image(os.path.join(OUT, "browser.png"), OUT), read_image(os.path.join(OUT, "native.png"), OUT))
-        # A drag: the camera turns a degree a frame; one pixel read at the end waits for the GPU.
-        fps = driver.execute_script(f"""const e = {element}, g = e.canvas.getContext('webgl2'), pixel = new Uint8Array(4);
-          for (let i = 0; i < 5; ++i) e.draw(i / 60);
-          g.readPixels(0, 0, 1, 1, g.RGBA, g.UNSIGNED_BYTE, pixel);
-          const start = performance.now();
-          for (let i = 0; i < {FRAMES}; ++i) {{ e.camera = {{azimuth: 30 + i}}; e.draw(i / 60); }}
-          g.readPixels(0, 0, 1, 1, g.RGBA, g.UNSIGNED_BYTE, pixel);
-          return {FRAMES} * 1000 / (performance.now() - start);""")
-        rows.append({"style": style, "fps": fps, "psnr_vs_native": db})
-        print(f"{style}: {fps:.1f} fps in the browser, {db:.2f} dB against the native client", flush=True)
+        # A drag: the camera turns a degree a frame.
+        fps, in_calls = driver.execute_script(f"""const e = {element}, g = e.canvas.getContext('webgl2');
+          const frame = (i) => {{ e.camera = {{azimuth: 30 + i}}; e.draw(i / 60); }};
+          {timed_frames()}
+          return timed;""")
+        rows.append({"style": style, "fps": fps, "ms_in_page_calls": in_calls, "psnr_vs_native": db})
+        print(f"{style}: {fps:.1f} fps in the browser ({in_calls:.2f} ms a frame in the page's calls), {db:.2f} dB against the native client", flush=True)
 finally:
     driver.quit()
     server.stop()
