@@ -2,10 +2,10 @@
 // tests/web/web_scene_bench.py measures the element in Debian's headless chromium, on SwiftShader
 // and on llvmpipe (frames per second during a drag at 620x500, first-frame bytes and time, the
 // module's compressed size, PSNR against the native client); this suite times the same renderers
-// natively on the same mesh, size and turning camera in the same run and gives the ratio. A first
-// row, "bare-webgl2", is the platform's own ratio: the least GL a frame can be, written by hand in
-// script and timed natively (bare_sphere.hpp). No rows, and a message, without the browser or the
-// script.
+// natively on the same mesh, size and turning camera in the same run and gives the ratio. The
+// first rows, "bare-mesh" and "bare-quads", are the platform's own ratios: the least GL a frame of
+// the default style's and of the painterly style's kind of work can be, written by hand in script
+// and timed natively (bare_frame.hpp). No rows, and a message, without the browser or the script.
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -14,7 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bare_sphere.hpp"
+#include "bare_frame.hpp"
 #include "bench_harness.hpp"
 #include "client/render/backdrop.hpp"
 #include "client/render/styles.hpp"
@@ -39,16 +39,21 @@ std::vector<Result> run_web_scene_suite(Harness& harness) {
   cow.frame.viewport = {kWidth, kHeight};
   std::map<std::string, Result> native;
   std::vector<Result> rows;
-  BareSphere bare;
-  const fs::path bare_json = out / "bare-sphere.json";
-  std::ofstream(bare_json) << bare.page_json();
+  // The platform's references, drawn over white: each picture's covered share says both drew it.
+  const fs::path bare_json = out / "bare-frames.json";
+  nlohmann::json bare_pages = nlohmann::json::array();
   const Backdrop white(BackdropSpec::parse("#ffffff"));
-  native["bare-webgl2"] = harness.time_frames(bare, cow, harness.options().frames, nullptr, &white);
-  const Image bare_picture = harness.canvas().read();
-  size_t covered = 0;
-  for (int y = 0; y < bare_picture.height; ++y)
-    for (int x = 0; x < bare_picture.width; ++x) covered += bare_picture.at(x, y)[0] != 255;
-  native["bare-webgl2"].counters["native_covered_share"] = double(covered) / (double(bare_picture.width) * bare_picture.height);
+  for (const BareFrame::Kind kind : {BareFrame::Kind::Mesh, BareFrame::Kind::Quads}) {
+    BareFrame bare(kind);
+    bare_pages.push_back(bare.page_json());
+    Result& r = native[bare.name()] = harness.time_frames(bare, cow, harness.options().frames, nullptr, &white);
+    const Image picture = harness.canvas().read();
+    size_t covered = 0;
+    for (int y = 0; y < picture.height; ++y)
+      for (int x = 0; x < picture.width; ++x) covered += picture.at(x, y)[0] != 255;
+    r.counters["native_covered_share"] = double(covered) / (double(picture.width) * picture.height);
+  }
+  std::ofstream(bare_json) << bare_pages.dump();
   // The browser's WebGL2 on either software rasteriser (tests/web/browser_support.py): SwiftShader,
   // what a browser without a GPU uses, and ANGLE over llvmpipe, the one the native client uses.
   for (const std::string gl : {"swiftshader", "llvmpipe"}) {

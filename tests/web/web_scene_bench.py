@@ -4,9 +4,9 @@ headless Chromium (SwiftShader) on loopback, /scene/bench at 620x500: bytes and 
 the first frame (module and model), the module's compressed size, then per style the frames per
 second while the camera turns a degree a frame (a drag), the milliseconds a frame spends in the
 page's own calls (script and module: the rest is the browser drawing), and the picture against the
-native headless client's of the same session (PSNR). First, the platform's own figure: the
-C++ suite's bare sphere (BARE_JSON: triangles and shaders), drawn by a page's script with the
-same calls. The native speeds are measured by the C++ suite in the same run.
+native headless client's of the same session (PSNR). First, the platform's own figures: the
+C++ suite's bare frames (BARE_JSON: their data and shaders, bare_frame.hpp), drawn by a page's
+script with the same calls. The native speeds are measured by the C++ suite in the same run.
   web_scene_bench.py BIN_DIR OUT_DIR JSON_OUT BARE_JSON STYLE..."""
 import base64
 import json
@@ -62,38 +62,54 @@ try:
                                      "const x = g.getExtension('WEBGL_debug_renderer_info'); return x ? g.getParameter(x.UNMASKED_RENDERER_WEBGL) : '';")
     driver.execute_script(f"document.body.style.margin = '0'; {element}.style.cssText = 'width:{WIDTH}px;height:{HEIGHT}px;flex:none';"
                           f"{element}.shadowRoot.querySelector('details').style.display = 'none'")
-    # The least GL a frame can be, in a canvas made as the module makes its own (one clear, one
-    # indexed draw): what the browser's WebGL2 costs before any of the module's work.
+    # The least GL a frame of each kind of work can be (bare_frame.hpp), in a canvas made as the
+    # module makes its own: what the browser's WebGL2 costs before any of the module's work.
     with open(BARE_JSON) as f:
-        bare = json.load(f)
-    fps, in_calls, covered = driver.execute_script(f"""const bare = arguments[0], c = document.createElement('canvas');
-      c.width = {WIDTH}; c.height = {HEIGHT}; document.body.appendChild(c);
-      const g = c.getContext('webgl2', {{alpha: false, depth: true, stencil: true, antialias: false, preserveDrawingBuffer: true}});
-      const header = '#version 300 es\\nprecision highp float;\\n', program = g.createProgram();
-      for (const [stage, source] of [[g.VERTEX_SHADER, bare.vertex], [g.FRAGMENT_SHADER, bare.fragment]]) {{
-        const s = g.createShader(stage); g.shaderSource(s, header + source); g.compileShader(s); g.attachShader(program, s);
-      }}
-      g.linkProgram(program);
-      const vertexArray = g.createVertexArray(); g.bindVertexArray(vertexArray);
-      g.bindBuffer(g.ARRAY_BUFFER, g.createBuffer()); g.bufferData(g.ARRAY_BUFFER, new Float32Array(bare.positions), g.STATIC_DRAW);
-      g.enableVertexAttribArray(0); g.vertexAttribPointer(0, 3, g.FLOAT, false, 12, 0);
-      g.bindBuffer(g.ELEMENT_ARRAY_BUFFER, g.createBuffer()); g.bufferData(g.ELEMENT_ARRAY_BUFFER, new Uint16Array(bare.indices), g.STATIC_DRAW);
-      const turn = g.getUniformLocation(program, 'turn');
-      const frame = (i) => {{
-        g.bindFramebuffer(g.FRAMEBUFFER, null); g.viewport(0, 0, {WIDTH}, {HEIGHT});
-        g.clearColor(1, 1, 1, 1); g.clear(g.COLOR_BUFFER_BIT | g.DEPTH_BUFFER_BIT | g.STENCIL_BUFFER_BIT);
-        g.enable(g.DEPTH_TEST); g.enable(g.CULL_FACE); g.useProgram(program);
-        g.uniform2f(turn, Math.cos(0.02 * i), Math.sin(0.02 * i)); g.bindVertexArray(vertexArray);
-        g.drawElements(g.TRIANGLES, bare.indices.length, g.UNSIGNED_SHORT, 0);
-      }};
-      {timed_frames()}
-      const all = new Uint8Array({WIDTH} * {HEIGHT} * 4);
-      g.readPixels(0, 0, {WIDTH}, {HEIGHT}, g.RGBA, g.UNSIGNED_BYTE, all);
-      let covered = 0; for (let p = 0; p < all.length; p += 4) covered += all[p] !== 255;
-      c.remove();
-      return [...timed, covered / ({WIDTH} * {HEIGHT})];""", bare)
-    rows.append({"style": "bare-webgl2", "fps": fps, "ms_in_page_calls": in_calls, "covered_share": covered})
-    print(f"bare-webgl2: {fps:.1f} fps in the browser ({in_calls:.2f} ms a frame in the page's calls), {covered:.3f} of the picture covered", flush=True)
+        bare_frames = json.load(f)
+    for bare in bare_frames:
+        fps, in_calls, covered = driver.execute_script(f"""const bare = arguments[0], c = document.createElement('canvas');
+          c.width = {WIDTH}; c.height = {HEIGHT}; document.body.appendChild(c);
+          const g = c.getContext('webgl2', {{alpha: false, depth: true, stencil: true, antialias: false, preserveDrawingBuffer: true}});
+          const header = '#version 300 es\\nprecision highp float;\\n', program = g.createProgram();
+          for (const [stage, source] of [[g.VERTEX_SHADER, bare.vertex], [g.FRAGMENT_SHADER, bare.fragment]]) {{
+            const s = g.createShader(stage); g.shaderSource(s, header + source); g.compileShader(s); g.attachShader(program, s);
+          }}
+          g.linkProgram(program);
+          const vertexArray = g.createVertexArray(), mesh = 'indices' in bare, at = (name) => g.getUniformLocation(program, name);
+          g.bindVertexArray(vertexArray);
+          g.bindBuffer(g.ARRAY_BUFFER, g.createBuffer());
+          g.bufferData(g.ARRAY_BUFFER, new Float32Array(mesh ? bare.positions : bare.centres), g.STATIC_DRAW);
+          g.enableVertexAttribArray(0);
+          if (mesh) {{
+            g.vertexAttribPointer(0, 3, g.FLOAT, false, 12, 0);
+            g.bindBuffer(g.ELEMENT_ARRAY_BUFFER, g.createBuffer()); g.bufferData(g.ELEMENT_ARRAY_BUFFER, new Uint16Array(bare.indices), g.STATIC_DRAW);
+          }} else {{
+            g.vertexAttribPointer(0, 2, g.FLOAT, false, 8, 0); g.vertexAttribDivisor(0, 1);
+          }}
+          const frame = (i) => {{  // as bare_frame.cpp draws
+            g.bindFramebuffer(g.FRAMEBUFFER, null); g.viewport(0, 0, {WIDTH}, {HEIGHT});
+            g.clearColor(1, 1, 1, 1); g.clear(g.COLOR_BUFFER_BIT | g.DEPTH_BUFFER_BIT | g.STENCIL_BUFFER_BIT);
+            g.useProgram(program); g.bindVertexArray(vertexArray);
+            if (mesh) {{
+              g.enable(g.DEPTH_TEST); g.enable(g.CULL_FACE); g.disable(g.BLEND);
+              g.uniform2f(at('turn'), Math.cos(0.02 * i), Math.sin(0.02 * i));
+              g.drawElements(g.TRIANGLES, bare.indices.length, g.UNSIGNED_SHORT, 0);
+            }} else {{
+              g.disable(g.DEPTH_TEST); g.disable(g.CULL_FACE); g.enable(g.BLEND); g.blendFunc(g.SRC_ALPHA, g.ONE_MINUS_SRC_ALPHA);
+              g.uniform2f(at('viewport'), {WIDTH}, {HEIGHT}); g.uniform2f(at('shift'), i % 8, i % 8); g.uniform1f(at('half_size'), bare.half_size);
+              g.drawArraysInstanced(g.TRIANGLE_STRIP, 0, 4, bare.centres.length / 2);
+              g.disable(g.BLEND);
+            }}
+          }};
+          {timed_frames()}
+          const all = new Uint8Array({WIDTH} * {HEIGHT} * 4);
+          g.readPixels(0, 0, {WIDTH}, {HEIGHT}, g.RGBA, g.UNSIGNED_BYTE, all);
+          let covered = 0; for (let p = 0; p < all.length; p += 4) covered += all[p] !== 255;
+          c.remove();
+          return [...timed, covered / ({WIDTH} * {HEIGHT})];""", bare)
+        rows.append({"style": bare["name"], "fps": fps, "ms_in_page_calls": in_calls, "covered_share": covered})
+        print(f"{bare['name']}: {fps:.1f} fps in the browser ({in_calls:.2f} ms a frame in the page's calls), {covered:.3f} of the picture covered",
+              flush=True)
 
     for style in STYLES:
         subprocess.run([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{server.tcp}", "--session", "bench", "--headless", "--frames", "1",

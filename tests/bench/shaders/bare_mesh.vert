@@ -1,4 +1,4 @@
-// The web-scene suite's platform reference: a lit sphere turning about its vertical axis, the
+// The web-scene suite's first platform reference: a lit sphere turning about its vertical axis, the
 // least GL a frame can be (no #version line: the native harness and the page put their own first).
 layout(location = 0) in vec3 position;
 uniform vec2 turn;  // cos and sin of the frame's angle
