@@ -1,6 +1,7 @@
 #include "common/image.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "common/error.hpp"
@@ -38,6 +39,30 @@ Image side_by_side(const std::vector<Image>& panels) {
   for (const Image& p : panels) {
     for (int y = 0; y < p.height; ++y) std::copy_n(p.at(0, y), size_t(p.width) * 4, out.at(x0, y));
     x0 += p.width;
+  }
+  return out;
+}
+
+Image matte_scaled_up(const Image& matte, int width, int height) {
+  if (matte.empty() || width < matte.width || height < matte.height)
+    throw Error("matte_scaled_up(): " + std::to_string(matte.width) + "x" + std::to_string(matte.height) + " to " +
+                std::to_string(width) + "x" + std::to_string(height));
+  Image out(width, height, {0, 0, 0, 255});
+  const double sx = double(matte.width) / width, sy = double(matte.height) / height;
+  const auto grey = [&](int x, int y) { return double(matte.at(x, y)[0]); };
+  for (int y = 0; y < height; ++y) {
+    const double fy = std::clamp((y + 0.5) * sy - 0.5, 0.0, double(matte.height - 1));
+    const int y0 = int(std::floor(fy)), y1 = std::min(y0 + 1, matte.height - 1);
+    const double ty = fy - y0;
+    for (int x = 0; x < width; ++x) {
+      const double fx = std::clamp((x + 0.5) * sx - 0.5, 0.0, double(matte.width - 1));
+      const int x0 = int(std::floor(fx)), x1 = std::min(x0 + 1, matte.width - 1);
+      const double tx = fx - x0;
+      const double top = grey(x0, y0) * (1 - tx) + grey(x1, y0) * tx;
+      const double bottom = grey(x0, y1) * (1 - tx) + grey(x1, y1) * tx;
+      uint8_t* p = out.at(x, y);
+      p[0] = p[1] = p[2] = uint8_t(std::lround(top * (1 - ty) + bottom * ty));
+    }
   }
   return out;
 }

@@ -59,4 +59,11 @@ void flip_rows(Image& image);
 // A copy scaled to `width` x `height` (area averaging when shrinking, bilinear when growing).
 Image resized(const Image& image, int width, int height);
 
+// A matte (grey in red) scaled up to `width` x `height` bilinearly, each pixel's centre mapped
+// back into the matte and clamped at its border, in double: how the server lays a finer zoom
+// level's photo over its first level's matte (server/products/matte.cpp key_like()) and how the
+// clients take it off again (client/render/tween/matte_sample.cpp, and step for step the
+// browser's client/web/render/tween/matte_sample.js, pinned by tests/golden/warp-vectors.json).
+Image matte_scaled_up(const Image& matte, int width, int height);
+
 }  // namespace inkwire

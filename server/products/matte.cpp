@@ -201,18 +201,22 @@ MatteResult key_plain_background(Image& photo) {
 
 void key_like(Image& larger, const Image& keyed, const glm::vec3& backdrop) {
   const int w = larger.width, h = larger.height;
-  // The floor layer is where the keyed photo's matte is 0 and its colour not white.
-  cv::Mat matte(keyed.height, keyed.width, CV_8U), floor(keyed.height, keyed.width, CV_8U);
+  // The matte, and the floor layer where the keyed photo's matte is 0 and its colour not white,
+  // each as grey, scaled up exactly as clients scale the matte they take the level off again by.
+  Image matte_grey(keyed.width, keyed.height), floor_grey(keyed.width, keyed.height);
   for (int y = 0; y < keyed.height; ++y)
     for (int x = 0; x < keyed.width; ++x) {
       const uint8_t* p = keyed.at(x, y);
-      matte.at<uint8_t>(y, x) = p[3];
-      floor.at<uint8_t>(y, x) = p[3] == 0 && (p[0] != 255 || p[1] != 255 || p[2] != 255) ? 255 : 0;
+      matte_grey.at(x, y)[0] = p[3];
+      floor_grey.at(x, y)[0] = p[3] == 0 && (p[0] != 255 || p[1] != 255 || p[2] != 255) ? 255 : 0;
     }
-  // Scaled as clients scale the matte they lay the level over (resized(), bilinear).
-  cv::resize(matte, matte, {w, h}, 0, 0, cv::INTER_LINEAR);
-  cv::resize(floor, floor, {w, h}, 0, 0, cv::INTER_LINEAR);
-  cv::threshold(floor, floor, 127, 255, cv::THRESH_BINARY);
+  const Image matte_up = matte_scaled_up(matte_grey, w, h), floor_up = matte_scaled_up(floor_grey, w, h);
+  cv::Mat matte(h, w, CV_8U), floor(h, w, CV_8U);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      matte.at<uint8_t>(y, x) = matte_up.at(x, y)[0];
+      floor.at<uint8_t>(y, x) = floor_up.at(x, y)[0] > 127 ? 255 : 0;
+    }
   apply_key(larger, matte, floor, cv::Vec3f(backdrop.r, backdrop.g, backdrop.b));
 }
 

@@ -19,10 +19,6 @@ inline constexpr float kBleedPixels = 1.5f;
 // Throws inkwire::Error when the matte's shape does not fit the photo's.
 Image object_on_matte(Image photo, const Image& matte);
 
-// A matte (grey in red) scaled up to `width` x `height` bilinearly, each pixel's centre mapped
-// back into the matte and clamped at its border.
-Image matte_scaled_up(const Image& matte, int width, int height);
-
 // A sample with a matte (its alpha) as the warper reads it when composing by mattes: colour
 // bled outward past the outline by kBleedPixels, beyond that the floor layer as it looks on
 // white (the sample's own colours where its matte is 0: a shadow, or white), alpha the signed
