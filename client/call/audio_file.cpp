@@ -22,7 +22,7 @@ std::vector<float> read_wav_mono(const std::filesystem::path& file, int rate) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw Error("cannot read sound file '" + file.string() + "'");
   std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::string what = "'" + file.string() + "'";
+  const std::string what = std::string("'").append(file.string()).append("'");  // (GCC 12 misreads "'" + s as overlapping)
   if (bytes.size() < 12 || std::memcmp(bytes.data(), "RIFF", 4) != 0 || std::memcmp(bytes.data() + 8, "WAVE", 4) != 0 || bytes.size() > kMaxWavBytes)
     throw Error(what + " is not a WAV file");
   int channels = 0, source_rate = 0, bits = 0, format = 0;
@@ -80,11 +80,11 @@ void write_wav_mono(const std::filesystem::path& file, const std::vector<float>&
   std::vector<uint8_t> out(44 + samples.size() * 2);
   const auto put32 = [&](size_t at, uint32_t v) { for (int i = 0; i < 4; ++i) out[at + size_t(i)] = uint8_t(v >> (8 * i)); };
   const auto put16 = [&](size_t at, uint16_t v) { out[at] = uint8_t(v), out[at + 1] = uint8_t(v >> 8); };
-  std::memcpy(&out[0], "RIFF", 4);
+  std::copy_n("RIFF", 4, out.begin());
   put32(4, uint32_t(out.size() - 8));
-  std::memcpy(&out[8], "WAVEfmt ", 8);
+  std::copy_n("WAVEfmt ", 8, out.begin() + 8);
   put32(16, 16), put16(20, 1), put16(22, 1), put32(24, uint32_t(rate)), put32(28, uint32_t(rate * 2)), put16(32, 2), put16(34, 16);
-  std::memcpy(&out[36], "data", 4);
+  std::copy_n("data", 4, out.begin() + 36);
   put32(40, uint32_t(samples.size() * 2));
   for (size_t i = 0; i < samples.size(); ++i) put16(44 + 2 * i, uint16_t(int16_t(std::lround(std::clamp(samples[i], -1.0f, 1.0f) * 32767.0f))));
   std::ofstream f(file, std::ios::binary);

@@ -238,10 +238,7 @@ Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions&
     for (const glm::ivec2& l : product.levels) sizes += (sizes.empty() ? "" : ", ") + std::to_string(l.x) + "x" + std::to_string(l.y);
     progress(0, total, "zoom: photos " + std::to_string(product.data.width) + "x" + std::to_string(product.data.height) + " first, then " + sizes);
   }
-  PhotoFolder names_only;  // what reading a finer level needs: the folder and names, not the first level's images
-  names_only.folder = photos.folder;
-  names_only.names = photos.names;
-  product.finer = [photos = std::move(names_only), backdrops, gains,
+  product.finer = [photos = PhotoFolder{.folder = photos.folder, .names = photos.names}, backdrops, gains,
                    matted = product.matted](size_t index, const Image& first, glm::ivec2 size) {
     Image photo = read_photo_at(photos, index, size);
     if (matted) key_like(photo, first, backdrops[index]);

@@ -75,7 +75,7 @@ protocol::Snapshot store_product(AssetStore& store, const Product& product, cons
   state.kind = protocol::SessionKind::Turntable;
   state.style = {.renderer = "tween", .settings = {}};
   std::vector<protocol::AssetAnnounce> mattes;
-  char name[32];
+  char name[64];  // "sample-NNN-WIDTH.jpg" with room for any index and width
   for (size_t i = 0; i < product.images.size(); ++i) {
     const Image& image = product.images[i];
     std::snprintf(name, sizeof name, "sample-%03zu.jpg", i);

@@ -191,8 +191,7 @@ std::vector<Result> run_crash_suite(Harness& harness) {
     }
   }
 
-  Result r{.suite = "crash", .renderer = "crash", .variant = "kills=" + std::to_string(kills + upload_kills), .object = "-",
-           .faces = 0, .frames = 0, .fps_median = 0, .fps_min = 0, .fps_max = 0, .rel_default = 0, .counters = {}};
+  Result r{.suite = "crash", .renderer = "crash", .variant = "kills=" + std::to_string(kills + upload_kills), .object = "-"};
   r.counters = {{"kills", double(kills)}, {"add_product_kills", double(add_kills)}, {"session_change_kills", double(change_kills)},
                 {"products_stored", double(stored.size())}, {"products_served", double(served)}, {"products_lost", double(lost)},
                 {"restarts_failed", double(restarts_failed)}, {"assets_on_disk", double(assets)}, {"partial_assets_named", double(partial)},

@@ -74,7 +74,9 @@ TEST(PainterlyGLTest, BrushesStayNearTheMatteAndCoverTheObject) {
       const double least = std::string(style) == "pointillist" ? 0.85 : std::string(style) == "watercolour" ? 0.9 : 0.97;
       EXPECT_GE(double(covered) / double(object), least) << style;
       // Small round dots seldom reach past the outline; strokes and washes often do.
-      if (soft) EXPECT_GT(partial_outside, std::string(style) == "pointillist" ? 5u : 100u) << style << ": paint should fade across the outline";
+      if (soft) {
+        EXPECT_GT(partial_outside, std::string(style) == "pointillist" ? 5u : 100u) << style << ": paint should fade across the outline";
+      }
     }
   }
 }

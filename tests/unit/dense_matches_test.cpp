@@ -162,8 +162,11 @@ TEST(ExposureTest, APhotoBrighterThanItsNeighboursIsEvenedAndSlowLightIsKept) {
   const std::vector<glm::vec3> gains = exposure_gains(pairs, n, true);
   ASSERT_EQ(gains.size(), size_t(n));
   EXPECT_NEAR(gains[3].g, 1.0 / 1.2, 0.02);
-  for (int i = 0; i < n; ++i)
-    if (i != 3) EXPECT_NEAR(gains[size_t(i)].g, 1.0, 0.03) << "photo " << i << " keeps its light";
+  for (int i = 0; i < n; ++i) {
+    if (i != 3) {
+      EXPECT_NEAR(gains[size_t(i)].g, 1.0, 0.03) << "photo " << i << " keeps its light";
+    }
+  }
   // A pair without usable matches says nothing; a lone photo keeps its gain.
   EXPECT_EQ(exposure_gains({}, 3, false), std::vector<glm::vec3>(3, glm::vec3(1.0f)));
 }

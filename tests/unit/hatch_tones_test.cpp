@@ -72,10 +72,11 @@ TEST(HatchTonesTest, StrokesCrossOnlyInTonesDarkerThanTheCrossHatchingTone) {
     const HatchTones tones = make_hatch_tones(16, 64, 3, cross_tone);
     for (size_t k = 0; k < tones.layers.size(); ++k) {
       const float tone = float(k) / float(tones.layers.size() - 1);
-      if (tone <= cross_tone)
+      if (tone <= cross_tone) {
         EXPECT_EQ(tones.crossing_in_layer[k], 0) << "tone " << tone << " is lighter than " << cross_tone;
-      else if (tone > cross_tone + 0.1f)
+      } else if (tone > cross_tone + 0.1f) {
         EXPECT_GT(tones.crossing_in_layer[k], 0) << "tone " << tone << " is darker than " << cross_tone;
+      }
     }
     EXPECT_GT(ink_coverage(tones.layers.back()), 0.4) << "the darkest tone is mostly ink";
   }
