@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include <glm/geometric.hpp>
+#include <glm/common.hpp>
 
 #include "common/error.hpp"
 #include "common/face/face_mesh.hpp"
