@@ -22,7 +22,7 @@ std::vector<float> read_wav_mono(const std::filesystem::path& file, int rate) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw Error("cannot read sound file '" + file.string() + "'");
   std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::string what = std::string("'").append(file.string()).append("'");  // (GCC 12 misreads "'" + s as overlapping)
+  const std::string what = "'" + file.string() + "'";
   if (bytes.size() < 12 || std::memcmp(bytes.data(), "RIFF", 4) != 0 || std::memcmp(bytes.data() + 8, "WAVE", 4) != 0 || bytes.size() > kMaxWavBytes)
     throw Error(what + " is not a WAV file");
   int channels = 0, source_rate = 0, bits = 0, format = 0;
