@@ -160,10 +160,20 @@ try:
     # microphone loops her sentence from her browser's start, so the call carries it at whatever
     # phase she joined; recognition does not mind where. On three runs here: 4-5 of Bea's six
     # words and at most one of Ada's; Ada's own sentence gives 5 of hers and 1 of Bea's.)
-    heard = ada.execute_script(f"const r = {element}.player.recording(); return Array.from(r.samples.filter((_, i) => i % 3 == 0))")
-    got = recognised(heard, 16000, "ada-heard")
-    beas, adas = sorted(OWN_WORDS["bea"] & set(got)), sorted(OWN_WORDS["ada"] & set(got))
-    print("Ada heard:", " ".join(got))
+    # To the recogniser's 16 kHz from 48: each three samples averaged (a low-pass first, so what
+    # lies above 8 kHz does not fold down into the speech as every third sample alone lets it).
+    # On a busy machine the recogniser finds 2-6 of Bea's words in one listen: when it finds
+    # fewer than three, Ada listens 12 s longer and all she heard is recognised again.
+    for listen in range(2):
+        heard = ada.execute_script(f"""const s = {element}.player.recording().samples, out = [];
+          for (let i = 0; i + 2 < s.length; i += 3) out.push((s[i] + s[i + 1] + s[i + 2]) / 3);
+          return out;""")
+        got = recognised(heard, 16000, "ada-heard")
+        beas, adas = sorted(OWN_WORDS["bea"] & set(got)), sorted(OWN_WORDS["ada"] & set(got))
+        print("Ada heard:", " ".join(got))
+        if len(beas) >= 3 or listen == 1:
+            break
+        time.sleep(12)
     checks.check(len(heard) > 16000 and len(beas) >= 3 and len(beas) > len(adas),
                  f"Ada hears Bea: in {len(heard) / 16000:.1f} s of sound, Bea's words {beas} (3 or more), her own {adas}")
 
