@@ -157,6 +157,7 @@ TEST(RealPhotosGLTest, MidwayViewsKeepTheProductsShadowAndDropTheBackdrop) {
   renderer.use_model(model_of(product));
   Canvas canvas(size, size);
   std::vector<Image> panels;
+  int all_shadow_pixels = 0, all_torn = 0;
   for (float az : {15.0f, 105.0f, 195.0f}) {
     const Image render = render_mesh_view(truck, direction_at(az), size, 1.4f);
     const std::vector<float> darkness = ground_shadow(render);
@@ -164,24 +165,31 @@ TEST(RealPhotosGLTest, MidwayViewsKeepTheProductsShadowAndDropTheBackdrop) {
     // In the shadow (off the object, where the truth is at least a quarter dark), the view is
     // darker than the backdrop it is shown on by at least half as much as the truth.
     double truth_dark = 0, view_dark = 0;
-    int shadow_pixels = 0;
+    int shadow_pixels = 0, torn = 0;
     for (int y = 0; y < size; ++y)
       for (int x = 0; x < size; ++x) {
         const float d = darkness[size_t(y) * size + x];
         if (d < 0.25f || render.at(x, y)[3] > 0) continue;
+        const double dark = 1.0 - double(view.at(x, y)[2]) / double(shown.b);
         truth_dark += d;
-        view_dark += 1.0 - double(view.at(x, y)[2]) / double(shown.b);
+        view_dark += dark;
+        torn += dark < 0.3 * d;
         ++shadow_pixels;
       }
     ASSERT_GT(shadow_pixels, 50) << "azimuth " << az;
-    std::printf("azimuth %5.1f: %d shadow pixels, darkness %.3f (truth %.3f)\n", az, shadow_pixels, view_dark / shadow_pixels,
-                truth_dark / shadow_pixels);
+    all_shadow_pixels += shadow_pixels, all_torn += torn;
+    std::printf("azimuth %5.1f: %d shadow pixels, darkness %.3f (truth %.3f), %d torn\n", az, shadow_pixels, view_dark / shadow_pixels,
+                truth_dark / shadow_pixels, torn);
     EXPECT_GT(view_dark, 0.5 * truth_dark) << "azimuth " << az;
     // The studio's grey is gone: far from the object and its shadow, the backdrop it is shown on.
     for (const glm::ivec2 p : {glm::ivec2(4, 4), glm::ivec2(size - 5, 4), glm::ivec2(4, size - 5), glm::ivec2(size - 5, size - 5)})
       for (int c = 0; c < 3; ++c) EXPECT_NEAR(view.at(p.x, p.y)[c], shown[c], 2) << "azimuth " << az << " at " << p.x << "," << p.y;
     panels.push_back(view);
   }
+  // Torn: a shadow pixel the view shows at under 0.3 of the truth's darkness, where one photo sees
+  // the truck's foot and the other clear floor. Each photo lends the floor beside its own outline
+  // there (blend.frag): 47 of 2 889 (1.6%); when only photos that saw floor lent it, 73 (2.5%).
+  EXPECT_LT(all_torn, 0.02 * all_shadow_pixels);
   save_image(side_by_side(panels), fs::path(INKWIRE_TEST_OUTPUT_DIR) / "real-photos-shadow.png", false);
 }
 
