@@ -16,54 +16,35 @@
 // further than BLEED + 1 pixels outside their outline, warped with them and blended.
 in vec2 uv[SAMPLES];
 uniform sampler2D samples[SAMPLES];
-uniform vec2 sample_size[SAMPLES];  // first-level pixels, the unit of the matte's distances
 uniform vec3 weights;
 out vec4 colour;
 const float INSIDE_SAY = 2.0;
 const float FLOOR_NOISE = 0.03;
-// Sample k's texel at `at`: GLSL 3.30 and ES 3.00 index sampler arrays only by constants.
-vec4 texel_at(int k, vec2 at) {
+// Sample k's texel at its position: GLSL 3.30 and ES 3.00 index sampler arrays only by constants.
+vec4 sample_texel(int k) {
 #if SAMPLES > 2
-  if (k == 2) return texture(samples[2], at);
+  if (k == 2) return texture(samples[2], uv[2]);
 #endif
 #if SAMPLES > 1
-  if (k == 1) return texture(samples[1], at);
+  if (k == 1) return texture(samples[1], uv[1]);
 #endif
-  return texture(samples[0], at);
+  return texture(samples[0], uv[0]);
 }
-#ifdef MATTE
-float distance_of(vec4 texel) { return (texel.a - 0.5) * (2.0 * MATTE_RANGE); }
-// Sample k's floor where it sees the object (or its bled colour) at this pixel: the floor just
-// past the bleed at its nearest outline point, reached down the distance field's gradient (the
-// field is exact, so the gradient points straight away from that point). A view that shows floor
-// where one sample sees the object's foot then takes that sample's contact shadow, not only the
-// clear floor another sample shows there (a white patch under a wheel). Alpha 0: none (deep
-// inside, where the field is flat).
-vec4 floor_beside_outline(int k, float d) {
-  if (d >= MATTE_RANGE - 1.0) return vec4(0.0);
-  vec2 texel = 1.0 / sample_size[k];
-  vec2 gradient = vec2(distance_of(texel_at(k, uv[k] + vec2(texel.x, 0.0))), distance_of(texel_at(k, uv[k] + vec2(0.0, texel.y)))) - d;
-  if (dot(gradient, gradient) < 0.04) return vec4(0.0);
-  vec4 beside = texel_at(k, uv[k] - normalize(gradient) * (d + BLEED + 1.5) * texel);
-  return vec4(beside.rgb, clamp(-(distance_of(beside) + BLEED), 0.0, 1.0));
-}
-#endif
 void main() {
 #ifdef MATTE
   float distance = 0.0, total = 0.0, floor_total = 0.0;
   vec3 rgb = vec3(0.0), floor_rgb = vec3(0.0);
   for (int k = 0; k < SAMPLES; ++k) {
-    vec4 texel = texel_at(k, uv[k]);
-    float d = distance_of(texel);
+    vec4 texel = sample_texel(k);
+    float d = (texel.a - 0.5) * (2.0 * MATTE_RANGE);
     distance += weights[k] * min(d, INSIDE_SAY);
     // A sample that sees background here lends its (bled) colour only where no other sees object.
     float w = weights[k] * (0.01 + clamp(d + 0.5, 0.0, 1.0));
     rgb += w * texel.rgb;
     total += w;
     // Past the bleed its colour is the floor layer on white.
-    vec4 floor_texel = d < -(BLEED + 1.0) ? vec4(texel.rgb, 1.0) : floor_beside_outline(k, d);
-    float f = weights[k] * floor_texel.a;
-    floor_rgb += f * floor_texel.rgb;
+    float f = weights[k] * clamp(-(d + BLEED), 0.0, 1.0);
+    floor_rgb += f * texel.rgb;
     floor_total += f;
   }
   float coverage = clamp(distance + 0.5, 0.0, 1.0);
@@ -76,6 +57,6 @@ void main() {
   colour = vec4(rgb / max(total, 1e-6) * coverage, coverage) + (1.0 - coverage) * kept * vec4(on_white - vec3(1.0 - floor_alpha), floor_alpha);
 #else
   colour = vec4(0.0);
-  for (int k = 0; k < SAMPLES; ++k) colour += weights[k] * texel_at(k, uv[k]);
+  for (int k = 0; k < SAMPLES; ++k) colour += weights[k] * sample_texel(k);
 #endif
 }
