@@ -15,10 +15,6 @@ double ms_between(CallAudio::Clock::time_point a, CallAudio::Clock::time_point b
 
 }  // namespace
 
-int64_t CallAudio::sample_at(const Member& m, uint32_t time_ms) const {
-  return std::llround((double(time_ms) + m.offset_ms + jitter_ms_) * kCallRate / 1000.0);
-}
-
 void CallAudio::add(const protocol::VoiceFrame& frame, Clock::time_point arrived) {
   auto& slot = members_[frame.member];
   if (!slot) {
@@ -26,12 +22,13 @@ void CallAudio::add(const protocol::VoiceFrame& frame, Clock::time_point arrived
     slot->offset_ms = ms_between(start_, arrived) - double(frame.time_ms);
   }
   Member& m = *slot;
-  const int64_t at = sample_at(m, frame.time_ms);
-  if (at < mixed_until_) {
+  const std::optional<double> at_ms = playout_ms(frame.time_ms, m.offset_ms, m.delay_ms, double(mixed_until_) * 1000.0 / kCallRate);
+  if (!at_ms) {
     ++late_;
     m.next_ms.reset();
     return;
   }
+  const int64_t at = std::max<int64_t>(std::llround(*at_ms * kCallRate / 1000.0), mixed_until_);
   std::vector<float> pcm;
   // A gap since the member's last packet (one lost) is concealed, so the voice does not click.
   if (m.next_ms && frame.time_ms > *m.next_ms && frame.time_ms - *m.next_ms <= 120) {
@@ -67,8 +64,14 @@ std::vector<float> CallAudio::take(Clock::time_point until) {
 std::optional<CallAudio::Clock::time_point> CallAudio::local_time(uint16_t member, uint32_t time_ms) const {
   const auto it = members_.find(member);
   if (it == members_.end()) return std::nullopt;
-  const double ms = double(time_ms) + it->second->offset_ms + jitter_ms_;
+  const double ms = double(time_ms) + it->second->offset_ms + it->second->delay_ms;
   return start_ + std::chrono::microseconds(std::llround(ms * 1000.0));
+}
+
+std::optional<double> CallAudio::delay_ms(uint16_t member) const {
+  const auto it = members_.find(member);
+  if (it == members_.end()) return std::nullopt;
+  return it->second->delay_ms;
 }
 
 }  // namespace inkwire

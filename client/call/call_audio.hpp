@@ -1,9 +1,10 @@
 #pragma once
 // What a call member hears (SPEC F9): every member's Opus packets decoded and mixed on this
 // member's own clock, each member's clock mapped to it by the first packet's arrival plus a
-// jitter delay, so packets that come early or bunched play at their time, and a packet later
-// than the delay is dropped (counted), never played late. The same mapping tells when a face
-// code stamped on a member's clock is due, so mouths move with the sound. Single-threaded.
+// jitter delay, so packets that come early or bunched play at their time. A late packet raises
+// its member's delay (playout_delay.hpp) and plays; one later than the largest delay is dropped
+// (counted), never played late. The same mapping tells when a face code stamped on a member's
+// clock is due, so mouths move with the sound. Single-threaded.
 #include <chrono>
 #include <cstdint>
 #include <map>
@@ -11,6 +12,7 @@
 #include <optional>
 #include <vector>
 
+#include "client/call/playout_delay.hpp"
 #include "client/call/voice_codec.hpp"
 #include "protocol/messages.hpp"
 
@@ -19,7 +21,7 @@ namespace inkwire {
 class CallAudio {
  public:
   using Clock = std::chrono::steady_clock;
-  explicit CallAudio(Clock::time_point start, int jitter_ms = 80) : start_(start), jitter_ms_(jitter_ms) {}
+  explicit CallAudio(Clock::time_point start) : start_(start) {}
 
   void add(const protocol::VoiceFrame& frame, Clock::time_point arrived);
   // The mixed sound from where the last call ended up to `until` (this member's clock).
@@ -29,17 +31,18 @@ class CallAudio {
 
   uint64_t late() const { return late_; }        // packets dropped for coming after their time
   uint64_t played() const { return played_; }    // packets mixed in
+  // The delay `member`'s voice plays behind its clock, ms (kStartDelayMs until a packet is late).
+  std::optional<double> delay_ms(uint16_t member) const;
 
  private:
   struct Member {
     VoiceDecoder decoder;
     double offset_ms = 0;            // local ms (since start_) - member ms, from the first packet
+    double delay_ms = kStartDelayMs;  // the jitter buffer's, raised by late packets
     std::optional<uint32_t> next_ms; // where the member's next packet should start, for concealing gaps
   };
-  int64_t sample_at(const Member& m, uint32_t time_ms) const;
 
   Clock::time_point start_;
-  int jitter_ms_;
   std::map<uint16_t, std::unique_ptr<Member>> members_;
   int64_t mixed_until_ = 0;    // samples since start_ handed out by take()
   std::vector<float> ahead_;   // mixed samples from mixed_until_ on

@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "client/call/playout_delay.hpp"
 #include "client/render/tween/matte_sample.hpp"
 #include "client/viewer/photo_fetch.hpp"
 #include "client/viewer/turntable_view.hpp"
@@ -258,11 +259,27 @@ nlohmann::json turntable_cases() {
   return {{"zoom_range", {TurntableOrbit::kMinZoom, TurntableOrbit::kMaxZoom}}, {"poses", poses}, {"zoom_of_scale", held}};
 }
 
+// A member's voice packets, 60 ms apart, reaching a listener whose clock has played `now` ms:
+// on time, bunched, 30 ms late (the delay grows), on time again at the new delay, 49.75 ms late
+// (it grows again), on time, 100 ms late: beyond the largest delay (dropped), then on time.
+nlohmann::json playout_cases() {
+  const double offset = 1000.25;
+  const std::vector<std::pair<double, double>> packets = {{0, 1000.25}, {60, 1100},  {120, 1150}, {180, 1290.25}, {240, 1330},
+                                                          {300, 1480},  {360, 1540}, {420, 1720}, {480, 1650},    {540, 1700}};
+  double delay = kStartDelayMs;
+  nlohmann::json steps = nlohmann::json::array();
+  for (const auto& [time, now] : packets) {
+    const std::optional<double> at = playout_ms(time, offset, delay, now);
+    steps.push_back({{"time_ms", time}, {"now_ms", now}, {"at_ms", at ? nlohmann::json(*at) : nlohmann::json()}, {"delay_ms", delay}});
+  }
+  return {{"offset_ms", offset}, {"limits", {kStartDelayMs, kDelayMarginMs, kMaxDelayMs}}, {"steps", steps}};
+}
+
 TEST(WarpVectorsTest, GoldenVectorsForTheWebClientAreTheseNumbers) {
   const nlohmann::json golden = {{"delaunay", delaunay_cases()}, {"warp_meshes", warp_mesh_cases()}, {"distance_field", distance_case()},
                                  {"matte_samples", matte_cases()}, {"locate_view", locate_cases()}, {"photo_fetch", photo_fetch_cases()},
                                  {"faces", face_cases()},
-                                 {"turntable", turntable_cases()}};
+                                 {"turntable", turntable_cases()}, {"playout", playout_cases()}};
   const std::filesystem::path file = std::filesystem::path(INKWIRE_GOLDEN_DIR) / "warp-vectors.json";
   if (const char* approve = std::getenv("INKWIRE_APPROVE_GOLDEN"); approve && std::string(approve) == "1") {
     std::ofstream(file) << golden.dump() << "\n";
@@ -354,6 +371,37 @@ TEST(WarpVectorsTest, PhotosComeForTheViewFirstThenItsLevelThenNearestFirst) {
       }
   EXPECT_EQ(first.size(), data.directions.size());
   EXPECT_LT(c["steps"].back()["fetched"].size(), c["steps"].back()["fetches"].get<size_t>()) << "the last view ran out of photos to fetch";
+}
+
+// What the playout vectors stand for: a packet plays no earlier than the clock has played; the
+// delay never shrinks, grows only for a late packet, by its lateness and the margin, and stays
+// within the largest; a packet beyond it is dropped and changes nothing.
+TEST(WarpVectorsTest, ALatePacketRaisesTheDelayOnceAndOneTooLateIsDropped) {
+  const nlohmann::json c = playout_cases();
+  double delay = kStartDelayMs;
+  int raised = 0, dropped = 0;
+  for (const nlohmann::json& step : c["steps"]) {
+    const double on_time = step["time_ms"].get<double>() + c["offset_ms"].get<double>() + delay, now = step["now_ms"];
+    if (step["at_ms"].is_null()) {
+      ++dropped;
+      EXPECT_GT(delay + (now - on_time) + kDelayMarginMs, kMaxDelayMs);
+      EXPECT_EQ(step["delay_ms"].get<double>(), delay);
+      continue;
+    }
+    EXPECT_GE(step["at_ms"].get<double>(), now);
+    EXPECT_GE(step["delay_ms"].get<double>(), delay);
+    EXPECT_LE(step["delay_ms"].get<double>(), kMaxDelayMs);
+    if (on_time < now) {
+      ++raised;
+      EXPECT_DOUBLE_EQ(step["at_ms"].get<double>(), now + kDelayMarginMs);
+    } else {
+      EXPECT_EQ(step["delay_ms"].get<double>(), delay);
+      EXPECT_EQ(step["at_ms"].get<double>(), on_time);
+    }
+    delay = step["delay_ms"];
+  }
+  EXPECT_EQ(raised, 2);
+  EXPECT_EQ(dropped, 1);
 }
 
 }  // namespace

@@ -2,10 +2,24 @@
 // call_audio.cpp: the microphone's frames (MediaStreamTrackProcessor, 48 kHz) encoded as mono
 // Opus packets by WebCodecs' AudioEncoder, and every member's packets decoded by an
 // AudioDecoder each and played through one AudioContext at their member's moment: each
-// member's clock is mapped to this page's by its first packet plus a jitter delay, a packet
-// later than that is dropped, and the same mapping says when a face code is due (lip sync).
+// member's clock is mapped to this page's by its first packet plus a jitter delay that a late
+// packet raises (playoutMs, as client/call/playout_delay.hpp), a packet later than the largest
+// delay is dropped, and the same mapping says when a face code is due (lip sync).
 
-export const kJitterMs = 80;
+export const kStartDelayMs = 80, kDelayMarginMs = 20, kMaxDelayMs = 300;
+
+// Where a packet stamped `timeMs` on its member's clock plays on this one (ms), given `offsetMs`
+// (this clock minus the member's, from its first packet), `member.delayMs` (raised here when the
+// packet is late) and `nowMs`, how far this clock has played: null when the packet is later than
+// even the largest delay allows. The C++ rule, operation for operation (golden "playout").
+export function playoutMs(timeMs, offsetMs, member, nowMs) {
+  const at = timeMs + offsetMs + member.delayMs;
+  if (at >= nowMs) return at;
+  const raised = member.delayMs + (nowMs - at) + kDelayMarginMs;
+  if (raised > kMaxDelayMs) return null;
+  member.delayMs = raised;
+  return timeMs + offsetMs + member.delayMs;
+}
 
 // Why this browser cannot send or hear a call's voice, or '' when it can.
 export function voiceUnsupported() {
@@ -74,7 +88,7 @@ export class VoiceSender {
 export class VoicePlayer {
   constructor() {
     this.context = new AudioContext({ sampleRate: 48000 });
-    this.members = new Map();  // member -> {decoder, offset (context seconds - member seconds)}
+    this.members = new Map();  // member -> {decoder, offsetMs (context ms - member ms), delayMs, pending}
     this.late = 0;
     this.played = 0;
     this.recorded = [];        // [{at (context seconds), samples}]: what was played, for measuring
@@ -85,7 +99,7 @@ export class VoicePlayer {
   add(frame) {
     let m = this.members.get(frame.member);
     if (!m) {
-      m = { offset: this.context.currentTime - frame.time_ms / 1000, decoder: null, pending: [] };
+      m = { offsetMs: this.context.currentTime * 1000 - frame.time_ms, delayMs: kStartDelayMs, decoder: null, pending: [] };
       m.decoder = new AudioDecoder({
         output: (data) => this.play(m, data),
         error: (e) => console.warn('voice decoder:', e.message),
@@ -93,26 +107,23 @@ export class VoicePlayer {
       m.decoder.configure({ codec: 'opus', sampleRate: 48000, numberOfChannels: 1 });
       this.members.set(frame.member, m);
     }
-    const at = frame.time_ms / 1000 + m.offset + kJitterMs / 1000;
-    if (at < this.context.currentTime) {
-      ++this.late;
-      return;
-    }
-    m.pending.push(at);
+    m.pending.push(frame.time_ms);  // placed when decoded, on the clock as it is then
     m.decoder.decode(new EncodedAudioChunk({ type: 'key', timestamp: frame.time_ms * 1000, data: frame.opus }));
   }
 
   play(m, data) {
-    const at = m.pending.shift();
+    const timeMs = m.pending.shift();
+    const atMs = timeMs === undefined ? null : playoutMs(timeMs, m.offsetMs, m, this.context.currentTime * 1000);
     const samples = new Float32Array(data.numberOfFrames);
     data.copyTo(samples, { planeIndex: 0, format: 'f32-planar' });
     const buffer = this.context.createBuffer(1, samples.length, data.sampleRate);
     buffer.copyToChannel(samples, 0);
     data.close();
-    if (at === undefined || at < this.context.currentTime) {
+    if (atMs === null) {
       ++this.late;
       return;
     }
+    const at = atMs / 1000;
     const source = this.context.createBufferSource();
     source.buffer = buffer;
     source.connect(this.context.destination);
@@ -125,7 +136,7 @@ export class VoicePlayer {
   localTime(member, timeMs) {
     const m = this.members.get(member);
     if (!m) return null;
-    const contextSeconds = timeMs / 1000 + m.offset + kJitterMs / 1000;
+    const contextSeconds = (timeMs + m.offsetMs + m.delayMs) / 1000;
     return performance.now() + (contextSeconds - this.context.currentTime) * 1000;
   }
 
