@@ -172,7 +172,8 @@ try:
           return out;""")
         got = recognised(heard, 16000, "ada-heard")
         beas, adas = sorted(OWN_WORDS["bea"] & set(got)), sorted(OWN_WORDS["ada"] & set(got))
-        print("Ada heard:", " ".join(got))
+        played, late, delays = ada.execute_script(f"const p = {element}.player; return [p.played, p.late, [...p.members.values()].map((m) => Math.round(m.delayMs))]")
+        print(f"Ada heard ({played} packets played, {late} too late to play, delays {delays} ms):", " ".join(got))
         if len(beas) >= 3 or listen == 1:
             break
         time.sleep(12)
