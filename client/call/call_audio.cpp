@@ -68,10 +68,4 @@ std::optional<CallAudio::Clock::time_point> CallAudio::local_time(uint16_t membe
   return start_ + std::chrono::microseconds(std::llround(ms * 1000.0));
 }
 
-std::optional<double> CallAudio::delay_ms(uint16_t member) const {
-  const auto it = members_.find(member);
-  if (it == members_.end()) return std::nullopt;
-  return it->second->delay_ms;
-}
-
 }  // namespace inkwire

@@ -31,8 +31,6 @@ class CallAudio {
 
   uint64_t late() const { return late_; }        // packets dropped for coming after their time
   uint64_t played() const { return played_; }    // packets mixed in
-  // The delay `member`'s voice plays behind its clock, ms (kStartDelayMs until a packet is late).
-  std::optional<double> delay_ms(uint16_t member) const;
 
  private:
   struct Member {
