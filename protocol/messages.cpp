@@ -333,7 +333,7 @@ template <size_t... I>
 Message decode_alternative(size_t index, ReadStream& s, std::index_sequence<I...>) {
   Message m;
   // Picks the alternative whose index matches and reads it in place.
-  ((I == index ? (m.emplace<I>(), serialise(s, std::get<I>(m)), true) : false) || ...);
+  (void)((I == index ? (m.emplace<I>(), serialise(s, std::get<I>(m)), true) : false) || ...);
   return m;
 }
 
