@@ -1,7 +1,7 @@
-// What the browser's turntable and faces compute in JS as the C++ client does (issue: one
-// implementation of each algorithm; the warps stay in JS for the element's first-view budget,
+// What the browser's turntable, faces and call voice compute in JS as the C++ client does (issue:
+// one implementation of each algorithm; the warps stay in JS for the element's first-view budget,
 // docs/benchmarks.md): the C++ answers for fixed inputs, written to tests/golden/warp-vectors.json
-// and checked by client/web/test/warp.test.js. A change to either side fails one of the two until
+// and checked by client/web/test/ (warp, turntable_pose and voice tests). A change to either side fails one of the two until
 // both agree and the file is approved again (INKWIRE_APPROVE_GOLDEN=1).
 #include <algorithm>
 #include <cmath>
