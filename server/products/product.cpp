@@ -117,7 +117,47 @@ std::string degrees_list(const std::vector<float>& degrees) {
   return out;
 }
 
+// Each cell's tracks (its outline's first) as the tween data carries them, every cell cut to its
+// first `cap` points but never below its outline.
+std::vector<TweenCell> cells_capped(const std::vector<std::vector<Track>>& tracks, const std::vector<size_t>& outline,
+                                    const std::vector<std::vector<uint16_t>>& cells, size_t cap) {
+  std::vector<TweenCell> out;
+  for (size_t i = 0; i < tracks.size(); ++i) {
+    const size_t keep = std::min(tracks[i].size(), std::max(cap, outline[i]));
+    out.push_back(cell_from_tracks({tracks[i].begin(), tracks[i].begin() + std::ptrdiff_t(keep)}, cells[i]));
+  }
+  return out;
+}
+
+// The largest cap on every cell's points that keeps `data`'s encoded form within `max_bytes`
+// (what the cells' own sizes give when nothing need go), and the cells at it. Points were chosen
+// greedily, so a cell's last are those that mended the least: cutting them costs least.
+size_t fit_tween_budget(TweenData& data, const std::vector<std::vector<Track>>& tracks, const std::vector<size_t>& outline,
+                        const std::vector<std::vector<uint16_t>>& cells, size_t max_bytes) {
+  size_t most = 0;
+  for (const auto& t : tracks) most = std::max(most, t.size());
+  auto fits = [&](size_t cap) {
+    data.cells = cells_capped(tracks, outline, cells, cap);
+    return encode_tween(data).size() <= max_bytes;
+  };
+  if (fits(most)) return most;
+  size_t low = 0, high = most;  // fits(high) is false; fits(low) is assumed (outline alone) and checked below
+  while (high - low > 1) {
+    const size_t mid = (low + high) / 2;
+    (fits(mid) ? low : high) = mid;
+  }
+  fits(low);
+  return low;
+}
+
 }  // namespace
+
+std::vector<uint8_t> stored_photo(const Image& image, bool matted) {
+  constexpr int kJpegQuality = 90;
+  return encode_image(matted ? laid_on_white(image) : image, "jpg", kJpegQuality);
+}
+
+std::vector<uint8_t> stored_matte(const Image& image) { return encode_image(image, "png", 0, 3, 1); }
 
 void find_turn_from_matches(PhotoFolder& photos, const PairProgress& progress) {
   if (!photos.even_turn_assumed) return;
@@ -195,6 +235,8 @@ Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions&
   MatchCache matches(photos.photos, match_options);
   std::vector<PairExposure> exposures;
   std::set<std::pair<int, int>> exposed;
+  std::vector<std::vector<Track>> tracks;  // per cell, in the order chosen (outline first)
+  std::vector<size_t> outline_points;      // per cell
   const int total = int(photos.cells.size());
   for (int i = 0; i < total; ++i) {
     const std::vector<uint16_t>& cell = photos.cells[size_t(i)];
@@ -211,6 +253,8 @@ Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions&
     const size_t on_outline = outline.size();
     const std::vector<Track> points = distil_tracks(flow_pointers, a, std::move(outline), distil);
     product.data.cells.push_back(cell_from_tracks(points, cell));
+    tracks.push_back(points);
+    outline_points.push_back(on_outline);
     if (progress) {
       std::string names = photos.names[cell[0]];
       for (size_t k = 1; k < cell.size(); ++k) names += (k == 1 ? " -> " : ", ") + photos.names[cell[k]];
@@ -225,6 +269,28 @@ Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions&
     for (int c = 0; c < 3; ++c) largest_change = std::max(largest_change, std::abs(gains[i][c] - 1.0f));
   }
   if (progress) progress(0, total, "exposure evened: the largest change " + std::to_string(int(std::lround(largest_change * 100))) + "%");
+  // The tween data's share of the first view (the photos' bytes as they will be stored, after
+  // the exposure is evened): tween <= share x (photos + mattes + tween).
+  size_t photo_bytes = 0;
+  for (const Image& photo : photos.photos)
+    photo_bytes += stored_photo(photo, product.matted).size() + (product.matted ? stored_matte(photo).size() : 0);
+  const double share = std::clamp(double(o.max_tween_share), 0.0, 0.99);
+  const size_t budget = size_t(share / (1.0 - share) * double(photo_bytes));
+  const size_t before = encode_tween(product.data).size();
+  const size_t cap = fit_tween_budget(product.data, tracks, outline_points, photos.cells, budget);
+  const size_t after = encode_tween(product.data).size();
+  if (progress) {
+    const auto percent = [&](size_t bytes) {
+      char text[16];
+      std::snprintf(text, sizeof text, "%.1f%%", 100.0 * double(bytes) / double(bytes + photo_bytes));
+      return std::string(text);
+    };
+    std::string line = "tween data: " + std::to_string(after) + " bytes, " + percent(after) + " of the first view";
+    if (after < before)
+      line += " (every cell cut to " + std::to_string(cap) + " points, its outline kept, from " + std::to_string(before) + " bytes, " + percent(before) + ")";
+    if (after > budget) line += ", over the " + percent(budget) + " kept to: the outlines alone are more";
+    progress(0, total, line);
+  }
   product.images = std::move(photos.photos);
   // Photos say nothing of the camera's distance; a view at the samples' own distance shows them
   // at their own scale, which is all zooming needs.

@@ -34,7 +34,17 @@ struct PhotoProductOptions {
   PhotoLayout layout;      // rows, turn, elevations, size
   std::string matte = "auto";  // auto: key a plain backdrop when there is one; key: refuse if not; none
   int control_points = 130;  // per pair at most, outline included (12 bytes each; 160 bought 0.1 dB for 20% more)
+  // The tween data at most this share of what a first view fetches (photos, mattes, tween data).
+  // Over it, every cell gives up its last-chosen points (those that mended the least) down to one
+  // cap, its outline kept: a 6 x 20 rows product needs two triangles a photo where a ring needs one
+  // pair, and small photos make points dear.
+  float max_tween_share = 0.05f;
 };
+
+// A sample as a product stores it: the photo (JPEG; a keyed one on white with its floor layer,
+// as a shop shows it and as compresses best) and its matte (PNG of the alpha).
+std::vector<uint8_t> stored_photo(const Image& image, bool matted);
+std::vector<uint8_t> stored_matte(const Image& image);
 
 // Photos whose turn no step, arc or calibration gave (`even_turn_assumed`) get their steps from
 // corners tracked between row neighbours (SPEC T19, turn_angles.hpp); says the steps found

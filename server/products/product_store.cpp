@@ -12,7 +12,6 @@
 #include "common/error.hpp"
 #include "common/image_metrics.hpp"
 #include "common/log.hpp"
-#include "server/products/matte.hpp"
 
 namespace inkwire::server {
 namespace fs = std::filesystem;
@@ -20,8 +19,6 @@ using protocol::AssetKind;
 using protocol::Bytes;
 
 namespace {
-
-constexpr int kJpegQuality = 90;
 
 std::string hash_of_file(const fs::path& file) { return to_hex(content_hash_of_file(file)); }
 
@@ -41,7 +38,7 @@ std::string ProductSource::key() const {
     const PhotoLayout& layout = photo_options.layout;
     text = "photos step=" + std::to_string(layout.step_degrees) + " arc=" + std::to_string(layout.arc_degrees) +
            " max_side=" + std::to_string(layout.max_side) + " matte=" + photo_options.matte +
-           " points=" + std::to_string(photo_options.control_points);
+           " points=" + std::to_string(photo_options.control_points) + " share=" + std::to_string(photo_options.max_tween_share);
     if (layout.rows != 0) text += " rows=" + std::to_string(layout.rows);
     for (float e : layout.elevations) text += " elevation=" + std::to_string(e);
     std::error_code ec;
@@ -60,7 +57,7 @@ std::string ProductSource::key() const {
     std::sort(files.begin(), files.end());
     for (const fs::path& f : files) text += " " + f.generic_string() + "=" + hash_of_file(photos / f);
   }
-  text += " format=5";  // bump when the way products are made changes (5: zoom levels)
+  text += " format=6";  // bump when the way products are made changes (5: zoom levels; 6: the tween data's share kept)
   const ContentHash h = content_hash(text.data(), text.size());
   return to_hex(h);
 }
@@ -79,14 +76,11 @@ protocol::Snapshot store_product(AssetStore& store, const Product& product, cons
   for (size_t i = 0; i < product.images.size(); ++i) {
     const Image& image = product.images[i];
     std::snprintf(name, sizeof name, "sample-%03zu.jpg", i);
-    // As a shop shows a photo: on white with its floor layer (shadow), which is also what
-    // compresses best; clients bleed the object's colour past the outline themselves
-    // (matte_sample()).
-    state.assets.push_back(store.add_bytes(encode_image(product.matted ? laid_on_white(image) : image, "jpg", kJpegQuality),
-                                           AssetKind::Samples, name));
+    // On white: clients bleed the object's colour past the outline themselves (matte_sample()).
+    state.assets.push_back(store.add_bytes(stored_photo(image, product.matted), AssetKind::Samples, name));
     if (product.matted) {
       std::snprintf(name, sizeof name, "matte-%03zu.png", i);
-      mattes.push_back(store.add_bytes(encode_image(image, "png", 0, 3, 1), AssetKind::Matte, name));
+      mattes.push_back(store.add_bytes(stored_matte(image), AssetKind::Matte, name));
     }
   }
   state.assets.insert(state.assets.end(), mattes.begin(), mattes.end());
@@ -99,8 +93,7 @@ protocol::Snapshot store_product(AssetStore& store, const Product& product, cons
       const glm::ivec2 size = product.levels[l];
       const Image level = l + 1 == levels.size() ? finest : resized(finest, size.x, size.y);
       std::snprintf(name, sizeof name, "sample-%03zu-%d.jpg", i, size.x);
-      levels[l].push_back(store.add_bytes(encode_image(product.matted ? laid_on_white(level) : level, "jpg", kJpegQuality),
-                                          AssetKind::Zoom, name));
+      levels[l].push_back(store.add_bytes(stored_photo(level, product.matted), AssetKind::Zoom, name));
     }
   }
   for (const auto& level : levels) state.assets.insert(state.assets.end(), level.begin(), level.end());

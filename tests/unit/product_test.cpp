@@ -2,6 +2,7 @@
 // file named; photos are turned upright by EXIF; a plain backdrop is keyed into a matte that
 // matches the object; a stored product is found by its key, checked file by file against its
 // hashes, and a corrupted file is refused rather than served.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -386,4 +387,76 @@ TEST(ProductTest, OutlinePointsFollowTheObjectsEndsRowByRow) {
     EXPECT_NEAR(p.target.x, expected, 1.5f) << p.source.x << "," << p.source.y;
   }
   EXPECT_THROW(outline_landmarks(a, Image(10, 10), 8), Error);
+}
+
+// A striped drum turning on a plain backdrop: its outline stands still, its stripes slide faster
+// at its middle than at its sides, so a pair needs control points inside as well as round it.
+fs::path turning_drum(const std::string& name, int count, int w, int h) {
+  const fs::path dir = fresh_dir(name);
+  for (int i = 0; i < count; ++i) {
+    Image image(w, h);
+    const float radius = 0.3f * float(w), turn = 0.12f * float(i);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        uint8_t* p = image.at(x, y);
+        const float across = (float(x) - 0.5f * float(w)) / radius;
+        if (std::abs(across) < 1.0f && std::abs(y - h / 2) < h / 3) {
+          const float u = std::asin(across) + turn;  // where on the drum's surface
+          const bool stripe = int(std::floor(u * 6.0f + float(y / 10) * 0.5f)) % 2 != 0;
+          p[0] = uint8_t(stripe ? 190 : 30), p[1] = uint8_t(70 + y % 40), p[2] = uint8_t(stripe ? 20 : 150);
+        } else {
+          p[0] = p[1] = p[2] = 236;
+        }
+        p[3] = 255;
+      }
+    char file[32];
+    std::snprintf(file, sizeof file, "IMG_%04d.png", i);
+    write_photo(image, dir / file);
+  }
+  return dir;
+}
+
+TEST(ProductTest, TheTweenDataKeepsToItsShareOfTheFirstViewByCuttingEachCellsLastPoints) {
+  const fs::path folder = turning_drum("budget", 8, 192, 128);
+  PhotoProductOptions options;
+  options.layout.step_degrees = 45.0f;
+  options.max_tween_share = 1.0f;  // no budget: what the matches alone choose
+  const Product whole = product_from_photos(folder, options);
+  ASSERT_TRUE(whole.matted);
+  size_t photo_bytes = 0;
+  for (const Image& image : whole.images) photo_bytes += stored_photo(image, true).size() + stored_matte(image).size();
+  const size_t whole_bytes = encode_tween(whole.data).size();
+  size_t whole_points = 0;
+  for (const TweenCell& c : whole.data.cells) whole_points += c.points.size();
+  std::printf("no budget: %zu points, %zu bytes of tween data beside %zu of photos and mattes\n", whole_points, whole_bytes, photo_bytes);
+
+  // Every cell of a budgeted product is the unbudgeted cell's first points: the last chosen go.
+  auto cut_from_whole = [&](const Product& cut) {
+    ASSERT_EQ(cut.data.cells.size(), whole.data.cells.size());
+    for (size_t i = 0; i < cut.data.cells.size(); ++i) {
+      const auto& kept = cut.data.cells[i].points;
+      const auto& all = whole.data.cells[i].points;
+      ASSERT_LE(kept.size(), all.size());
+      EXPECT_GT(kept.size(), 0u) << "cell " << i << " lost its outline";
+      EXPECT_TRUE(std::equal(kept.begin(), kept.end(), all.begin())) << "cell " << i << " is not a cut of its unbudgeted points";
+    }
+  };
+  // Half the tween data's bytes as the share: kept to, and some points cut.
+  const double half = double(whole_bytes) / 2.0;
+  options.max_tween_share = float(half / (half + double(photo_bytes)));
+  const Product budgeted = product_from_photos(folder, options);
+  const size_t budgeted_bytes = encode_tween(budgeted.data).size();
+  size_t budgeted_points = 0;
+  for (const TweenCell& c : budgeted.data.cells) budgeted_points += c.points.size();
+  std::printf("share %.4f: %zu points, %zu bytes\n", options.max_tween_share, budgeted_points, budgeted_bytes);
+  EXPECT_LE(double(budgeted_bytes), half + 1.0);
+  EXPECT_LT(budgeted_points, whole_points);
+  cut_from_whole(budgeted);
+  // A share the outlines alone exceed: outlines kept, nothing else.
+  options.max_tween_share = 1e-5f;
+  const Product outlines = product_from_photos(folder, options);
+  cut_from_whole(outlines);
+  size_t outline_points = 0;
+  for (const TweenCell& c : outlines.data.cells) outline_points += c.points.size();
+  EXPECT_LT(outline_points, budgeted_points);
 }
