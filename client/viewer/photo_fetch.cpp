@@ -25,8 +25,26 @@ std::optional<PhotoFetch> next_photo_fetch(const std::vector<glm::vec3>& directi
     for (int s : drawn_from)
       if (const auto it = finer_level.find(s); it == finer_level.end() || it->second < wanted) return PhotoFetch{s, wanted};
   const int other = nearest_sample(directions, direction, [&](int s) { return !has_first[size_t(s)]; });
-  if (other < 0) return std::nullopt;
-  return PhotoFetch{other, 0};
+  if (other >= 0) return PhotoFetch{other, 0};
+  if (wanted == 0) return std::nullopt;
+  // Zoomed in, the photos a turn comes to next: the finer level of the nearest lacking it, while
+  // fewer than kFinerKept hold one, or in place of the holder it would push out (finer_to_drop())
+  // when that one is farther from the view and not drawn from. Each such swap brings the holders
+  // nearer the view, so a still view stops fetching.
+  const auto lacks = [&](int s) {
+    const auto it = finer_level.find(s);
+    return it == finer_level.end() || it->second < wanted;
+  };
+  const int ahead = nearest_sample(directions, direction, lacks);
+  if (ahead < 0) return std::nullopt;
+  std::map<int, int> after = finer_level;
+  after[ahead] = wanted;
+  const int pushed_out = finer_to_drop(directions, ahead, after);
+  if (pushed_out < 0) return PhotoFetch{ahead, wanted};
+  const bool drawn = std::find(drawn_from.begin(), drawn_from.end(), pushed_out) != drawn_from.end();
+  if (!drawn && nearness(directions[size_t(ahead)], direction) > nearness(directions[size_t(pushed_out)], direction))
+    return PhotoFetch{ahead, wanted};
+  return std::nullopt;
 }
 
 int finer_to_drop(const std::vector<glm::vec3>& directions, int added, const std::map<int, int>& finer_level) {

@@ -1,7 +1,9 @@
 #pragma once
 // Which product photo a client fetches next (SPEC T12, T18): the first level of the photos the
 // view is drawn from, then their finer level when the view shows them larger than the first,
-// then the other photos' first level, nearest the view first. The browser's element does the
+// then the other photos' first level, nearest the view first, then (zoomed in) the finer level of
+// the photos nearest the view, up to kFinerKept, so a zoomed-in turn finds the next photo sharp
+// instead of sharpening as it arrives. The browser's element does the
 // same (client/web/common/photo_fetch.js), pinned by tests/golden/warp-vectors.json.
 #include <map>
 #include <optional>

@@ -178,8 +178,9 @@ TweenData two_rows_and_a_twin() {
 }
 
 // A visitor on the two rows looks, turns and zooms (photos 300 pixels high, finer levels of 600
-// and 1200): the level each view wants and every photo fetched, in order, each taken as there,
-// and the finer levels given way when more than kFinerKept photos hold one.
+// and 1200), and at last, every first level there, zooms in and turns a little: the level each
+// view wants and every photo fetched, in order, each taken as there, the finer levels given way
+// when more than kFinerKept photos hold one, and which are held after each view.
 nlohmann::json photo_fetch_cases() {
   const TweenData data = two_rows_and_a_twin();
   const int first_height = 300;
@@ -188,7 +189,8 @@ nlohmann::json photo_fetch_cases() {
   std::map<int, int> finer_level;
   nlohmann::json steps = nlohmann::json::array();
   for (const auto& [azimuth, elevation, shown, fetches] : {std::tuple{7.0f, 0.0f, 300.0, 4}, {15.0f, 15.0f, 300.0, 3}, {15.0f, 15.0f, 500.0, 4},
-                                                           {15.0f, 15.0f, 1600.0, 4}, {200.0f, 30.0f, 1000.0, 7}, {45.0f, 0.0f, 375.0, 40}}) {
+                                                           {15.0f, 15.0f, 1600.0, 4}, {200.0f, 30.0f, 1000.0, 7}, {45.0f, 0.0f, 375.0, 40},
+                                                           {45.0f, 0.0f, 1000.0, 12}, {75.0f, 0.0f, 1000.0, 12}}) {
     const glm::vec3 d = view_direction(azimuth, elevation);
     const int wanted = wanted_level(first_height, level_heights, shown);
     nlohmann::json fetched = nlohmann::json::array(), dropped = nlohmann::json::array();
@@ -203,7 +205,10 @@ nlohmann::json photo_fetch_cases() {
         dropped.push_back(drop);
       }
     }
-    steps.push_back({{"direction", {d.x, d.y, d.z}}, {"shown", shown}, {"fetches", fetches}, {"wanted", wanted}, {"fetched", fetched}, {"dropped", dropped}});
+    nlohmann::json holding = nlohmann::json::array();
+    for (const auto& [sample, level] : finer_level) holding.push_back({sample, level});
+    steps.push_back({{"direction", {d.x, d.y, d.z}}, {"shown", shown}, {"fetches", fetches}, {"wanted", wanted}, {"fetched", fetched},
+                     {"dropped", dropped}, {"holding", holding}});
   }
   nlohmann::json directions = nlohmann::json::array(), cells = nlohmann::json::array();
   for (const glm::vec3& d : data.directions) directions.push_back({d.x, d.y, d.z});
@@ -370,7 +375,38 @@ TEST(WarpVectorsTest, PhotosComeForTheViewFirstThenItsLevelThenNearestFirst) {
         EXPECT_TRUE(first.insert(f[0].get<int>()).second) << "photo " << f[0] << " fetched twice";
       }
   EXPECT_EQ(first.size(), data.directions.size());
-  EXPECT_LT(c["steps"].back()["fetched"].size(), c["steps"].back()["fetches"].get<size_t>()) << "the last view ran out of photos to fetch";
+  EXPECT_TRUE(c["steps"][5]["fetched"].size() < c["steps"][5]["fetches"].get<size_t>()) << "the view not zoomed in ran out of photos to fetch";
+  // Every first level there and zoomed in, still and then turned a little: the view's photos at
+  // its level first, then photos nearest the view ahead of the turn, till kFinerKept hold the level
+  // (none drawn from given way) and one more would push out one as near: a still view stops fetching.
+  for (int step : {6, 7}) {
+    const nlohmann::json& s = c["steps"][step];
+    const glm::vec3 d(s["direction"][0].get<float>(), s["direction"][1].get<float>(), s["direction"][2].get<float>());
+    const std::vector<int> drawn_from = view_samples(data, d);
+    EXPECT_LT(s["fetched"].size(), s["fetches"].get<size_t>()) << "step " << step << " ran out of photos to fetch";
+    bool ahead = false;  // once a photo not drawn from is fetched, no drawn-from one follows
+    for (const auto& f : s["fetched"]) {
+      const bool drawn = std::find(drawn_from.begin(), drawn_from.end(), f[0].get<int>()) != drawn_from.end();
+      EXPECT_FALSE(ahead && drawn) << "step " << step << " fetched photo " << f[0] << " of the view after one ahead of it";
+      ahead = ahead || !drawn;
+    }
+    ASSERT_EQ(s["holding"].size(), size_t(kFinerKept)) << "step " << step;
+    std::map<int, int> held;
+    for (const auto& h : s["holding"]) {
+      EXPECT_EQ(h[1], s["wanted"]) << "step " << step << " holds photo " << h[0] << " at another level";
+      held[h[0].get<int>()] = h[1].get<int>();
+    }
+    // Why it stopped: the nearest photo lacking the level would push out one as near the view.
+    const int next = nearest_sample(data.directions, d, [&](int i) { return !held.contains(i); });
+    std::map<int, int> with_next = held;
+    with_next[next] = s["wanted"].get<int>();
+    const int pushed_out = finer_to_drop(data.directions, next, with_next);
+    EXPECT_GE(nearness(data.directions[size_t(pushed_out)], d), nearness(data.directions[size_t(next)], d)) << "step " << step;
+    for (int f : drawn_from)
+      EXPECT_TRUE(std::any_of(s["holding"].begin(), s["holding"].end(), [&](const auto& h) { return h[0] == f; })) << "step " << step << ": " << f;
+  }
+  EXPECT_GT(c["steps"][7]["fetched"].size(), 0u) << "turned, the photos the turn came to are fetched";
+  EXPECT_LE(c["steps"][7]["fetched"].size(), c["steps"][7]["dropped"].size() + 1) << "a small turn swaps a few, it does not fetch all again";
 }
 
 // What the playout vectors stand for: a packet plays no earlier than the clock has played; the

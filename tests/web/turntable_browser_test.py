@@ -136,7 +136,8 @@ try:
     driver.execute_script(f"{rows}.remove()")
 
     # Zoom (SPEC T18): not zoomed in, no finer photo is fetched; zoomed in four times, the finer
-    # level of the photos the view is drawn from is, and the view matches the C++ client's.
+    # level of the photos the view is drawn from is, then of those nearest it up to six, and the
+    # view matches the C++ client's.
     zoomed = loaded_element("zoom", "zoom")
     check(driver.execute_script(f"return {zoomed}.hasAttribute('loaded')"), "the element loads a product with a zoom level")
     fetched_zoom = f"""const e = {zoomed}, hex = (h) => Array.from(h, (b) => b.toString(16).padStart(2, '0')).join('');
@@ -148,8 +149,15 @@ try:
     while time.time() < end and driver.execute_script(f"return {zoomed}.view.finerInView") < 2:
         time.sleep(0.1)
         driver.execute_script(f"{zoomed}.redraw()")
+    in_view = driver.execute_script(f"return {zoomed}.view.finerInView")
+    check(in_view >= 2, f"zoomed in four times, the finer photos the view is drawn from are fetched ({in_view} drawn from)")
+    # Then the photos a turn comes to next, till six (kFinerKept) hold the finer level, and no more.
+    end = time.time() + 30
+    while time.time() < end and driver.execute_script(fetched_zoom) < 6:
+        time.sleep(0.1)
+    time.sleep(1.0)
     fetched = driver.execute_script(fetched_zoom)
-    check(1 <= fetched <= 3, f"zoomed in four times, the finer photos the view is drawn from are fetched ({fetched} of 12)")
+    check(fetched == 6, f"zoomed in and still, the six photos nearest the view take the finer level and no more ({fetched} of 12)")
     db = against_client(zoomed, "zoom", "zoom", "0,0,4")
     check(db >= 35.0, f"zoomed in four times the browser's view matches the C++ client's at {db:.2f} dB (>= 35)")
     driver.execute_script(f"{zoomed}.remove()")

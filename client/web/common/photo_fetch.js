@@ -1,7 +1,9 @@
 // Which product photo the element fetches next (SPEC T12, T18), as the C++ client does
 // (client/viewer/photo_fetch.cpp), pinned by tests/golden/warp-vectors.json: the first level of
 // the photos the view is drawn from, then their finer level when the view shows them larger than
-// the first, then the other photos' first level, nearest the view first.
+// the first, then the other photos' first level, nearest the view first, then (zoomed in) the
+// finer level of the photos nearest the view, up to kFinerKept, so a zoomed-in turn finds the
+// next photo sharp.
 import { nearestSample, nearness } from './view_sphere.js';
 
 export const kLevelSlack = 1.25;  // a level is enough while shown at most this many times its size
@@ -26,7 +28,20 @@ export function nextPhotoFetch(directions, direction, drawnFrom, hasFirst, finer
   const finer = wanted > 0 ? sorted.find((s) => finerLevel(s) < wanted) : undefined;
   if (finer !== undefined) return { sample: finer, level: wanted };
   const other = nearestSample(directions, direction, (i) => !hasFirst(i));
-  return other < 0 ? null : { sample: other, level: 0 };
+  if (other >= 0) return { sample: other, level: 0 };
+  if (wanted === 0) return null;
+  // Zoomed in, the photos a turn comes to next: the finer level of the nearest lacking it, while
+  // fewer than kFinerKept hold one, or in place of the holder it would push out (finerToDrop())
+  // when that one is farther from the view and not drawn from. Each such swap brings the holders
+  // nearer the view, so a still view stops fetching.
+  const ahead = nearestSample(directions, direction, (i) => finerLevel(i) < wanted);
+  if (ahead < 0) return null;
+  const holders = directions.map((_, i) => i).filter((i) => i === ahead || finerLevel(i) > 0);
+  const pushedOut = finerToDrop(directions, ahead, holders);
+  if (pushedOut < 0) return { sample: ahead, level: wanted };
+  if (!drawnFrom.includes(pushedOut) && nearness(directions[ahead], direction) > nearness(directions[pushedOut], direction))
+    return { sample: ahead, level: wanted };
+  return null;
 }
 
 // When sample `added` has just taken a finer level and more than kFinerKept hold one (`holders`,
