@@ -6,6 +6,8 @@ nearest photo per angle, as a shop's spin viewer shows it): bytes and millisecon
 view and to the whole product, frames per second while dragging at 512x512 and 1024x1024, and
 mean PSNR over 36 true views (10 degrees apart, between both viewers' photos, rendered by
 inkwire-render). The 1024x1024 row is a second visit: its photos come from the browser's cache.
+The `zoomed-turn` rows: the truck photographed at 1024 pixels, zoomed in and turned: how many
+frames show a photo before its finer level is there, fetching ahead of the turn and not.
   web_bench.py BIN_DIR OUT_DIR JSON_OUT"""
 import base64
 import functools
@@ -30,6 +32,15 @@ data = os.path.join(OUT, "data")
 shutil.rmtree(data, ignore_errors=True)
 subprocess.run([f"{BIN}/inkwire-server", "add-product", "truck", "--mesh", TRUCK, "--samples", "24", "--size", "512", "--data", data],
                check=True, stdout=subprocess.DEVNULL)
+# The truck photographed at 1024 pixels (24 photos), put on the server as a shop does: shown first
+# at 512, with a zoom level at 1024 (SPEC T18).
+zoom_photos = os.path.join(OUT, "zoom-photos")
+shutil.rmtree(zoom_photos, ignore_errors=True)
+os.makedirs(zoom_photos)
+subprocess.run([f"{BIN}/inkwire-render", "--mesh", TRUCK, "--view", "0,0,1.4", "--frames", "24", "--size", "1024x1024", "--backdrop", "#ffffff",
+                "--out", os.path.join(zoom_photos, "IMG_%04d.png")], check=True, stderr=subprocess.DEVNULL)
+subprocess.run([f"{BIN}/inkwire-server", "add-product", "truck-zoom", "--photos", zoom_photos, "--step", "-15", "--data", data],
+               check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
 
 # The spin page: 72 photos of the truck over white, JPEG quality 90 as the product's photos.
 spin = os.path.join(OUT, "spin")
@@ -119,6 +130,44 @@ try:
                                                                      "bytes_total": total, **({"psnr_mean": psnr_mean} if size == 512 else {})}})
         print(f"web: element {size}: {fps:.1f} fps while dragging, first view {first_bytes} bytes in {first_ms:.0f} ms, {total} bytes in all",
               file=sys.stderr)
+
+    # Zoomed in and turning (SPEC T18): a 256-pixel element zoomed in four times shows the photos
+    # at 1024 pixels, their finer level. Turned 75 degrees at 30 degrees a second once its fetching
+    # has settled: how many frames are drawn from a first-level photo (a photo sharpening as its
+    # finer level arrives), with the element as shipped (the finer level of the photos nearest the
+    # view fetched ahead of a turn) and, in the same run, with fetching held to the photos the view
+    # is drawn from, as it was before.
+    for fetch in ("drawn-from", "ahead"):
+        # Each from the network: the photos the other fetched are not in the page's cache.
+        driver.execute_async_script("const done = arguments[0]; caches.keys().then((k) => Promise.all(k.map((n) => caches.delete(n)))).then(done);")
+        driver.execute_script("""document.body.innerHTML =
+          '<inkwire-turntable session="truck-zoom" auto-rotate="off" style="width:256px;height:256px"></inkwire-turntable>';""")
+        start = time.time()
+        while time.time() - start < 60 and not driver.execute_script(f"return {element}.hasAttribute('loaded')"):
+            time.sleep(0.05)
+        if fetch == "drawn-from":
+            driver.execute_script(f"""const e = {element}, ahead = e.nextFetch;
+              e.nextFetch = function () {{ const n = ahead.call(this);
+                return n && n.level > 0 && !this.view.viewSamples(this.direction()).includes(n.sample) ? null : n; }};""")
+        received = driver.execute_script(f"return {element}.session.bytesReceived")
+        driver.execute_script(f"{element}.setZoom(4)")
+        start = time.time()
+        while time.time() - start < 30 and driver.execute_script(f"return {element}.view.finerInView") < 2:
+            time.sleep(0.1)
+        time.sleep(3.0)  # the photos ahead, where fetched
+        finer_bytes = driver.execute_script(f"return {element}.session.bytesReceived") - received
+        held = driver.execute_script(f"return {element}.view.finer.size")
+        frames = driver.execute_async_script(f"""const done = arguments[0], e = {element}, out = [], t0 = performance.now();
+          const step = () => {{ const t = (performance.now() - t0) / 1000; e.azimuth = -Math.min(75, 30 * t); e.draw();
+            out.push(e.view.finerInView < e.view.viewSamples(e.direction()).length);
+            if (t < 2.5) requestAnimationFrame(step); else done(out); }};
+          requestAnimationFrame(step);""")
+        coarse = sum(1 for c in frames if c)
+        rows.append({"variant": f"zoomed-turn,fetch={fetch}", "counters": {"frames": len(frames), "frames_coarse": coarse,
+                                                                          "coarse_fraction": coarse / len(frames),
+                                                                          "finer_held_before_turn": held, "bytes_finer_before_turn": finer_bytes}})
+        print(f"web: zoomed in 4 times, fetching {fetch}: {coarse} of {len(frames)} frames of a 75-degree turn drawn from a "
+              f"first-level photo; {held} finer photos held before it, {finer_bytes} bytes", file=sys.stderr)
 
     # What drawing the turntable with the C++ warp compiled to WebAssembly (the scene module, which
     # holds it) would add before a first view: the module's bytes and the time to fetch, compile
