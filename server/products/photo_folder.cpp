@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <numeric>
 
 #include <OpenImageIO/imageio.h>
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
 #include <opencv2/core.hpp>
 
@@ -208,8 +210,22 @@ PhotoFolder read_photo_folder(const fs::path& folder, const PhotoLayout& layout)
     std::set<std::string> named(ring.names.begin(), ring.names.end());
     for (const fs::path& f : listing.photos)
       if (!named.count(f.filename().string())) throw Error(f.string() + " is not in the folder's calibration");
-    rows.push_back(ring.names);
-    out.directions = ring_frame(ring.directions);
+    // Neighbours by azimuth, not by the file's order: a lab lists its photos as it took them, in
+    // sweeps that jump and turn back (templeRing: 0 to 30 degrees, then 76 to 122, ...), and a
+    // pair between photos 100 degrees apart would be tweened across the whole gap.
+    const std::vector<glm::vec3> directions = ring_frame(ring.directions);
+    std::vector<size_t> order(directions.size());
+    std::iota(order.begin(), order.end(), size_t(0));
+    const auto azimuth = [&](size_t i) {
+      const float a = std::atan2(directions[i].x, directions[i].z);
+      return a < -1e-5f ? a + glm::two_pi<float>() : std::max(a, 0.0f);  // the first photo's 0 first
+    };
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return azimuth(a) < azimuth(b); });
+    rows.emplace_back();
+    for (size_t i : order) {
+      rows.back().push_back(ring.names[i]);
+      out.directions.push_back(directions[i]);
+    }
   } else {
     const int count = std::max(layout.rows, 1), n = int(listing.photos.size());
     if (n % count != 0)

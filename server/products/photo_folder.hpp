@@ -3,7 +3,8 @@
 // (JPEG, PNG, TIFF, BMP, WebP), turned upright by their EXIF orientation, scaled to one size;
 // directions equally spaced over a full turn, over `arc`, by `step` (negative when the turntable
 // turned the other way: the camera's azimuth falls from photo to photo), or from a Middlebury-style
-// `*_par.txt` calibration in the folder. Anything else in the folder is refused by name, except
+// `*_par.txt` calibration in the folder (its photos then in order of azimuth, whatever order it
+// lists them in). Anything else in the folder is refused by name, except
 // hidden files and the calibration's companions (*.txt).
 //
 // Several rows (SPEC T17): spin-viewer photographers shoot a ring at each of a few camera

@@ -57,7 +57,7 @@ std::string ProductSource::key() const {
     std::sort(files.begin(), files.end());
     for (const fs::path& f : files) text += " " + f.generic_string() + "=" + hash_of_file(photos / f);
   }
-  text += " format=6";  // bump when the way products are made changes (5: zoom levels; 6: the tween data's share kept)
+  text += " format=6";  // bump when the way products are made changes (5: zoom levels; 6: the tween data's share kept, calibrated photos by azimuth)
   const ContentHash h = content_hash(text.data(), text.size());
   return to_hex(h);
 }

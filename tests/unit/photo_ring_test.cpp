@@ -10,6 +10,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include "common/image.hpp"
+#include "server/products/photo_folder.hpp"
 #include "server/tween/photo_ring.hpp"
 #include "test_data.hpp"
 
@@ -153,4 +155,33 @@ TEST(PhotoRingTest, MalformedCalibrationIsRefusedWithAReason) {
                              calibration_line("view2.png", ring_camera(2));
   EXPECT_NE(error_of([&] { load_photo_ring(ring_folder("ring-escape", 3, escape)); }).find("plain file name"), std::string::npos);
   EXPECT_NE(error_of([&] { load_photo_ring(ring_folder("ring-count", 4, good)); }).find("4 images announced"), std::string::npos);
+}
+
+TEST(PhotoRingTest, ACalibratedFolderIsTurnedInOrderOfAzimuthWhateverOrderItListsItsPhotosIn) {
+  // Six cameras 10 degrees apart, listed as a lab shooting in two sweeps might: 0, 10, 40, 50,
+  // then back for 20 and 30. Each photo a plain grey of its own shade, to follow it.
+  const int listed[] = {0, 1, 4, 5, 2, 3};
+  const std::filesystem::path folder = scratch_dir() / "ring-sweeps";
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  std::string lines;
+  for (int i : listed) {
+    const std::string name = "view" + std::to_string(i) + ".png";
+    lines += calibration_line(name, ring_camera(i));
+    save_image(Image(60, 50, {uint8_t(40 * i), uint8_t(40 * i), uint8_t(40 * i), 255}), folder / name, false);
+  }
+  std::ofstream(folder / "ring_par.txt") << 6 << '\n' << lines;
+  const PhotoFolder photos = read_photo_folder(folder, {});
+  ASSERT_EQ(photos.names.size(), 6u);
+  for (int i = 0; i < 6; ++i) {
+    EXPECT_EQ(photos.names[size_t(i)], "view" + std::to_string(i) + ".png");
+    EXPECT_EQ(photos.photos[size_t(i)].at(5, 5)[0], 40 * i) << "photo " << i << " is not its name's";
+  }
+  // Neighbouring photos 10 degrees apart, the pairs between them; half a turn is not closed.
+  ASSERT_EQ(photos.cells.size(), 5u);
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_EQ(photos.cells[size_t(i)], (std::vector<uint16_t>{uint16_t(i), uint16_t(i + 1)}));
+    const float step = glm::degrees(std::acos(std::clamp(glm::dot(photos.directions[size_t(i)], photos.directions[size_t(i + 1)]), -1.0f, 1.0f)));
+    EXPECT_NEAR(step, 10.0f * std::cos(glm::radians(20.0f)), 0.2f) << i;
+  }
 }
