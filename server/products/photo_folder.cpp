@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 #include <numeric>
+#include <set>
 
 #include <OpenImageIO/imageio.h>
 #include <glm/geometric.hpp>

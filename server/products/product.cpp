@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <deque>
 #include <set>
@@ -141,7 +142,7 @@ size_t fit_tween_budget(TweenData& data, const std::vector<std::vector<Track>>& 
     return encode_tween(data).size() <= max_bytes;
   };
   if (fits(most)) return most;
-  size_t low = 0, high = most;  // fits(high) is false; fits(low) is assumed (outline alone) and checked below
+  size_t low = 0, high = most;  // high does not fit; low = 0 (the outlines alone) is the floor, fitting or not
   while (high - low > 1) {
     const size_t mid = (low + high) / 2;
     (fits(mid) ? low : high) = mid;
@@ -252,7 +253,6 @@ Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions&
     if (product.matted) outline = outline_tracks(a, photos.photos[cell[1]], flows);
     const size_t on_outline = outline.size();
     const std::vector<Track> points = distil_tracks(flow_pointers, a, std::move(outline), distil);
-    product.data.cells.push_back(cell_from_tracks(points, cell));
     tracks.push_back(points);
     outline_points.push_back(on_outline);
     if (progress) {
@@ -276,6 +276,7 @@ Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions&
     photo_bytes += stored_photo(photo, product.matted).size() + (product.matted ? stored_matte(photo).size() : 0);
   const double share = std::clamp(double(o.max_tween_share), 0.0, 0.99);
   const size_t budget = size_t(share / (1.0 - share) * double(photo_bytes));
+  product.data.cells = cells_capped(tracks, outline_points, photos.cells, SIZE_MAX);
   const size_t before = encode_tween(product.data).size();
   const size_t cap = fit_tween_budget(product.data, tracks, outline_points, photos.cells, budget);
   const size_t after = encode_tween(product.data).size();
