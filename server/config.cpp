@@ -124,6 +124,8 @@ ServerConfig ServerConfig::parse(const std::string& text, const std::string& ori
     if (j.contains("plain_off_loopback")) c.plain_off_loopback = j.at("plain_off_loopback").get<bool>();
     if (j.contains("tls")) c.tls = TlsConfig{.certificate = j.at("tls").at("certificate").get<std::string>(), .key = j.at("tls").at("key").get<std::string>()};
     if (j.contains("http_head_timeout_seconds")) c.http_head_timeout_seconds = j.at("http_head_timeout_seconds").get<double>();
+    if (j.contains("idle_timeout_seconds")) c.idle_timeout_seconds = j.at("idle_timeout_seconds").get<double>();
+    if (j.contains("heartbeat_seconds")) c.heartbeat_seconds = j.at("heartbeat_seconds").get<double>();
     if (j.contains("sessions")) {
       c.sessions.clear();
       for (const auto& s : j.at("sessions")) {
@@ -147,6 +149,9 @@ ServerConfig ServerConfig::parse(const std::string& text, const std::string& ori
     throw Error("config '" + origin + "': " + e.what());
   }
   if (!(c.http_head_timeout_seconds > 0.05 && c.http_head_timeout_seconds <= 300)) throw Error("config: http_head_timeout_seconds must be 0.05..300");
+  if (!(c.heartbeat_seconds >= 0.1 && c.heartbeat_seconds <= 5)) throw Error("config: heartbeat_seconds must be 0.1..5 (clients take 15 s of silence as a dead server)");
+  if (!(c.idle_timeout_seconds >= 2 * c.heartbeat_seconds && c.idle_timeout_seconds <= 3600))
+    throw Error("config: idle_timeout_seconds must be at least twice heartbeat_seconds and at most 3600");
   if (c.max_connections < 1 || c.max_connections_per_address < 1) throw Error("config: max_connections and max_connections_per_address must be at least 1");
   if (c.call.loudest < 1 || c.call.loudest > int(protocol::kMaxMembers)) throw Error("config: call_loudest must be 1..64");
   if (c.join_failures_allowed < 0) throw Error("config: join_failures_allowed must be 0 or more");

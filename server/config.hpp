@@ -56,6 +56,13 @@ struct ServerConfig {
   std::string name = "inkwire-server";
   size_t queue_bytes = 4 << 20;      // per client, beyond which a client is too slow
   double hello_timeout_seconds = 5;  // for a new connection to say hello
+  // After the hello (SPEC D7): a connection that has sent nothing for idle_timeout_seconds, or
+  // whose peer has not taken a write for as long, is closed and leaves its session. The server
+  // pings a connection it has heard nothing from for heartbeat_seconds, so a quiet healthy client
+  // answers long before; clients take 15 s of silence from the server as a dead server, so the
+  // heartbeat stays at most 5 s.
+  double idle_timeout_seconds = 15;
+  double heartbeat_seconds = 5;
   double persist_seconds = 1;        // how often changed session state is written to the catalogue
   size_t max_connections = 4096;             // clients at once, over every transport
   size_t max_connections_per_address = 64;   // clients at once from one IP address

@@ -31,7 +31,7 @@ void Connection::start() {
   auto self = shared_from_this();
   asio::co_spawn(transport_->executor(), [self] { return self->read_loop(); }, asio::detached);
   asio::co_spawn(transport_->executor(), [self] { return self->write_loop(); }, asio::detached);
-  asio::co_spawn(transport_->executor(), [self] { return self->hello_watchdog(); }, asio::detached);
+  asio::co_spawn(transport_->executor(), [self] { return self->watchdog(); }, asio::detached);
 }
 
 void Connection::send(const Message& message) {
@@ -75,11 +75,38 @@ void Connection::shut() {
   server_.forget(this);
 }
 
-asio::awaitable<void> Connection::hello_watchdog() {
-  asio::steady_timer timer(transport_->executor(),
-                           std::chrono::milliseconds(int64_t(server_.config().hello_timeout_seconds * 1000)));
-  co_await timer.async_wait(no_throw);
-  if (!greeted_ && !shut_) close_with(ErrorCode::Malformed, "no hello within " + std::to_string(int(server_.config().hello_timeout_seconds)) + " seconds");
+asio::awaitable<void> Connection::watchdog() {
+  const auto seconds = [](double s) { return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s)); };
+  const ServerConfig& config = server_.config();
+  const auto hello = seconds(config.hello_timeout_seconds), idle = seconds(config.idle_timeout_seconds), beat = seconds(config.heartbeat_seconds);
+  // Checked a few times per heartbeat: a deadline is met within a quarter of a beat.
+  asio::steady_timer timer(transport_->executor());
+  const Clock::time_point opened = Clock::now();
+  auto self = shared_from_this();
+  while (!closing_ && !shut_) {
+    timer.expires_after(std::min(beat, hello) / 4);
+    co_await timer.async_wait(no_throw);
+    if (closing_ || shut_) break;
+    const Clock::time_point now = Clock::now();
+    if (!greeted_) {
+      if (now - opened > hello) close_with(ErrorCode::Malformed, "no hello within " + std::to_string(int(config.hello_timeout_seconds)) + " seconds");
+      continue;
+    }
+    if (writing_since_ && now - *writing_since_ > idle) {
+      ++server_.counters().idle_closed;
+      log_warn("not-reading", {{"client", id_}, {"name", client_name_}, {"seconds", config.idle_timeout_seconds}});
+      // The peer takes nothing: the error could not reach it either.
+      shut();
+    } else if (now - last_heard_ > idle) {
+      ++server_.counters().idle_closed;
+      log_warn("idle-timeout", {{"client", id_}, {"name", client_name_}, {"seconds", config.idle_timeout_seconds}});
+      close_with(ErrorCode::Refused, "nothing heard for " + std::to_string(int(config.idle_timeout_seconds)) + " seconds: closed as gone");
+    } else if (now - last_heard_ > beat && now - last_ping_ > beat) {
+      // Only a quiet peer is pinged: one that talks renews its deadline by itself.
+      last_ping_ = now;
+      send(Ping{.nonce = ++pings_sent_});
+    }
+  }
 }
 
 asio::awaitable<void> Connection::read_loop() {
@@ -88,6 +115,7 @@ asio::awaitable<void> Connection::read_loop() {
   while (!closing_) {
     try {
       if (const std::error_code ec = co_await transport_->read_frame(frame)) break;
+      last_heard_ = Clock::now();
       const FrameHeader h = parse_header(frame.data());
       Message message = decode(h.type, frame.data() + kHeaderBytes, frame.size() - kHeaderBytes);
       ++server_.counters().messages_in;
@@ -125,7 +153,10 @@ asio::awaitable<void> Connection::write_loop() {
     }
     // Everything queued goes out in one gathered write.
     const std::deque<Outgoing> batch = queue_.take_all();
-    if (co_await transport_->write_frames(batch)) break;
+    writing_since_ = Clock::now();
+    const std::error_code failed = co_await transport_->write_frames(batch);
+    writing_since_.reset();
+    if (failed) break;
     server_.counters().messages_out += batch.size();
   }
   if (closing_ && !shut_) co_await transport_->goodbye(closed_for_.first, closed_for_.second);

@@ -1,9 +1,12 @@
 #pragma once
-// One client connection (STYLE 4): a reader coroutine that decodes and handles messages, a writer
-// coroutine that drains the bounded send queue, and a watchdog that closes connections that
-// never say hello. Any error ends only this connection, after telling the peer why. Frames come
+// One client connection (STYLE 4, 16): a reader coroutine that decodes and handles messages, a
+// writer coroutine that drains the bounded send queue, and one watchdog for every deadline: the
+// hello, then silence (renewed by anything the peer sends; the server pings a quiet peer) and a
+// write the peer does not take (SPEC D7). Any error ends only this connection, after telling the peer why. Frames come
 // and go through a Transport (TCP or WebSocket); nothing here depends on which.
+#include <chrono>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <asio.hpp>
@@ -36,7 +39,7 @@ class Connection : public std::enable_shared_from_this<Connection> {
  private:
   asio::awaitable<void> read_loop();
   asio::awaitable<void> write_loop();
-  asio::awaitable<void> hello_watchdog();
+  asio::awaitable<void> watchdog();
   void handle(protocol::Message& message);
   void join(const protocol::Join& join);
   void change(const protocol::Message& change);
@@ -60,6 +63,10 @@ class Connection : public std::enable_shared_from_this<Connection> {
   Role role_ = Role::Visitor;  // in session_
   std::pair<protocol::ErrorCode, std::string> closed_for_;  // why close_with() ends the connection
   bool greeted_ = false, closing_ = false, shut_ = false;
+  using Clock = std::chrono::steady_clock;
+  Clock::time_point last_heard_ = Clock::now(), last_ping_ = Clock::now();
+  std::optional<Clock::time_point> writing_since_;  // set while a write waits for the peer
+  uint64_t pings_sent_ = 0;
 };
 
 }  // namespace inkwire::server

@@ -29,6 +29,7 @@ struct ServerCounters {
   uint64_t messages_in = 0, messages_out = 0;
   uint64_t replaced = 0;             // state messages overtaken in a queue before they went out (latest wins)
   uint64_t too_slow = 0;             // clients closed because their queue overflowed
+  uint64_t idle_closed = 0;          // clients closed past their deadline: silent, or not taking writes (SPEC D7)
   uint64_t connections_refused = 0;  // past a connection cap
   uint64_t joins_refused = 0;        // wrong token
   uint64_t changes_refused = 0;      // changes a member had no authority to make (authority.hpp)

@@ -40,6 +40,7 @@ SessionClient::SessionClient(const std::string& host_port, const std::string& cl
     if (ec) throw Error("TLS with " + host_port + " failed: " + ec.message());
   }
   start_reading();
+  watch_for_silence();
   thread_ = std::thread([this] { io_.run(); });
   try {
     send(Hello{.client_name = client_name.substr(0, kMaxName)});
@@ -61,15 +62,32 @@ SessionClient::~SessionClient() { stop(); }
 
 void SessionClient::stop() {
   asio::post(io_, [this] {
-    std::error_code ec;
+    silence_timer_.cancel();
     stream_.close();
   });
   if (thread_.joinable()) thread_.join();
 }
 
+void SessionClient::watch_for_silence() {
+  silence_timer_.expires_after(std::chrono::seconds(1));
+  silence_timer_.async_wait([this](std::error_code ec) {
+    if (ec) return;
+    if (std::chrono::steady_clock::now() - last_heard_ <= kServerSilence) return watch_for_silence();
+    {
+      std::lock_guard lock(mutex_);
+      if (!connected_) return;
+      connected_ = false;
+      last_error_ = "no word from the server for " + std::to_string(kServerSilence.count()) + " seconds";
+      changed_.notify_all();
+    }
+    stream_.close();
+  });
+}
+
 void SessionClient::start_reading() {
   stream_.async_read_some(asio::buffer(read_buffer_), [this](std::error_code ec, size_t n) {
     if (ec) {
+      silence_timer_.cancel();
       std::lock_guard lock(mutex_);
       connected_ = false;
       if (ec != asio::error::eof && ec != asio::error::operation_aborted) last_error_ = ec.message();
@@ -77,6 +95,7 @@ void SessionClient::start_reading() {
       return;
     }
     bytes_received_ += n;
+    last_heard_ = std::chrono::steady_clock::now();
     try {
       decoder_.feed(read_buffer_.data(), n);
       while (auto m = decoder_.next()) on_message(std::move(*m));

@@ -24,6 +24,10 @@ namespace inkwire {
 
 class SessionClient {
  public:
+  // A server pings a quiet client every few seconds (SPEC D7, at most 5 s): this long with no
+  // word from it and the connection is taken as dead (connected() turns false with the reason).
+  static constexpr std::chrono::seconds kServerSilence{15};
+
   // Connects to HOST:PORT (over TLS when `tls` is given: the server's certificate must be
   // trusted by it and name HOST) and completes the handshake; throws inkwire::Error with the
   // server's reason (e.g. a version mismatch), TLS's or the socket's.
@@ -85,6 +89,7 @@ class SessionClient {
  private:
   void stop();  // closes the socket and ends the I/O thread
   void start_reading();
+  void watch_for_silence();  // on the I/O thread: a server silent for kServerSilence is taken as gone
   void on_message(protocol::Message message);
   void write_next();
   protocol::Message wait_for(std::function<bool(const protocol::Message&)> wanted, std::chrono::milliseconds timeout);
@@ -97,6 +102,8 @@ class SessionClient {
   protocol::FrameDecoder decoder_;
   std::deque<protocol::Bytes> outbox_;  // touched on the I/O thread only
   bool writing_ = false;
+  asio::steady_timer silence_timer_{io_};
+  std::chrono::steady_clock::time_point last_heard_ = std::chrono::steady_clock::now();  // I/O thread only
 
   mutable std::mutex mutex_;
   mutable std::condition_variable changed_;

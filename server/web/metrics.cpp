@@ -51,6 +51,7 @@ std::string metrics_text(Server& server) {
   m.one("inkwire_messages_out_total", "counter", "Messages written to clients.", c.messages_out);
   m.one("inkwire_queue_replaced_total", "counter", "State messages overtaken by a newer one in a client's queue (latest wins).", c.replaced);
   m.one("inkwire_queue_overflow_total", "counter", "Clients closed because they did not read their queue.", c.too_slow);
+  m.one("inkwire_deadline_closed_total", "counter", "Clients closed past their deadline: nothing heard, or no write taken, for idle_timeout_seconds.", c.idle_closed);
   m.one("inkwire_connections_refused_total", "counter", "Connections refused past a connection cap.", c.connections_refused);
   m.one("inkwire_joins_refused_total", "counter", "Joins refused for a wrong token.", c.joins_refused);
   m.one("inkwire_changes_refused_total", "counter", "Changes refused: the member had no authority to make them.", c.changes_refused);

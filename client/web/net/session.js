@@ -5,6 +5,9 @@
 import { AssetKind, decodeFrame, encode, ErrorCode, kMaxChunk } from '../protocol/messages.js';
 
 const kRequestsAhead = 4;
+// The server pings a quiet client at least every 5 s (protocol/SPEC.md "Deadlines"): this long
+// with no word from it and the connection is taken as dead, as client/net/session_client.hpp.
+export const kServerSilenceMs = 15000;
 const kCacheName = 'inkwire-assets-v1';
 const toHex = (bytes) => Array.from(bytes, (b) => b.toString(16).padStart(2, '0')).join('');
 
@@ -26,7 +29,13 @@ export class Session extends EventTarget {
     this.socket.binaryType = 'arraybuffer';
     this.socket.addEventListener('open', () => this.send({ type: 'hello', client_name: clientName }));
     this.socket.addEventListener('message', (e) => this.receive(e.data));
+    this.lastHeard = performance.now();
+    this.silenceTimer = setInterval(() => {
+      if (performance.now() - this.lastHeard <= kServerSilenceMs) return;
+      this.fail(`no word from the server for ${kServerSilenceMs / 1000} seconds`);
+    }, 1000);
     this.socket.addEventListener('close', () => {
+      clearInterval(this.silenceTimer);
       for (const w of this.waiting.values()) w.reject(new Error('connection closed'));
       this.waiting.clear();
       this.dispatchEvent(new Event('close'));
@@ -39,11 +48,15 @@ export class Session extends EventTarget {
     this.socket.send(frame);
   }
 
-  close() { this.socket.close(); }
+  close() {
+    clearInterval(this.silenceTimer);
+    this.socket.close();
+  }
 
   receive(data) {
     if (!(data instanceof ArrayBuffer)) return this.fail('the server sent a text message');
     this.bytesReceived += data.byteLength;
+    this.lastHeard = performance.now();
     let m;
     try {
       m = decodeFrame(new Uint8Array(data));
@@ -70,7 +83,7 @@ export class Session extends EventTarget {
 
   fail(reason) {
     this.dispatchEvent(new CustomEvent('error', { detail: reason }));
-    this.socket.close();
+    this.close();
   }
 
   // The asset's bytes: from the cache, or downloaded, checked and cached.
