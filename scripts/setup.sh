@@ -6,6 +6,8 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 cd "$here"
 
+sudo=""
+[ "$(id -u)" = 0 ] || sudo="sudo"
 if [ "${INKWIRE_SKIP_INSTALL:-0}" != 1 ]; then
   mapfile -t wanted < <(grep -vE '^\s*(#|$)' scripts/packages.txt)
   missing=()
@@ -14,14 +16,23 @@ if [ "${INKWIRE_SKIP_INSTALL:-0}" != 1 ]; then
   done
   if [ ${#missing[@]} -gt 0 ]; then
     echo "setup: installing ${#missing[@]} missing packages: ${missing[*]}"
-    sudo=""
-    [ "$(id -u)" = 0 ] || sudo="sudo"
     export DEBIAN_FRONTEND=noninteractive
     $sudo apt-get update -qq
     $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
   else
     echo "setup: all packages present"
   fi
+fi
+
+# The browser tests drive Firefox through puppeteer-core, pinned in tests/web/package-lock.json
+# (nothing else is downloaded: it uses Debian's firefox-esr). Node's package manager comes from
+# Debian when the machine's node has none.
+if [ "${INKWIRE_SKIP_INSTALL:-0}" != 1 ] && [ ! -d tests/web/node_modules/puppeteer-core ]; then
+  if ! command -v npm >/dev/null; then
+    $sudo apt-get install -y -qq --no-install-recommends npm
+  fi
+  echo "setup: installing the browser tests' puppeteer-core (npm ci --prefix tests/web)"
+  npm ci --prefix tests/web --no-audit --no-fund --loglevel=error
 fi
 
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release ${INKWIRE_CMAKE_ARGS:-}

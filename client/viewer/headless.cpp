@@ -1,5 +1,7 @@
 // Headless recording: one frame per tick of the clock, each drawn from the newest state.
+#include <atomic>
 #include <chrono>
+#include <csignal>
 #include <fstream>
 #include <iostream>
 #include <thread>
@@ -16,6 +18,11 @@
 
 namespace inkwire {
 namespace {
+
+// Ctrl-C or a termination ends a recording early as if its last frame had come: what was
+// recorded (pictures, sound, the frame log) is written whole.
+std::atomic<bool> stop_asked{false};
+void ask_to_stop(int) { stop_asked = true; }
 
 // A call's sound: to --audio-out, and into an .mp4 recording beside its pictures (ffmpeg copies
 // the video and adds the sound as AAC).
@@ -44,6 +51,8 @@ void save_call_sound(const ViewerOptions& o, const std::vector<float>& sound, co
 int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& o) {
   if (o.frames <= 0) throw Error("--headless needs --frames N (1..100000)");
   if (o.out.empty()) throw Error("--headless needs --out PATH");
+  std::signal(SIGINT, ask_to_stop);
+  std::signal(SIGTERM, ask_to_stop);
   auto context = create_offscreen_context(o.size.x, o.size.y, o.gl);
   Canvas canvas(o.size.x, o.size.y, o.msaa);
   SessionSync sync(client, cache);
@@ -74,7 +83,8 @@ int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& 
     const std::vector<float> heard = sync.audio().take(until);  // only what is due by now: late packets are late
     sound.insert(sound.end(), heard.begin(), heard.end());
   };
-  for (int i = 0; i < o.frames; ++i) {
+  int frames = 0;
+  for (int i = 0; i < o.frames && !stop_asked; ++i, frames = i) {
     hear_until(tick);
     // The first frame shows what the wait above made ready (it has just polled): polling again
     // could take in the next photo first, and the first view would not be the one-photo view.
@@ -108,7 +118,7 @@ int run_headless(SessionClient& client, AssetCache& cache, const ViewerOptions& 
   // Frames of a blank backdrop are not a recording of the session: say why and fail.
   if (!sync.view().content_error().empty()) throw Error(sync.view().content_error() + " (the frames written show none of it)");
   if (!sync.view().error().empty()) std::cerr << "inkwire-client: " << sync.view().error() << "\n";
-  std::cerr << "inkwire-client: rendered " << o.frames << " frames to " << o.out << "; sent " << client.bytes_sent()
+  std::cerr << "inkwire-client: rendered " << frames << " frames to " << o.out << "; sent " << client.bytes_sent()
             << " bytes, received " << client.bytes_received() << "\n";
   return 0;
 }

@@ -33,10 +33,18 @@ namespace {
 constexpr auto no_throw = asio::experimental::as_tuple(asio::use_awaitable);
 constexpr size_t kMaxHead = 8192;
 
-std::string response(int status, const char* reason, const std::string& type, const std::string& body) {
+// `headers`: more header lines, each ending in CRLF.
+std::string response(int status, const char* reason, const std::string& type, const std::string& body, const std::string& headers = "") {
   return "HTTP/1.1 " + std::to_string(status) + " " + reason + "\r\nContent-Type: " + type + "\r\nContent-Length: " +
-         std::to_string(body.size()) + "\r\nCache-Control: no-store\r\nConnection: close\r\n\r\n" + body;
+         std::to_string(body.size()) + "\r\nCache-Control: no-store\r\nConnection: close\r\n" + headers + "\r\n" + body;
 }
+
+// A call's page is cross-origin isolated, so its worker and audio worklets can share rings of
+// sound (SharedArrayBuffer) instead of messages that some engines route past the page's thread
+// (SPEC F15). The scripts say they may be embedded so, by any page (a worker's own script must
+// carry COEP itself, in Chromium).
+const std::string kIsolatedPage = "Cross-Origin-Opener-Policy: same-origin\r\nCross-Origin-Embedder-Policy: require-corp\r\n";
+const std::string kEmbeddableScript = "Cross-Origin-Embedder-Policy: require-corp\r\nCross-Origin-Resource-Policy: cross-origin\r\n";
 
 // The browser's renderer (client/web/module), which the build leaves beside this binary in web/,
 // read once, plain and gzipped. Null when this build has none.
@@ -250,7 +258,7 @@ asio::awaitable<void> HttpServer::serve(ByteStream accepted) {
   }
   for (const auto* files : {&web_client_files(), &web_shader_files()})
     if (const auto file = files->find(path.substr(1)); path.size() > 1 && file != files->end()) {
-      co_await reply(response(200, "OK", content_type(path), std::string(file->second)));
+      co_await reply(response(200, "OK", content_type(path), std::string(file->second), kEmbeddableScript));
       co_return;
     }
   if (path.rfind("/module/", 0) == 0) {
@@ -263,7 +271,8 @@ asio::awaitable<void> HttpServer::serve(ByteStream accepted) {
     const bool gzip = request.header("accept-encoding").find("gzip") != std::string::npos;
     const std::string& body = gzip ? file->gzipped : file->plain;
     co_await reply("HTTP/1.1 200 OK\r\nContent-Type: " + content_type(path) + (gzip ? "\r\nContent-Encoding: gzip" : "") +
-                   "\r\nContent-Length: " + std::to_string(body.size()) + "\r\nCache-Control: no-cache\r\nConnection: close\r\n\r\n" + body);
+                   "\r\nContent-Length: " + std::to_string(body.size()) + "\r\nCache-Control: no-cache\r\nConnection: close\r\n" + kEmbeddableScript +
+                   "\r\n" + body);
     co_return;
   }
   if (path.rfind("/scene/", 0) == 0) {
@@ -305,7 +314,8 @@ asio::awaitable<void> HttpServer::serve(ByteStream accepted) {
       co_return;
     }
     co_await reply(response(200, "OK", "text/html; charset=utf-8",
-                            element_page("inkwire-call", session->name(), request.header("host"), "Put this call on your page", server_.tls() != nullptr)));
+                            element_page("inkwire-call", session->name(), request.header("host"), "Put this call on your page", server_.tls() != nullptr),
+                            kIsolatedPage));
     co_return;
   }
   if (path == "/face/expression_templates.json") {

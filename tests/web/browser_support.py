@@ -1,8 +1,16 @@
 """What the browser tests share beyond tests/support: a skip with a message when Debian's
 chromium, chromium-driver or python3-selenium is missing, and headless Chromium with the flags
-this machine needs."""
+this machine needs; Firefox (Debian's firefox-esr through puppeteer-core, tests/web/package.json)
+and WebKitGTK (webkit2gtk-driver's WebKitWebDriver and MiniBrowser) behind the same few calls
+(get, execute_script, save_screenshot, quit), each with fake camera and microphone, for the
+tests that run in every engine (SPEC F18). Those two need a display (xvfb-run): without one, or
+without the engine, `engine()` says why and the test skips that engine."""
+import json
 import os
+import shutil
+import subprocess
 import sys
+import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
 from inkwire_test import PROTOCOL_VERSION, Checks, Server, psnr, read_image, skip  # noqa: E402,F401  (re-exported for the tests)
@@ -38,3 +46,117 @@ def chromium(out, width, height, extra=()):
         options.add_argument(a)
     options.binary_location = "/usr/bin/chromium"
     return webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
+
+
+ENGINES = ("chromium", "firefox", "webkit")
+HERE = os.path.dirname(os.path.abspath(__file__))
+MINIBROWSER = "/usr/lib/x86_64-linux-gnu/webkit2gtk-4.1/MiniBrowser"
+
+
+def engine_missing(name):
+    """Why `name` cannot run here, or None."""
+    if name == "chromium":
+        return None  # checked on import
+    if not os.environ.get("DISPLAY"):
+        return f"{name} needs a display here (run under xvfb-run: headless Firefox has no WebGL)"
+    if name == "firefox":
+        if not os.path.exists("/usr/bin/firefox-esr"):
+            return "/usr/bin/firefox-esr is missing (package firefox-esr)"
+        if not shutil.which("node") or not os.path.isdir(os.path.join(HERE, "node_modules", "puppeteer-core")):
+            return "puppeteer-core is not installed (scripts/setup.sh runs npm ci --prefix tests/web)"
+        if not shutil.which("pulseaudio"):
+            return "pulseaudio is missing (Firefox plays no sound without a sound server)"
+        return None
+    if name == "webkit":
+        if not os.path.exists("/usr/bin/WebKitWebDriver"):
+            return "/usr/bin/WebKitWebDriver is missing (package webkit2gtk-driver)"
+        if not os.path.exists(MINIBROWSER):
+            return f"{MINIBROWSER} is missing (package libwebkit2gtk-4.1-0)"
+        return None
+    return f"no engine named {name}"
+
+
+def null_sound_server(out):
+    """A PulseAudio daemon of this test's own with a null sink (Firefox's audio needs a sound server
+    to run at all; a machine without speakers has none): the environment that reaches it, and
+    the daemon's process."""
+    runtime = os.path.join(out, "pulse-runtime")
+    os.makedirs(runtime, exist_ok=True)
+    os.chmod(runtime, 0o700)
+    env = dict(os.environ, XDG_RUNTIME_DIR=runtime, PULSE_RUNTIME_PATH=os.path.join(runtime, "pulse"))
+    daemon = subprocess.Popen(["pulseaudio", "--daemonize=no", "--exit-idle-time=-1", "-n", "--load=module-null-sink sink_name=inkwire",
+                               "--load=module-native-protocol-unix", f"--log-target=file:{os.path.join(out, 'pulseaudio.log')}"],
+                              env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    for _ in range(50):
+        if os.path.exists(os.path.join(runtime, "pulse", "native")):
+            break
+        time.sleep(0.1)
+    return env, daemon
+
+
+class FirefoxDriver:
+    """Firefox ESR through tests/web/firefox_bridge.mjs, with selenium's calls the tests use."""
+
+    def __init__(self, out, width, height, prefs=()):
+        os.makedirs(out, exist_ok=True)
+        profile = os.path.join(out, "firefox-profile")
+        shutil.rmtree(profile, ignore_errors=True)
+        os.makedirs(profile)
+        self.log = open(os.path.join(out, "firefox.log"), "w")
+        env, self.sound = null_sound_server(out)
+        self.process = subprocess.Popen(["node", os.path.join(HERE, "firefox_bridge.mjs"), profile, str(width), str(height), *prefs],
+                                        stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=self.log, text=True, cwd=HERE, env=env)
+
+    def _ask(self, request):
+        self.process.stdin.write(json.dumps(request) + "\n")
+        self.process.stdin.flush()
+        line = self.process.stdout.readline()
+        if not line:
+            raise RuntimeError(f"Firefox ended (see {self.log.name})")
+        answer = json.loads(line)
+        if "error" in answer:
+            raise RuntimeError(f"in Firefox: {answer['error']}")
+        return answer["ok"]
+
+    def get(self, url):
+        self._ask({"get": url})
+
+    def execute_script(self, script):
+        return self._ask({"script": script})
+
+    def save_screenshot(self, path):
+        self._ask({"screenshot": os.path.abspath(path)})
+
+    def quit(self):
+        try:
+            self._ask({"quit": True})
+            self.process.wait(timeout=20)
+        except Exception:
+            self.process.kill()
+        self.sound.terminate()
+        self.sound.wait(timeout=10)
+
+
+def webkit(width, height):
+    """WebKitGTK's MiniBrowser under WebKitWebDriver, with mock camera and microphone. Its
+    JavaScriptCore leaves SharedArrayBuffer off even on a cross-origin isolated page, where
+    Safari has it: it is turned on as Safari has it (JSC_useSharedArrayBuffer)."""
+    os.environ["JSC_useSharedArrayBuffer"] = "1"
+    o = webdriver.WebKitGTKOptions()
+    o.binary_location = MINIBROWSER
+    for a in ("--automation", "--enable-mock-capture-devices=true", "--enable-media-stream=true", "--media-playback-requires-user-gesture=false"):
+        o.add_argument(a)
+    driver = webdriver.WebKitGTK(executable_path="/usr/bin/WebKitWebDriver", options=o)
+    driver.set_window_size(width, height)
+    return driver
+
+
+def engine(name, out, width, height, chromium_extra=()):
+    """A browser of engine `name` with a fake camera and microphone (Chromium's from
+    `chromium_extra`, the others' own: a test pattern and a tone)."""
+    if name == "chromium":
+        return chromium(out, width, height, ["--use-fake-ui-for-media-stream", "--use-fake-device-for-media-stream",
+                                             "--autoplay-policy=no-user-gesture-required", *chromium_extra])
+    if name == "firefox":
+        return FirefoxDriver(out, width, height)
+    return webkit(width, height)

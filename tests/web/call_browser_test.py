@@ -129,7 +129,7 @@ try:
             time.sleep(0.1)
         level = driver.execute_script(f"return {element}.level.value")
         checks.check(driver.execute_script(f"return {element}.preview.videoWidth") == 320, f"{name}: the camera's preview shows before joining")
-        driver.execute_script(f"const e = {element}; e.nameInput.value = '{name.capitalize()}'; e.join();")
+        driver.execute_script(f"const e = {element}; e.nameInput.value = '{name.capitalize()}'; e.join(); e.link.record();")
     end = time.time() + 20
     names = lambda d: sorted(m["name"] for m in d.execute_script(f"return {element}.members"))
     while time.time() < end and not (names(ada) == ["Ada", "Bea", "Nat"] and names(bea) == ["Ada", "Bea", "Nat"]):
@@ -167,13 +167,14 @@ try:
     # Bea's words and more of hers than of Ada's own still say whose voice arrived (Ada's own
     # sentence gives 5 of hers and 1 of Bea's).
     for listen in range(2):
-        heard = ada.execute_script(f"""const s = {element}.player.recording().samples, out = [];
+        heard = ada.execute_script(f"""const r = await {element}.link.recording(), s = r.samples, out = [];
+          if (r.sampleRate !== 48000) throw new Error(`played at ${{r.sampleRate}} Hz`);
           for (let i = 0; i + 2 < s.length; i += 3) out.push((s[i] + s[i + 1] + s[i + 2]) / 3);
           return out;""")
         got = recognised(heard, 16000, "ada-heard")
         beas, adas = sorted(OWN_WORDS["bea"] & set(got)), sorted(OWN_WORDS["ada"] & set(got))
-        played, late, delays = ada.execute_script(f"const p = {element}.player; return [p.played, p.late, [...p.members.values()].map((m) => Math.round(m.delayMs))]")
-        print(f"Ada heard ({played} packets played, {late} too late to play, delays {delays} ms):", " ".join(got))
+        stats = ada.execute_script(f"return {element}.voiceStats")
+        print(f"Ada heard ({stats['played']} packets played, {stats['late']} too late to play, delay {stats['delayMs']:.0f} ms):", " ".join(got))
         if len(beas) >= 3 or listen == 1:
             break
         time.sleep(12)

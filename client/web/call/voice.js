@@ -1,160 +1,205 @@
-// A call's voice in the browser (SPEC F9), mirroring client/call/voice_codec.cpp and
-// call_audio.cpp: the microphone's frames (MediaStreamTrackProcessor, 48 kHz) encoded as mono
-// Opus packets by WebCodecs' AudioEncoder, and every member's packets decoded by an
-// AudioDecoder each and played through one AudioContext at their member's moment: each
-// member's clock is mapped to this page's by its first packet plus a jitter delay that a late
-// packet raises (playoutMs, as client/call/playout_delay.hpp), a packet later than the largest
-// delay is dropped, and the same mapping says when a face code is due (lip sync).
+// A call's voice and connection as the page holds them (SPEC F9, F15): the page builds the audio
+// graph and hands the ports over, then only shows levels and reads figures. The microphone goes
+// through call/capture_worklet.js to call/call_worker.js (the WebSocket, Opus through WebCodecs),
+// other members' voices come back through the worker to call/playout_worklet.js, which plays
+// them on the audio clock by the jitter rule of call/playout.js. Nothing audio runs on the page's
+// thread. On a cross-origin isolated page (the server's /call/ pages are) the worklets and the
+// worker share rings (call/audio_ring.js) and exchange no message per chunk: then no engine routes
+// a sample past the page's thread; elsewhere they pass transferred chunks through MessagePorts.
+// CallLink.open() gives the element a session that lives in the worker (WorkerSession).
+import { PacketRing, SampleRing } from './audio_ring.js';
 
-export const kStartDelayMs = 80, kDelayMarginMs = 20, kMaxDelayMs = 300;
+const kCaptureRingFrames = 48000, kPlayoutSlots = 64, kPacketSamples = 5760;  // 1 s; 64 packets of up to 120 ms
 
-// Where a packet stamped `timeMs` on its member's clock plays on this one (ms), given `offsetMs`
-// (this clock minus the member's, from its first packet), `member.delayMs` (raised here when the
-// packet is late) and `nowMs`, how far this clock has played: null when the packet is later than
-// even the largest delay allows. The C++ rule, operation for operation (golden "playout").
-export function playoutMs(timeMs, offsetMs, member, nowMs) {
-  const at = timeMs + offsetMs + member.delayMs;
-  if (at >= nowMs) return at;
-  const raised = member.delayMs + (nowMs - at) + kDelayMarginMs;
-  if (raised > kMaxDelayMs) return null;
-  member.delayMs = raised;
-  return timeMs + offsetMs + member.delayMs;
-}
-
-// Why this browser cannot send or hear a call's voice, or '' when it can.
+// Why this browser cannot send or hear a call's voice, as far as the page can tell ('' when it
+// can; the worker adds what only it can tell, such as WebCodecs in workers).
 export function voiceUnsupported() {
-  if (!globalThis.AudioEncoder || !globalThis.AudioDecoder) return 'this browser has no WebCodecs audio (AudioEncoder/AudioDecoder)';
-  if (!globalThis.MediaStreamTrackProcessor) return 'this browser cannot read microphone frames (MediaStreamTrackProcessor)';
+  if (!globalThis.AudioWorkletNode) return 'this browser has no AudioWorklet: you will join without voice';
+  if (!globalThis.Worker) return 'this browser has no Web Workers: you will join without voice';
   return '';
 }
 
-// The microphone: its level always (a meter), its Opus packets while `sending`.
-export class VoiceSender {
-  constructor(track, { bitrate = 10000, frameMs = 60, onPacket, onLevel } = {}) {  // as client/call/publisher.hpp
-    this.onPacket = onPacket;
-    this.onLevel = onLevel;
-    this.sending = false;
-    this.frameMs = frameMs;
-    this.encoder = new AudioEncoder({
-      output: (chunk) => {
-        const bytes = new Uint8Array(chunk.byteLength);
-        chunk.copyTo(bytes);
-        if (this.sending) this.onPacket?.(bytes, chunk.timestamp);
-      },
-      error: (e) => console.warn('voice encoder:', e.message),
+// The session as the element sees it, its socket in the worker: the same events and calls as
+// net/session.js (send, fetchAsset, close; 'snapshot', 'roster', 'member-face', ...).
+export class WorkerSession extends EventTarget {
+  constructor(link) {
+    super();
+    this.link = link;
+    this.requests = new Map();  // id -> {resolve, reject}
+    this.nextRequest = 0;
+  }
+
+  send(message) { this.link.worker.postMessage({ op: 'send', message }); }
+
+  fetchAsset(asset) {
+    const id = ++this.nextRequest;
+    return new Promise((resolve, reject) => {
+      this.requests.set(id, { resolve, reject });
+      this.link.worker.postMessage({ op: 'fetch-asset', id, asset });
     });
-    this.configured = false;
-    this.bitrate = bitrate;
-    this.reader = new MediaStreamTrackProcessor({ track }).readable.getReader();
-    this.pump();
   }
 
-  async pump() {
-    for (;;) {
-      let result;
-      try {
-        result = await this.reader.read();
-      } catch {
-        return;
-      }
-      if (result.done) return;
-      const frame = result.value;
-      const samples = new Float32Array(frame.numberOfFrames);
-      frame.copyTo(samples, { planeIndex: 0, format: 'f32-planar' });
-      let sum = 0;
-      for (const s of samples) sum += s * s;
-      this.onLevel?.(10 * Math.log10(Math.max(sum / Math.max(samples.length, 1), 1e-10)));
-      if (!this.configured) {
-        this.encoder.configure({ codec: 'opus', sampleRate: frame.sampleRate, numberOfChannels: 1, bitrate: this.bitrate,
-                                 opus: { frameDuration: this.frameMs * 1000, complexity: 5 } });
-        this.configured = true;
-      }
-      // Mono from the first channel, whatever the device gives.
-      const mono = new AudioData({ format: 'f32-planar', sampleRate: frame.sampleRate, numberOfFrames: frame.numberOfFrames,
-                                   numberOfChannels: 1, timestamp: frame.timestamp, data: samples });
-      frame.close();
-      if (this.encoder.state === 'configured') this.encoder.encode(mono);
-      mono.close();
-    }
-  }
-
-  stop() {
-    this.reader.cancel().catch(() => {});
-    if (this.encoder.state !== 'closed') this.encoder.close();
-  }
-}
-
-// Every member's voice, decoded and scheduled on one AudioContext.
-export class VoicePlayer {
-  constructor() {
-    this.context = new AudioContext({ sampleRate: 48000 });
-    this.members = new Map();  // member -> {decoder, offsetMs (context ms - member ms), delayMs, pending}
-    this.late = 0;
-    this.played = 0;
-    this.recorded = [];        // [{at (context seconds), samples}]: what was played, for measuring
-  }
-
-  resume() { return this.context.resume(); }
-
-  add(frame) {
-    let m = this.members.get(frame.member);
-    if (!m) {
-      m = { offsetMs: this.context.currentTime * 1000 - frame.time_ms, delayMs: kStartDelayMs, decoder: null, pending: [] };
-      m.decoder = new AudioDecoder({
-        output: (data) => this.play(m, data),
-        error: (e) => console.warn('voice decoder:', e.message),
-      });
-      m.decoder.configure({ codec: 'opus', sampleRate: 48000, numberOfChannels: 1 });
-      this.members.set(frame.member, m);
-    }
-    m.pending.push(frame.time_ms);  // placed when decoded, on the clock as it is then
-    m.decoder.decode(new EncodedAudioChunk({ type: 'key', timestamp: frame.time_ms * 1000, data: frame.opus }));
-  }
-
-  play(m, data) {
-    const timeMs = m.pending.shift();
-    const atMs = timeMs === undefined ? null : playoutMs(timeMs, m.offsetMs, m, this.context.currentTime * 1000);
-    const samples = new Float32Array(data.numberOfFrames);
-    data.copyTo(samples, { planeIndex: 0, format: 'f32-planar' });
-    const buffer = this.context.createBuffer(1, samples.length, data.sampleRate);
-    buffer.copyToChannel(samples, 0);
-    data.close();
-    if (atMs === null) {
-      ++this.late;
-      return;
-    }
-    const at = atMs / 1000;
-    const source = this.context.createBufferSource();
-    source.buffer = buffer;
-    source.connect(this.context.destination);
-    source.start(at);
-    ++this.played;
-    this.recorded.push({ at, samples });
-  }
-
-  // When `member`'s moment `timeMs` plays, in performance.now() milliseconds; null before its voice.
-  localTime(member, timeMs) {
-    const m = this.members.get(member);
-    if (!m) return null;
-    const contextSeconds = (timeMs + m.offsetMs + m.delayMs) / 1000;
-    return performance.now() + (contextSeconds - this.context.currentTime) * 1000;
-  }
-
-  // Everything played so far mixed into one track (48 kHz) from the first sound on: for tests.
-  recording() {
-    if (!this.recorded.length) return { sampleRate: 48000, samples: new Float32Array() };
-    const start = Math.min(...this.recorded.map((r) => r.at));
-    const end = Math.max(...this.recorded.map((r) => r.at + r.samples.length / 48000));
-    const out = new Float32Array(Math.ceil((end - start) * 48000));
-    for (const r of this.recorded) {
-      const at = Math.round((r.at - start) * 48000);
-      for (let i = 0; i < r.samples.length && at + i < out.length; ++i) out[at + i] += r.samples[i];
-    }
-    return { sampleRate: 48000, samples: out };
+  answered({ id, bytes, error }) {
+    const r = this.requests.get(id);
+    this.requests.delete(id);
+    if (error) r?.reject(new Error(error));
+    else r?.resolve(bytes);
   }
 
   close() {
-    for (const m of this.members.values()) if (m.decoder.state !== 'closed') m.decoder.close();
-    this.context.close();
+    if (this.link.session !== this) return;
+    this.link.session = null;
+    this.link.worker.postMessage({ op: 'close' });
+    for (const r of this.requests.values()) r.reject(new Error('left the call'));
+    this.requests.clear();
+  }
+}
+
+export class CallLink {
+  // `onLevel(db)`: the microphone's level, ten times a second, before and during the call.
+  constructor({ onLevel } = {}) {
+    this.worker = new Worker(new URL('./call_worker.js', import.meta.url), { type: 'module' });
+    this.worker.onmessage = (e) => this.fromWorker(e.data);
+    this.onLevel = onLevel;
+    // Shared rings need a cross-origin isolated page (COOP and COEP).
+    this.shared = !!globalThis.crossOriginIsolated && typeof SharedArrayBuffer === 'function';
+    this.session = null;
+    this.status = { voiceSent: 0, voiceReceived: 0, encoderErrors: 0, decoderErrors: 0 };
+    this.stats = { played: 0, late: 0, dropped: 0, nowMs: 0, members: new Map() };
+    this.reason = new Promise((resolve) => (this.ready = resolve));
+    this.audio = voiceUnsupported() ? null : this.buildAudio();
+  }
+
+  // One context at Opus's 48 kHz when the engine allows it with a microphone, else the device's
+  // own rate (the worklets resample).
+  async buildAudio() {
+    const context = (this.context = new AudioContext({ sampleRate: 48000 }));
+    const base = new URL('.', import.meta.url);
+    await Promise.all([context.audioWorklet.addModule(new URL('capture_worklet.js', base)), context.audioWorklet.addModule(new URL('playout_worklet.js', base))]);
+    this.playout = new AudioWorkletNode(context, 'inkwire-playout', { numberOfInputs: 0, outputChannelCount: [1] });
+    this.playout.connect(context.destination);
+    this.playout.port.onmessage = (e) => this.fromPlayout(e.data);
+    if (this.shared) {
+      const ring = new SharedArrayBuffer(PacketRing.bytes(kPlayoutSlots, kPacketSamples));
+      this.playout.port.postMessage({ ring, slots: kPlayoutSlots, maxSamples: kPacketSamples });
+      this.worker.postMessage({ op: 'rings', playout: ring, slots: kPlayoutSlots, maxSamples: kPacketSamples });
+    } else {
+      const toPlayout = new MessageChannel();
+      this.playout.port.postMessage({ worker: toPlayout.port1 }, [toPlayout.port1]);
+      this.worker.postMessage({ op: 'ports', playout: toPlayout.port2 }, [toPlayout.port2]);
+    }
+    context.resume().catch(() => {});
+    return context;
+  }
+
+  // The microphone's track into the capture worklet, whose chunks go straight to the worker.
+  async capture(track) {
+    const context = await this.audio;
+    if (!context) return;
+    let source;
+    try {
+      source = context.createMediaStreamSource(new MediaStream([track]));
+    } catch (error) {
+      throw new Error(`this browser cannot read the microphone into its audio graph (${error.message})`);
+    }
+    const node = (this.captureNode = new AudioWorkletNode(context, 'inkwire-capture', { numberOfOutputs: 1, outputChannelCount: [1] }));
+    node.port.onmessage = (e) => this.onLevel?.(e.data.level);
+    if (this.shared) {
+      const ring = new SharedArrayBuffer(SampleRing.bytes(kCaptureRingFrames));
+      node.port.postMessage({ ring });
+      this.worker.postMessage({ op: 'rings', capture: ring });
+    } else {
+      const toWorker = new MessageChannel();
+      node.port.postMessage({ worker: toWorker.port1 }, [toWorker.port1]);
+      this.worker.postMessage({ op: 'ports', capture: toWorker.port2 }, [toWorker.port2]);
+    }
+    source.connect(node);
+    // Pulled by the graph through a silent gain: a capture node must reach the destination to run.
+    const silent = context.createGain();
+    silent.gain.value = 0;
+    node.connect(silent).connect(context.destination);
+    this.source = source;
+  }
+
+  // A session in the worker; `clockStartMs` (performance.now() of this page) is the call clock's zero.
+  open(url, session, token, name) {
+    this.session?.close();
+    this.playout?.port.postMessage({ reset: true });
+    this.clockStartMs = performance.now();
+    this.session = new WorkerSession(this);
+    this.worker.postMessage({ op: 'open', url, session, token, name, clockOrigin: performance.timeOrigin + this.clockStartMs });
+    this.context?.resume().catch(() => {});
+    return this.session;
+  }
+
+  // The call's clock (ms since open()), shared with the worker's voice stamps.
+  now() { return Math.round(performance.now() - this.clockStartMs); }
+
+  set sending(on) { this.worker.postMessage({ op: 'sending', on }); }
+
+  // The worker's and the playout's figures as they are now (voiceStats and status refreshed).
+  // `reset`: the longest gap between packets is measured afresh from here.
+  async figures(reset = false) {
+    await this.audio;
+    const asked = (target, message, arrived) => new Promise((resolve) => {
+      this[arrived] = resolve;
+      target.postMessage(message);
+    });
+    await Promise.all([asked(this.worker, { op: 'status', reset }, 'statusArrived'), this.playout && asked(this.playout.port, { stats: true }, 'statsArrived')]);
+    return { ...this.voiceStats, ...this.status };
+  }
+
+  fromWorker(d) {
+    if (d.op === 'ready') this.ready(d.reason);
+    else if (d.op === 'status') {
+      this.status = d;
+      this.statusArrived?.();
+      this.statusArrived = null;
+    }
+    else if (d.op === 'asset') this.session?.answered(d);
+    else if (d.op === 'event') this.session?.dispatchEvent(new CustomEvent(d.type, { detail: d.detail }));
+  }
+
+  fromPlayout(d) {
+    if (d.stats) {
+      this.stats = { ...d.stats, members: new Map(d.stats.members), at: performance.now() };
+      this.statsArrived?.();
+      this.statsArrived = null;
+    }
+    if (d.recording) this.recordingArrived?.({ sampleRate: d.sampleRate, samples: d.recording });
+  }
+
+  // What this member heard: {played, late, dropped, delayMs} (delayMs the largest member's delay).
+  get voiceStats() {
+    const delays = [...this.stats.members.values()].map((m) => m.delayMs);
+    return { played: this.stats.played, late: this.stats.late, dropped: this.stats.dropped, delayMs: delays.length ? Math.max(...delays) : 0 };
+  }
+
+  // When `member`'s moment `timeMs` plays, in this page's performance.now() ms; null before its voice.
+  localTime(member, timeMs) {
+    const m = this.stats.members.get(member);
+    if (!m || !this.context) return null;
+    return performance.now() + (timeMs + m.offsetMs + m.delayMs - this.context.currentTime * 1000);
+  }
+
+  // Tests listen to what was played: record() from now, then recording() gives it (mono).
+  async record() {
+    await this.audio;
+    this.playout?.port.postMessage({ record: true });
+  }
+  async recording() {
+    await this.audio;
+    if (!this.playout) return { sampleRate: 48000, samples: new Float32Array() };
+    return new Promise((resolve) => {
+      this.recordingArrived = resolve;
+      this.playout.port.postMessage({ recording: true });
+    });
+  }
+
+  close() {
+    this.session?.close();
+    this.worker.terminate();
+    this.source?.disconnect();
+    this.context?.close();
   }
 }

@@ -3,16 +3,19 @@
 // and the neutral photo (taken from the preview, retaken at will). In the call: a grid of every
 // member drawn from codes alone (each member's neutral photo deformed by the expression the
 // server reads from their camera, or their mouth from their voice), the active speakers framed,
-// names under the tiles; mute, camera off, leave. Voice is Opus through WebCodecs (call/voice.js),
-// the face goes as small JPEG crops the server analyses (call/camera.js). A member without a
-// camera, a microphone, permission or WebCodecs joins as a listener and says why.
+// names under the tiles; mute, camera off, leave. The connection and the voice live off the page's
+// thread (call/voice.js: a worker with the WebSocket and WebCodecs' Opus, audio worklets that
+// capture and play), the face goes as small JPEG crops the server analyses (call/camera.js). A
+// member without a camera, a microphone, permission or what its engine lacks joins as a listener
+// and says why (`reason`).
 // Attributes: server, session, token, name, muted, camera ("off"). Sets `joined` once in the
-// call; property `members`: [{name, speaking, expression}]; method join() does what the Join
-// button does, leave() what Leave does; counters voiceSent and camera.sent say what went out.
+// call; properties `members`: [{name, speaking, expression}], `voiceStats` ({played, late,
+// dropped, delayMs}: what it heard) and `reason` ('' or why this engine cannot carry its voice);
+// method join() does what the Join button does, leave() what Leave does; counters voiceSent and
+// camera.sent say what went out.
 import { kExpressionNames, parseLandmarks, parseTemplates } from '../common/face.js';
 import { CameraSender, photoOf } from '../call/camera.js';
-import { VoicePlayer, VoiceSender, voiceUnsupported } from '../call/voice.js';
-import { Session } from '../net/session.js';
+import { CallLink, voiceUnsupported } from '../call/voice.js';
 import { FaceReconstructor } from '../render/face/face_reconstructor.js';
 import { loadTweenShaders } from '../render/tween/tween_view.js';
 import { decodeImage, SessionElement } from './session_element.js';
@@ -53,6 +56,18 @@ const template = `
 
 const kGap = 6, kCaption = 20;
 
+// What a person would say of a member under its tile: listening (neither camera nor
+// microphone), muted, camera off, no face found (a camera on that shows none), speaking.
+export function tileState(m, speaking) {
+  if (!m.camera && !m.microphone) return ', listening';
+  const said = [];
+  if (!m.microphone) said.push('muted');
+  if (!m.camera) said.push('camera off');
+  else if (!m.face_found) said.push('no face found');
+  if (speaking) said.push('speaking');
+  return said.length ? `, ${said.join(', ')}` : '';
+}
+
 export class InkwireCall extends SessionElement {
   static observedAttributes = [...SessionElement.observedAttributes, 'name'];
 
@@ -70,6 +85,9 @@ export class InkwireCall extends SessionElement {
     this.roster = { you: 0, members: [] };
   }
 
+  get voiceStats() { return this.link?.voiceStats ?? { played: 0, late: 0, dropped: 0, delayMs: 0 }; }
+  get voiceSent() { return this.link?.status.voiceSent ?? 0; }
+
   get members() {
     return this.roster.members.map((m) => ({ name: m.name, speaking: m.speaking, expression: kExpressionNames[this.faces.get(m.member)?.code ?? 0] }));
   }
@@ -81,17 +99,31 @@ export class InkwireCall extends SessionElement {
     this.muted = this.hasAttribute('muted');
     this.cameraOff = this.getAttribute('camera') === 'off';
     this.reason = voiceUnsupported();
+    this.hasVoice = false;
+    this.link?.close();
+    // The worker and the audio graph are made while the person is in pre-join.
+    const link = (this.link = new CallLink({ onLevel: (db) => (this.level.value = db) }));
     try {
       this.media = await navigator.mediaDevices.getUserMedia({ video: !this.cameraOff, audio: !this.reason });
     } catch (error) {
       this.media = null;
-      this.reason = `no camera or microphone (${error.message}): you will join as a listener`;
+      this.reason ||= `no camera or microphone (${error.message}): you will join as a listener`;
     }
-    if (this.reason) this.message.textContent = this.reason;
     const video = this.media?.getVideoTracks()[0], audio = this.media?.getAudioTracks()[0];
     if (video) this.preview.srcObject = new MediaStream([video]);
-    if (audio) this.voice = new VoiceSender(audio, { onLevel: (db) => (this.level.value = db), onPacket: (bytes) => this.sendVoice(bytes) });
     this.preview.hidden = !video;
+    this.reason ||= await link.reason;
+    if (audio && !this.reason) {
+      try {
+        await link.capture(audio);
+        this.hasVoice = true;
+        // The microphone may come after a quick Join: the call hears of it now.
+        if (this.hasAttribute('joined')) this.publish();
+      } catch (error) {
+        this.reason = `${error.message}: you will join without voice`;
+      }
+    }
+    if (this.reason) this.message.textContent = this.reason;
   }
 
   async takePhoto() {
@@ -101,33 +133,28 @@ export class InkwireCall extends SessionElement {
     if (this.session && this.hasAttribute('joined')) this.session.send({ type: 'neutral-photo', jpeg: this.photo });
   }
 
-  now() { return Math.round(performance.now() - this.clockStart); }
+  now() { return this.link.now(); }
 
   join() {
     if (this.session) return;
     const server = this.getAttribute('server') ?? `${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/ws`;
     const name = this.nameInput.value.trim() || this.getAttribute('name') || 'guest';
-    const session = (this.session = new Session(server, this.getAttribute('session') ?? '', this.getAttribute('token') ?? '', name.slice(0, 64)));
-    this.player = new VoicePlayer();
-    this.player.resume();
+    const session = (this.session = this.link.open(server, this.getAttribute('session') ?? '', this.getAttribute('token') ?? '', name.slice(0, 64)));
     session.addEventListener('error', (e) => this.fail(e.detail));
     session.addEventListener('refused', (e) => this.refused(e.detail));
     session.addEventListener('snapshot', () => this.entered(session), { once: true });
     session.addEventListener('roster', (e) => this.updateRoster(session, e.detail));
-    session.addEventListener('voice-frame', (e) => this.player.add(e.detail));
     session.addEventListener('face-region', (e) => { if (this.camera) this.camera.region = e.detail; });
     session.addEventListener('member-face', (e) => this.faceArrived(e.detail));
     session.addEventListener('close', () => { if (this.session === session) this.leave(); });
   }
 
   async entered(session) {
-    this.clockStart = performance.now();
     if (this.preview.videoWidth && !this.photo) await this.takePhoto();
     if (this.session !== session) return;
     if (this.photo) session.send({ type: 'neutral-photo', jpeg: this.photo });
     if (this.preview.videoWidth) this.camera = new CameraSender(this.preview, (m) => this.session?.send(m), () => this.now());
     if (this.camera) this.camera.off = this.cameraOff;
-    if (this.voice) this.voice.sending = !this.muted;
     this.publish();
     this.prejoin.hidden = true;
     this.grid.hidden = this.controls.hidden = false;
@@ -136,24 +163,19 @@ export class InkwireCall extends SessionElement {
     this.loop();
   }
 
-  sendVoice(bytes) {
-    if (!this.session || !this.hasAttribute('joined') || this.muted) return;
-    // Stamped with when its first sample was heard: a packet is sent once its frame has ended.
-    this.session.send({ type: 'voice-frame', member: 0, time_ms: Math.max(0, this.now() - this.voice.frameMs), opus: bytes });
-    this.voiceSent = (this.voiceSent ?? 0) + 1;
-  }
-
+  // What goes out, said to the call and done: voice flows only while it says a microphone is on.
   publish() {
-    this.session?.send({ type: 'publish', camera: !!this.camera && !this.cameraOff, microphone: !!this.voice && !this.muted });
+    const microphone = !!this.hasVoice && !this.muted;
+    if (this.link) this.link.sending = microphone && !!this.session;
+    this.session?.send({ type: 'publish', camera: !!this.camera && !this.cameraOff, microphone });
     this.muteButton.textContent = this.muted ? 'Unmute' : 'Mute';
     this.cameraButton.textContent = this.cameraOff ? 'Camera on' : 'Camera off';
-    this.muteButton.disabled = !this.voice;
+    this.muteButton.disabled = !this.hasVoice;
     this.cameraButton.disabled = !this.camera;
   }
 
   setMuted(muted) {
     this.muted = muted;
-    if (this.voice) this.voice.sending = !muted;
     this.publish();
   }
 
@@ -164,15 +186,11 @@ export class InkwireCall extends SessionElement {
   }
 
   leave() {
-    if (this.session) {
-      try { this.session.send({ type: 'leave' }); } catch {}
-      this.session.close();
-    }
+    this.session?.close();  // says leave first, in the worker
     this.session = null;
+    if (this.link) this.link.sending = false;
     this.camera?.stop();
     this.camera = null;
-    this.player?.close();
-    this.player = null;
     this.faces.clear();
     this.roster = { you: 0, members: [] };
     this.captions.textContent = '';
@@ -183,8 +201,9 @@ export class InkwireCall extends SessionElement {
 
   disconnectedCallback() {
     this.leave();
-    this.voice?.stop();
-    this.voice = null;
+    this.link?.close();
+    this.link = null;
+    this.hasVoice = false;
     for (const track of this.media?.getTracks() ?? []) track.stop();
     super.disconnectedCallback();
   }
@@ -218,7 +237,7 @@ export class InkwireCall extends SessionElement {
 
   // A face comes when the sound of its moment plays, so the mouth moves with the voice.
   faceArrived(m) {
-    const due = this.player?.localTime(m.member, m.time_ms);
+    const due = this.link?.localTime(m.member, m.time_ms);
     const show = () => {
       const entry = this.faces.get(m.member) ?? this.faces.set(m.member, { code: 0 }).get(m.member);
       if (m.expression.code >= kExpressionNames.length) return;
@@ -256,9 +275,10 @@ export class InkwireCall extends SessionElement {
     gl.enable(gl.SCISSOR_TEST);
     tiles.forEach((m, i) => {
       const x = kGap + (i % cols) * (w + kGap), top = kGap + Math.floor(i / cols) * (h + kGap + kCaption * ratio), y = height - top - h;
-      const frame = m.speaking ? 4 : 1;
+      // Green follows the voice alone: only a member with a live microphone can be speaking.
+      const speaking = m.speaking && m.microphone, frame = speaking ? 4 : 1;
       gl.scissor(x - frame, y - frame, w + 2 * frame, h + 2 * frame);
-      gl.clearColor(...(m.speaking ? [0.2, 0.75, 0.35, 1] : [0.35, 0.35, 0.38, 1]));
+      gl.clearColor(...(speaking ? [0.2, 0.75, 0.35, 1] : [0.35, 0.35, 0.38, 1]));
       gl.clear(gl.COLOR_BUFFER_BIT);
       gl.scissor(x, y, w, h);
       gl.clearColor(0.12, 0.12, 0.14, 1);
@@ -268,8 +288,7 @@ export class InkwireCall extends SessionElement {
         const scale = Math.min(w / face.width, h / face.height), fw = Math.round(face.width * scale), fh = Math.round(face.height * scale);
         face.draw(performance.now() / 1000, [width, height], [x + Math.trunc((w - fw) / 2), y + Math.trunc((h - fh) / 2), fw, fh]);
       }
-      const muted = !m.microphone ? ', muted' : '', off = !m.camera ? ', camera off' : !m.face_found ? ', no face found' : '';
-      captions.push({ text: `${m.name}${m.member === this.roster.you ? ' (you)' : ''}${muted}${off}`, speaking: m.speaking,
+      captions.push({ text: `${m.name}${m.member === this.roster.you ? ' (you)' : ''}${tileState(m, speaking)}`, speaking,
                       left: x / ratio, top: (top + h + 2) / ratio, width: w / ratio });
     });
     gl.disable(gl.SCISSOR_TEST);

@@ -5,7 +5,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { test } from 'node:test';
 
-import { kDelayMarginMs, kMaxDelayMs, kStartDelayMs, playoutMs } from '../call/voice.js';
+import { kDelayMarginMs, kMaxDelayMs, kStartDelayMs, playoutMs } from '../call/playout.js';
 
 test('a late packet raises the delay and plays, one beyond the largest delay is dropped, as in C++', () => {
   const golden = JSON.parse(readFileSync(new URL('../../../tests/golden/warp-vectors.json', import.meta.url))).playout;
