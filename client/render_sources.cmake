@@ -1,6 +1,6 @@
 # The rendering library's sources that the native build and the browser's WebAssembly module
 # (client/web/module) both compile: one list, so the two draw from the same code (SPEC W5).
-# Paths relative to client/. The native build adds its contexts and the faces.
+# Paths relative to client/. The native build adds its contexts and video output.
 set(INKWIRE_SHARED_RENDER_SOURCES
   gl/canvas.cpp
   gl/gl.cpp
@@ -10,6 +10,9 @@ set(INKWIRE_SHARED_RENDER_SOURCES
   render/comic/shade_maps.cpp
   render/coverage.cpp
   render/default_renderer.cpp
+  render/face/comic_photo.cpp
+  render/face/conference_view.cpp
+  render/face/face_reconstructor.cpp
   render/gpu_mesh.cpp
   render/hatching/hatch_tones.cpp
   render/hatching/hatching_renderer.cpp
@@ -26,6 +29,7 @@ set(INKWIRE_SHARED_RENDER_SOURCES
   render/painterly/palette.cpp
   render/painterly/rect_image.cpp
   render/painterly/reference_capture.cpp
+  render/painterly/video_painter.cpp
   render/painterly/wash_map.cpp
   render/scene_object.cpp
   render/sketch/importance.cpp
@@ -48,6 +52,11 @@ set(INKWIRE_SHARED_COMMON_SOURCES
   camera.cpp
   distance_field.cpp
   edge_chains.cpp
+  face/expression.cpp
+  face/expression_templates.cpp
+  face/face_mesh.cpp
+  face/face_shape.cpp
+  face/landmarks_file.cpp
   glb_mesh.cpp
   image.cpp
   lod.cpp

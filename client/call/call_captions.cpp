@@ -4,16 +4,6 @@
 
 namespace inkwire {
 
-std::string caption_of(const CallGrid::Tile& t) {
-  std::string text = t.name + (t.you ? " (you)" : "");
-  if (t.member == 0) return text;
-  if (!t.camera && !t.microphone && !t.has_face) return text + ", listening";
-  if (!t.microphone) text += ", muted";
-  if (!t.camera) text += ", camera off";
-  else if (!t.face_found) text += t.you ? ": no face found in your camera picture" : ": no face found";
-  return text;
-}
-
 void draw_call_captions(Image& frame, const std::vector<CallGrid::Tile>& tiles) {
   cv::Mat pixels(frame.height, frame.width, CV_8UC4, frame.pixels.data());
   for (const CallGrid::Tile& t : tiles) {

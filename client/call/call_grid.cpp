@@ -13,6 +13,16 @@ constexpr int kGap = 6, kCaption = 22;  // pixels between tiles; under each tile
 
 }  // namespace
 
+std::string caption_of(const CallGrid::Tile& t) {
+  std::string text = t.name + (t.you ? " (you)" : "");
+  if (t.member == 0) return text;
+  if (!t.camera && !t.microphone) return text + ", listening";
+  if (!t.microphone) text += ", muted";
+  if (!t.camera) text += ", camera off";
+  else if (!t.face_found) text += t.you ? ": no face found in your camera picture" : ": no face found";
+  return text;
+}
+
 void CallGrid::update(const protocol::Roster& roster, const std::map<uint16_t, std::vector<std::filesystem::path>>& files) {
   roster_ = roster;
   for (const auto& member : roster.members) {
@@ -41,7 +51,9 @@ void CallGrid::set_style(const std::string& renderer, const std::vector<std::str
 }
 
 void CallGrid::set_face(const protocol::MemberFace& face) {
-  if (const auto it = views_.find(face.member); it != views_.end()) it->second->set_expression(face.expression);
+  // Codes this client does not know (a newer server) are ignored: the face keeps its expression.
+  const auto state = protocol::expression_state(face.expression);
+  if (const auto it = views_.find(face.member); it != views_.end() && state) it->second->set_expression(*state);
 }
 
 std::optional<ExpressionState> CallGrid::expression(uint16_t member) const {
@@ -54,7 +66,8 @@ void CallGrid::draw(glm::ivec2 viewport, double time_seconds, ConferenceView* sp
   tiles_.clear();
   if (speaker) tiles_.push_back({.member = 0, .name = "speaker", .has_face = true});
   for (const auto& m : roster_.members)
-    tiles_.push_back({.member = m.member, .name = m.name, .speaking = m.speaking, .camera = m.camera, .microphone = m.microphone,
+    // Framed as speaking by the voice alone: only a live microphone speaks.
+    tiles_.push_back({.member = m.member, .name = m.name, .speaking = m.speaking && m.microphone, .camera = m.camera, .microphone = m.microphone,
                       .face_found = m.face_found, .you = m.member == roster_.you, .has_face = views_.count(m.member) > 0});
   if (tiles_.empty()) return;
   // A call is a dark room whatever the style's backdrop: the tiles and their captions read on it.

@@ -13,7 +13,7 @@
 
 #include <glm/vec4.hpp>
 
-#include "client/viewer/conference_view.hpp"
+#include "client/render/face/conference_view.hpp"
 #include "protocol/messages.hpp"
 
 namespace inkwire {
@@ -52,5 +52,9 @@ class CallGrid {
   std::vector<std::string> settings_;
   std::vector<Tile> tiles_;
 };
+
+// The words under a tile, as a person would say them: the name, "(you)", and "listening" (neither
+// camera nor microphone), "muted", "camera off" or "no face found"; natively and in the browser.
+std::string caption_of(const CallGrid::Tile& tile);
 
 }  // namespace inkwire

@@ -45,7 +45,7 @@ void SessionView::update(const protocol::Snapshot& state, const std::vector<std:
                            : !state.product.directions.empty()              ? update_product(state)
                                                                            : update_object(state, asset_files);
   update_style(state, new_content);
-  if (face_) face_->set_expression(state.expression);
+  if (const auto expression = protocol::expression_state(state.expression); face_ && expression) face_->set_expression(*expression);
 }
 
 bool SessionView::update_object(const protocol::Snapshot& state, const std::vector<std::filesystem::path>& asset_files) {

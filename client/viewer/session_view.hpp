@@ -14,7 +14,7 @@
 #include "client/render/backdrop.hpp"
 #include "client/render/renderer.hpp"
 #include "client/render/scene_object.hpp"
-#include "client/viewer/conference_view.hpp"
+#include "client/render/face/conference_view.hpp"
 #include "client/viewer/turntable_view.hpp"
 #include "protocol/messages.hpp"
 

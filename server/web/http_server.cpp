@@ -24,7 +24,6 @@
 namespace inkwire {
 const std::map<std::string, std::string_view>& web_client_files();    // generated from client/web/
 const std::map<std::string, std::string_view>& web_shader_files();    // client/shaders/tween/blend.*, as shaders/tween/...
-const std::map<std::string, std::string_view>& face_template_files();  // generated from common/face/*.json
 }
 
 namespace inkwire::server {
@@ -316,10 +315,6 @@ asio::awaitable<void> HttpServer::serve(ByteStream accepted) {
     co_await reply(response(200, "OK", "text/html; charset=utf-8",
                             element_page("inkwire-call", session->name(), request.header("host"), "Put this call on your page", server_.tls() != nullptr),
                             kIsolatedPage));
-    co_return;
-  }
-  if (path == "/face/expression_templates.json") {
-    co_await reply(response(200, "OK", content_type(path), std::string(face_template_files().at("expression_templates.json"))));
     co_return;
   }
   if (path == "/") {

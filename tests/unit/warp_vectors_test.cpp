@@ -1,6 +1,6 @@
-// What the browser's turntable, faces and call voice compute in JS as the C++ client does (issue:
+// What the browser's turntable and call voice compute in JS as the C++ client does (issue:
 // one implementation of each algorithm; the warps stay in JS for the element's first-view budget,
-// docs/benchmarks.md): the C++ answers for fixed inputs, written to tests/golden/warp-vectors.json
+// docs/benchmarks.md; faces are drawn by the C++ itself, compiled into the browser's module): the C++ answers for fixed inputs, written to tests/golden/warp-vectors.json
 // and checked by client/web/test/ (warp, turntable_pose and voice tests). A change to either side fails one of the two until
 // both agree and the file is approved again (INKWIRE_APPROVE_GOLDEN=1).
 #include <algorithm>
@@ -22,11 +22,8 @@
 #include "client/viewer/photo_fetch.hpp"
 #include "client/viewer/turntable_view.hpp"
 #include "common/distance_field.hpp"
-#include "common/face/expression_templates.hpp"
-#include "common/face/face_mesh.hpp"
 #include "common/tween/view_sphere.hpp"
 #include "common/tween/warp_mesh.hpp"
-#include "synthetic_face.hpp"
 
 namespace inkwire {
 namespace {
@@ -216,41 +213,6 @@ nlohmann::json photo_fetch_cases() {
   return {{"directions", directions}, {"cells", cells}, {"first_height", first_height}, {"level_heights", level_heights}, {"steps", steps}};
 }
 
-// The mesh a face is redrawn over, for a closed mouth (cavity triangles) and an open one, rolled
-// and near the photo's edge (anchors left out), and the cavity colour over a patterned photo.
-nlohmann::json face_mesh_cases() {
-  nlohmann::json cases = nlohmann::json::array();
-  for (const auto& [mouth_open, centre, roll] : {std::tuple{0.0f, glm::vec2(160, 120), 0.2f}, {0.3f, glm::vec2(100, 90), -0.1f}}) {
-    test::FacePose pose;
-    pose.mouth_open = mouth_open;
-    const FaceLandmarks landmarks = test::synthetic_face(pose, centre, 60, roll);
-    const FaceMesh m = build_face_mesh(landmarks, shipped_templates(), 320, 240);
-    Image photo(320, 240);
-    for (int y = 0; y < photo.height; ++y)
-      for (int x = 0; x < photo.width; ++x)
-        for (int c = 0; c < 4; ++c) photo.at(x, y)[c] = uint8_t((x * 7 + y * 13 + c * 50) % 256);
-    nlohmann::json in = nlohmann::json::array(), read = nlohmann::json::array(), drawn = nlohmann::json::array();
-    for (const glm::vec2& p : landmarks) in.push_back({p.x, p.y});
-    for (const ControlPoint& p : m.mesh.points) read.push_back({p[0].x, p[0].y}), drawn.push_back({p[1].x, p[1].y});
-    const glm::u8vec4 cavity = cavity_colour(photo, landmarks);
-    cases.push_back({{"landmarks", in}, {"width", 320}, {"height", 240}, {"read", read}, {"drawn", drawn}, {"triangles", m.mesh.triangles},
-                     {"landmark_of", m.landmark_of}, {"cavity_colour", {cavity.r, cavity.g, cavity.b}}});
-  }
-  return cases;
-}
-
-nlohmann::json face_cases() {
-  const FaceLandmarks neutral = test::synthetic_face(test::FacePose{}, {160, 120}, 60, 0.2f);
-  nlohmann::json points = nlohmann::json::array(), moved = nlohmann::json::array();
-  for (const glm::vec2& p : neutral) points.push_back({p.x, p.y});
-  for (const auto& [expression, intensity] : {std::pair{Expression::Smile, 255}, {Expression::Surprise, 128}, {Expression::VisemeOpen, 200}, {Expression::WinkLeft, 40}}) {
-    nlohmann::json out = nlohmann::json::array();
-    for (const glm::vec2& p : apply_expression(neutral, shipped_templates(), {expression, uint8_t(intensity)})) out.push_back({p.x, p.y});
-    moved.push_back({{"code", int(expression)}, {"intensity", intensity}, {"landmarks", out}});
-  }
-  return {{"neutral", points}, {"expressions", moved}, {"meshes", face_mesh_cases()}};
-}
-
 // A visitor's view shared as a pose (presenter mode) and a shared pose's zoom held to the range.
 nlohmann::json turntable_cases() {
   nlohmann::json poses = nlohmann::json::array();
@@ -283,7 +245,6 @@ nlohmann::json playout_cases() {
 TEST(WarpVectorsTest, GoldenVectorsForTheWebClientAreTheseNumbers) {
   const nlohmann::json golden = {{"delaunay", delaunay_cases()}, {"warp_meshes", warp_mesh_cases()}, {"distance_field", distance_case()},
                                  {"matte_samples", matte_cases()}, {"locate_view", locate_cases()}, {"photo_fetch", photo_fetch_cases()},
-                                 {"faces", face_cases()},
                                  {"turntable", turntable_cases()}, {"playout", playout_cases()}};
   const std::filesystem::path file = std::filesystem::path(INKWIRE_GOLDEN_DIR) / "warp-vectors.json";
   if (const char* approve = std::getenv("INKWIRE_APPROVE_GOLDEN"); approve && std::string(approve) == "1") {

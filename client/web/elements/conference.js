@@ -1,14 +1,12 @@
 // <inkwire-conference server="ws://HOST:PORT/ws" session="NAME">: a viewer of a conference
-// session (SPEC W3): the speaker's neutral photo and its landmarks once, then expression codes
-// only (8 bytes each), the photo deformed by each code's template as the C++ client deforms it
-// (render/face/face_reconstructor.js). Sized by its container at the device pixel ratio; the
-// photo fitted and centred. Property `expression` ({code, intensity}); attribute `loaded` once
-// the photo is there.
-import { parseLandmarks, parseTemplates, kExpressionNames } from '../common/face.js';
+// session (SPEC W3, F16): the speaker's neutral photo and its landmarks once, then expression codes
+// only (8 bytes each), the photo deformed by each code's template and drawn in the session's style
+// by the native C++ (ConferenceView, compiled into the module: client/web/module/face_module.cpp),
+// as the native client draws it. Sized by its container at the device pixel ratio; the photo
+// fitted and centred. Property `expression` ({code, name, intensity}); attribute `loaded` once the
+// face is drawn.
 import { AssetKind } from '../net/session.js';
-import { FaceReconstructor } from '../render/face/face_reconstructor.js';
-import { loadTweenShaders } from '../render/tween/tween_view.js';
-import { decodeImage, SessionElement } from './session_element.js';
+import { lendBytes, loadRenderModule, SessionElement } from './session_element.js';
 
 const template = `
 <style>
@@ -21,7 +19,7 @@ const template = `
 export class InkwireConference extends SessionElement {
   constructor() { super(template); }
 
-  get expression() { return this.face ? { code: this.face.code, intensity: this.face.intensity, name: kExpressionNames[this.face.code] } : null; }
+  get expression() { return this.view ? JSON.parse(this.view.expressionJson()) : null; }
 
   connectedCallback() {
     if (!this.hasAttribute('aria-label')) this.setAttribute('aria-label', `${this.getAttribute('session') ?? 'Conference'}: the speaker's face`);
@@ -29,28 +27,37 @@ export class InkwireConference extends SessionElement {
   }
 
   start() {
-    this.face = null;
     this.removeAttribute('loaded');
+    this.faceShown = false;
     const session = this.openSession();
-    let pending = null;  // a code that came before the photo
-    session.addEventListener('state', (e) => {
-      if (e.detail.type !== 'expression-code') return;
-      if (this.face) this.show(e.detail);
-      else pending = e.detail;
+    const module = (this.moduleReady ??= loadRenderModule(this.serverUrl(), this.canvas).then(({ module }) => {
+      this.view = new module.FaceView('!canvas');
+      const reason = this.view.error();
+      if (reason) throw new Error(reason);
+      return module;
+    }));
+    module.catch((error) => this.fail(error.message));
+    let pending = null;  // a code that came before the face
+    session.addEventListener('state', async (e) => {
+      if (e.detail.type === 'style-change') {
+        await module;
+        this.showStyle(e.detail);
+      } else if (e.detail.type === 'expression-code') {
+        if (this.faceShown) this.show(e.detail);
+        else pending = e.detail;
+      }
     });
     session.addEventListener('snapshot', async (e) => {
       try {
         const snapshot = e.detail;
         const photo = snapshot.assets.find((a) => a.kind === AssetKind.image), marks = snapshot.assets.find((a) => a.kind === AssetKind.landmarks);
         if (!photo || !marks) throw new Error('the conference has no speaker yet (no photo and landmarks)');
-        const [image, landmarks, templates, shaders] = await Promise.all([
-          session.fetchAsset(photo).then(decodeImage),
-          session.fetchAsset(marks).then((b) => parseLandmarks(JSON.parse(new TextDecoder().decode(b)))),
-          fetch(new URL('../face/expression_templates.json', import.meta.url)).then((r) => r.json()).then(parseTemplates),
-          loadTweenShaders(),
-        ]);
+        const [bytes, landmarks, loaded] = await Promise.all([session.fetchAsset(photo), session.fetchAsset(marks), module]);
         if (this.session !== session) return;
-        this.face = new FaceReconstructor(this.webgl(), image.data, image.width, image.height, landmarks, templates, shaders);
+        const reason = lendBytes(loaded, bytes, (address, size) => this.view.setFace(address, size, new TextDecoder().decode(landmarks)));
+        if (reason) throw new Error(reason);
+        this.showStyle(snapshot.style);
+        this.faceShown = true;
         this.show(pending ?? snapshot.expression);
         this.setAttribute('loaded', '');
         this.dispatchEvent(new Event('load'));
@@ -60,22 +67,28 @@ export class InkwireConference extends SessionElement {
     });
   }
 
-  // A code this version does not know is ignored, as the C++ client ignores it.
-  show(code) {
-    if (code.code >= kExpressionNames.length) return;
-    this.face.setExpression(code.code, code.intensity, performance.now() / 1000);
+  showStyle(style) {
+    const reason = this.view.setStyle(style.renderer, JSON.stringify(style.settings ?? []));
+    if (reason) this.message.textContent = `the face keeps its look: ${reason}`;
     this.redraw();
   }
 
-  animating() { return this.face && !this.face.settled(performance.now() / 1000); }  // until the tween settles
+  // A code this version does not know is ignored by the module, as the C++ client ignores it.
+  show(code) {
+    this.view.setExpression(code.code, code.intensity);
+    this.tweenUntil = performance.now() + 250;  // the face tweens for 100 ms
+    this.redraw();
+  }
+
+  animating() { return !!this.view && (this.view.animates() || performance.now() < this.tweenUntil); }
 
   draw(now = performance.now() / 1000) {
-    const face = this.face;
-    if (!this.gl || !face) return;
-    const [width, height] = this.beginFrame();
-    const scale = Math.min(width / face.width, height / face.height);
-    const w = Math.round(face.width * scale), h = Math.round(face.height * scale);
-    face.draw(now, [width, height], [Math.trunc((width - w) / 2), Math.trunc((height - h) / 2), w, h]);
+    if (!this.view || !this.faceShown) return;
+    const ratio = window.devicePixelRatio || 1, canvas = this.canvas;
+    const width = Math.max(1, Math.round(canvas.clientWidth * ratio)), height = Math.max(1, Math.round(canvas.clientHeight * ratio));
+    if (canvas.width !== width || canvas.height !== height) canvas.width = width, canvas.height = height;
+    const reason = this.view.draw(now);
+    if (reason) this.fail(reason);
   }
 }
 

@@ -8,7 +8,7 @@
 // controls are off with the reason beside them); `loaded` once the module and
 // model are there and the first frame is drawn. Properties: styleName, settings (object),
 // camera ({azimuth, elevation, distance}); setting them changes the session as the panel would.
-import { SessionElement } from './session_element.js';
+import { lendBytes, loadRenderModule, SessionElement } from './session_element.js';
 import { AssetKind } from '../net/session.js';
 import { ScenePanel } from './scene/panel.js';
 
@@ -36,15 +36,6 @@ const template = `
 
 // Dragging and the wheel as the native window does (client/viewer/window_input.cpp).
 const kDegreesPerPixel = 0.4, kMaxElevation = 85, kWheelStep = 0.9, kMinDistance = 0.25, kMaxDistance = 20;
-
-// The module's address on the server the element's session is on.
-function moduleUrl(server) {
-  const url = new URL(server);
-  url.protocol = url.protocol === 'wss:' ? 'https:' : 'http:';
-  url.pathname = '/module/inkwire-scene.js';
-  url.search = '';
-  return url.href;
-}
 
 export class InkwireScene extends SessionElement {
   static observedAttributes = [...SessionElement.observedAttributes, 'editor-token'];
@@ -124,37 +115,18 @@ export class InkwireScene extends SessionElement {
 
   async loadModule(server) {
     if (this.view) return;
-    let create;
-    try {
-      ({ default: create } = await import(moduleUrl(server)));
-    } catch (error) {
-      throw new Error(`the renderer cannot be loaded from ${moduleUrl(server)}: ${error.message}`);
-    }
+    ({ module: this.module, bytes: this.moduleBytes } = await loadRenderModule(server, this.canvas));
     this.progress(0.4);
-    // The module draws into this element's canvas, which no selector reaches inside the shadow
-    // root: it is named to the module as a special target.
-    this.module = await create({ print: () => {}, printErr: (text) => console.warn(text) });
-    this.module.specialHTMLTargets['!canvas'] = this.canvas;
     this.view = new this.module.SceneView('!canvas');
     const reason = this.view.error();
     if (reason) throw new Error(reason);
-    this.moduleBytes = performance.getEntriesByType('resource').filter((r) => r.name.includes('/module/inkwire-scene.'))
-      .reduce((sum, r) => sum + (r.transferSize || r.encodedBodySize || 0), 0);
     const styles = JSON.parse(this.module.stylesJson());
     this.panel.setStyles(styles, (name) => JSON.parse(this.module.styleParamsJson(name)));
     this.progress(0.6);
   }
 
   // The model's bytes lent to the module for as long as it reads them; "" or why it cannot.
-  loadModel(bytes, name) {
-    const address = this.module._malloc(bytes.length);
-    try {
-      this.module.HEAPU8.set(bytes, address);
-      return this.view.loadModel(address, bytes.length, name);
-    } finally {
-      this.module._free(address);
-    }
-  }
+  loadModel(bytes, name) { return lendBytes(this.module, bytes, (address, size) => this.view.loadModel(address, size, name)); }
 
   progress(share) {
     this.bar.style.width = `${Math.round(share * 100)}%`;

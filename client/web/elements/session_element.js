@@ -15,6 +15,40 @@ export async function decodeImage(bytes) {
   return { width: bitmap.width, height: bitmap.height, data: context.getImageData(0, 0, bitmap.width, bitmap.height).data };
 }
 
+// The browser's renderer (client/web/module: the native client's C++ compiled to WebAssembly)
+// from the server at `server` (a ws:// or wss:// address), drawing into `canvas`: {module,
+// bytes} (what the page fetched of it). Throws with the reason when it cannot be loaded.
+export async function loadRenderModule(server, canvas) {
+  const url = new URL(server);
+  url.protocol = url.protocol === 'wss:' ? 'https:' : 'http:';
+  url.pathname = '/module/inkwire-scene.js';
+  url.search = '';
+  let create;
+  try {
+    ({ default: create } = await import(url.href));
+  } catch (error) {
+    throw new Error(`the renderer cannot be loaded from ${url.href}: ${error.message}`);
+  }
+  // The module draws into the element's canvas, which no selector reaches inside the shadow
+  // root: it is named to the module as a special target.
+  const module = await create({ print: () => {}, printErr: (text) => console.warn(text) });
+  module.specialHTMLTargets['!canvas'] = canvas;
+  const bytes = performance.getEntriesByType('resource').filter((r) => r.name.includes('/module/inkwire-scene.'))
+    .reduce((sum, r) => sum + (r.transferSize || r.encodedBodySize || 0), 0);
+  return { module, bytes };
+}
+
+// `bytes` lent to the module for as long as `use(address, size)` reads them.
+export function lendBytes(module, bytes, use) {
+  const address = module._malloc(Math.max(1, bytes.length));
+  try {
+    module.HEAPU8.set(bytes, address);
+    return use(address, bytes.length);
+  } finally {
+    module._free(address);
+  }
+}
+
 export class SessionElement extends HTMLElement {
   static observedAttributes = ['server', 'session', 'token'];
 

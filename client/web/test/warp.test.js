@@ -1,13 +1,11 @@
 // The browser's warps against the C++ client's (tests/golden/warp-vectors.json, written by
 // WarpVectorsTest in tests/unit/warp_vectors_test.cpp): the same triangles, the same distance
 // field, the same matte textures byte for byte, the same cell and weights for a view, the same
-// face for an expression code, the same photos fetched in the same order. Run: node --test client/web/test/
+// photos fetched in the same order. Run: node --test client/web/test/
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { test } from 'node:test';
 
-import { applyExpression, parseTemplates } from '../common/face.js';
-import { buildFaceMesh, cavityColour } from '../common/face_mesh.js';
 import { finerToDrop, nextPhotoFetch, wantedLevel } from '../common/photo_fetch.js';
 import { locateView, viewSamples } from '../common/view_sphere.js';
 import { buildWarpMesh, delaunayTriangles } from '../common/warp_mesh.js';
@@ -51,32 +49,6 @@ test('a view falls in the C++ client\'s cell with its weights', () => {
     assert.equal(at.inside, v.inside);
     at.weights.forEach((w, k) => assert.ok(Math.abs(w - v.weights[k]) < 1e-5, `weight ${k}: ${w} against ${v.weights[k]}`));
     if (cells[v.cell].length === 2) assert.ok(Math.abs(at.t - v.t) < 1e-5, `t ${at.t} against ${v.t}`);
-  }
-});
-
-test('an expression code moves the face\'s landmarks as the C++ client moves them', () => {
-  const templates = parseTemplates(JSON.parse(readFileSync(new URL('../../../common/face/expression_templates.json', import.meta.url))));
-  for (const e of golden.faces.expressions) {
-    const moved = applyExpression(golden.faces.neutral, templates, e.code, e.intensity);
-    moved.forEach((p, i) => assert.ok(Math.hypot(p[0] - e.landmarks[i][0], p[1] - e.landmarks[i][1]) < 1e-3, `code ${e.code}, landmark ${i}`));
-  }
-});
-
-test('a face is redrawn over the C++ client\'s mesh, its closed mouth filled with the same cavity colour', () => {
-  const templates = parseTemplates(JSON.parse(readFileSync(new URL('../../../common/face/expression_templates.json', import.meta.url))));
-  for (const c of golden.faces.meshes) {
-    const mesh = buildFaceMesh(c.landmarks, templates, c.width, c.height);
-    assert.deepEqual(mesh.triangles, c.triangles, 'the triangles');
-    assert.deepEqual(mesh.landmarkOf, c.landmark_of, 'the landmark each point follows');
-    mesh.points.forEach((p, i) => {
-      assert.ok(Math.hypot(p[0][0] - c.read[i][0], p[0][1] - c.read[i][1]) < 1e-3, `point ${i} reads the atlas at ${p[0]}, not ${c.read[i]}`);
-      assert.ok(Math.hypot(p[1][0] - c.drawn[i][0], p[1][1] - c.drawn[i][1]) < 1e-3, `point ${i} is drawn at ${p[1]}, not ${c.drawn[i]}`);
-    });
-    const photo = new Uint8Array(c.width * c.height * 4);
-    for (let y = 0; y < c.height; ++y)
-      for (let x = 0; x < c.width; ++x)
-        for (let k = 0; k < 4; ++k) photo[4 * (y * c.width + x) + k] = (x * 7 + y * 13 + k * 50) % 256;
-    assert.deepEqual(cavityColour(photo, c.width, c.height, c.landmarks), c.cavity_colour, 'the cavity colour');
   }
 });
 

@@ -1,7 +1,8 @@
 #pragma once
-// A conference session on the client (SPEC F5): the speaker's neutral photo and its landmarks
-// (assets, fetched once) deformed to each received expression code, tweened, and fitted into
-// the viewport. The session's style "painterly" (with its settings) paints the face with
+// A face drawn from expression codes alone (SPEC F5, F11, F16): a neutral photo and its
+// landmarks deformed to each expression, tweened, and fitted into the viewport: the speaker of a
+// conference session, a member's tile of a call (client/call/call_grid.hpp), natively and in the
+// browser's module alike. The session's style "painterly" (with its settings) paints the face with
 // brushes, each frame over the last so strokes persist; a comic style ("comic",
 // "comic-extended") flattens and inks it (render/face/comic_photo.hpp); any other shows the photo.
 #include <filesystem>
@@ -14,7 +15,6 @@
 #include "client/render/face/face_reconstructor.hpp"
 #include "client/render/painterly/rect_image.hpp"
 #include "client/render/painterly/video_painter.hpp"
-#include "protocol/messages.hpp"
 
 namespace inkwire {
 
@@ -23,9 +23,8 @@ class ConferenceView {
   // Throws inkwire::Error when the photo or the landmarks are unreadable or do not fit together.
   ConferenceView(const std::filesystem::path& photo, const std::filesystem::path& landmarks);
 
-  // The tween to `code` starts at the next drawn frame. Codes this client does not know (a
-  // newer server) are ignored: the face keeps its expression.
-  void set_expression(const protocol::ExpressionCode& code);
+  // The tween to `state` starts at the next drawn frame.
+  void set_expression(ExpressionState state);
   // Throws inkwire::Error for painterly settings the painter does not take (the previous look
   // is kept).
   void set_style(const std::string& renderer, const std::vector<std::string>& settings);
@@ -33,6 +32,8 @@ class ConferenceView {
   void draw(glm::ivec2 viewport, double time_seconds);
 
   ExpressionState expression() const { return face_.expression(); }
+  // Whether the picture changes by itself, frame after frame (a painterly face's brushes move).
+  bool animates() const { return painter_ != nullptr; }
 
  private:
   FaceReconstructor face_;

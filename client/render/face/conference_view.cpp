@@ -1,4 +1,4 @@
-#include "client/viewer/conference_view.hpp"
+#include "client/render/face/conference_view.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,11 +13,9 @@ namespace inkwire {
 ConferenceView::ConferenceView(const std::filesystem::path& photo, const std::filesystem::path& landmarks)
     : face_(load_image(photo), load_landmarks(landmarks)) {}
 
-void ConferenceView::set_expression(const protocol::ExpressionCode& code) {
-  const auto state = protocol::expression_state(code);
-  if (!state) return;
-  if (*state == face_.expression()) pending_.reset();
-  else pending_ = *state;
+void ConferenceView::set_expression(ExpressionState state) {
+  if (state == face_.expression()) pending_.reset();
+  else pending_ = state;
 }
 
 void ConferenceView::set_style(const std::string& renderer, const std::vector<std::string>& settings) {

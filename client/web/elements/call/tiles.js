@@ -1,0 +1,65 @@
+// A call's grid in the page (SPEC F11, F16): every tile drawn by the native client's CallGrid
+// compiled into the module (client/web/module/face_module.cpp), in the session's style; the
+// captions, which the grid says where to put and what to say (caption_of in C++), are the page's
+// own text under the tiles. Made in pre-join, so the module is there when the call is.
+import { lendBytes, loadRenderModule } from '../session_element.js';
+
+export class CallTiles {
+  constructor(canvas, captions) {
+    this.canvas = canvas;
+    this.captions = captions;
+    this.shown = '';
+  }
+
+  // Loads the module from `server` (a ws:// address); throws with the reason it cannot.
+  async load(server) {
+    ({ module: this.module, bytes: this.moduleBytes } = await loadRenderModule(server, this.canvas));
+    this.view = new this.module.CallGridView('!canvas');
+    const reason = this.view.error();
+    if (reason) throw new Error(reason);
+    this.names = JSON.parse(this.module.expressionNamesJson());
+  }
+
+  // A member's neutral photo (its file's bytes) and landmarks (the server's JSON text).
+  setMemberFace(member, photo, landmarks) {
+    const reason = lendBytes(this.module, photo, (address, size) => this.view.setMemberFace(member, address, size, landmarks));
+    if (reason) throw new Error(reason);
+  }
+
+  setRoster(roster) {
+    const reason = this.view.setRoster(JSON.stringify({ you: roster.you, members: roster.members.map(({ assets, ...m }) => m) }));
+    if (reason) throw new Error(reason);
+  }
+
+  // The session's style ({renderer, settings}); "" or why it is refused.
+  setStyle(style) { return this.view.setStyle(style.renderer, JSON.stringify(style.settings ?? [])); }
+
+  setFace(member, expression) { this.view.setFace(member, expression.code, expression.intensity); }
+
+  // The name of the expression a member's tile shows ('neutral' before any).
+  expressionOf(member) { return JSON.parse(this.view.expressionJson(member))?.name ?? 'neutral'; }
+
+  // One frame at the canvas's size in device pixels, then the captions under the tiles. Returns
+  // whether a face was drawn.
+  draw(seconds) {
+    const ratio = window.devicePixelRatio || 1, canvas = this.canvas;
+    const width = Math.max(1, Math.round(canvas.clientWidth * ratio)), height = Math.max(1, Math.round(canvas.clientHeight * ratio));
+    if (canvas.width !== width || canvas.height !== height) canvas.width = width, canvas.height = height;
+    const reason = this.view.draw(seconds);
+    if (reason) throw new Error(reason);
+    const tiles = JSON.parse(this.view.tilesJson());
+    const text = JSON.stringify(tiles.map((t) => [t.caption, t.speaking, t.rect]));
+    if (text !== this.shown) {
+      this.shown = text;
+      this.captions.replaceChildren(...tiles.map((t) => {
+        const div = document.createElement('div');
+        div.className = `caption${t.speaking ? ' speaking' : ''}`;
+        const [x, y, w, h] = t.rect.map((v) => v / ratio);
+        Object.assign(div.style, { left: `${x}px`, top: `${y + h + 2}px`, width: `${w}px` });
+        div.textContent = t.caption;
+        return div;
+      }));
+    }
+    return tiles.some((t) => t.has_face);
+  }
+}
