@@ -31,6 +31,7 @@ nlohmann::json frame_log_line(SessionSync& sync, const SessionClient& client, lo
   }
   if (const auto expression = sync.view().expression())
     line["expression"] = {{"name", name_of(expression->expression)}, {"intensity", expression->intensity}};
+  if (const int painted = sync.view().painted_frames(); painted > 0) line["painted_frames"] = painted;
   return line;
 }
 

@@ -45,6 +45,8 @@ class SessionView {
   const std::string& style() const { return style_key_; }
   // The expression shown, in conference sessions.
   std::optional<ExpressionState> expression() const;
+  // A conference's painted face: frames painted since its style was set (ConferenceView).
+  int painted_frames() const { return face_ ? face_->painted_frames() : 0; }
 
   // A call (a conference whose members publish themselves): the roster with its members'
   // cached photo and landmarks files, and each member's face as it is due.

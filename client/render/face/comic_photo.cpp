@@ -7,9 +7,13 @@
 
 // Plain C++ on purpose: the browser's module draws call faces with this same code (SPEC F16), and
 // OpenCV is not there. The steps are the classic ones (bilateral smoothing at half size, tone
-// bands, Canny's edges), each small enough to read here.
+// bands, Canny's edges), each small enough to read here. Bit for bit the same in both: only
+// +-*/ on floats (which IEEE rounds alike everywhere) and weights from exp() rounded to 1/65536,
+// since the C libraries' exp() may differ in a last bit and a band or an edge would flip.
 namespace inkwire {
 namespace {
+
+float rounded_weight(float w) { return std::round(w * 65536.0f) / 65536.0f; }
 
 struct Rgb {
   float r = 0, g = 0, b = 0;
@@ -48,9 +52,9 @@ Plane bilateral(const Plane& in) {
   for (int dy = -kRadius; dy <= kRadius; ++dy)
     for (int dx = -kRadius; dx <= kRadius; ++dx)
       space[size_t((dy + kRadius) * (2 * kRadius + 1) + dx + kRadius)] =
-          dx * dx + dy * dy > kRadius * kRadius ? 0.0f : std::exp(-float(dx * dx + dy * dy) / (2 * kSigmaSpace * kSigmaSpace));
+          dx * dx + dy * dy > kRadius * kRadius ? 0.0f : rounded_weight(std::exp(-float(dx * dx + dy * dy) / (2 * kSigmaSpace * kSigmaSpace)));
   std::array<float, 3 * 256> colour{};  // by the sum of absolute channel differences, as OpenCV's
-  for (size_t d = 0; d < colour.size(); ++d) colour[d] = std::exp(-float(d * d) / (2 * kSigmaColour * kSigmaColour));
+  for (size_t d = 0; d < colour.size(); ++d) colour[d] = rounded_weight(std::exp(-float(d * d) / (2 * kSigmaColour * kSigmaColour)));
   Plane out = in;
   for (int y = 0; y < in.height; ++y)
     for (int x = 0; x < in.width; ++x) {

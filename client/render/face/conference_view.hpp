@@ -4,7 +4,8 @@
 // conference session, a member's tile of a call (client/call/call_grid.hpp), natively and in the
 // browser's module alike. The session's style "painterly" (with its settings) paints the face with
 // brushes, each frame over the last so strokes persist; a comic style ("comic",
-// "comic-extended") flattens and inks it (render/face/comic_photo.hpp); any other shows the photo.
+// "comic-extended") flattens and inks the photo once (render/face/comic_photo.hpp) and the face
+// moves with its ink, as a drawn face would; any other shows the photo.
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -31,16 +32,22 @@ class ConferenceView {
   // Into the bound framebuffer's current viewport (`viewport` its size), centred, as large as fits.
   void draw(glm::ivec2 viewport, double time_seconds);
 
-  ExpressionState expression() const { return face_.expression(); }
+  ExpressionState expression() const { return face_->expression(); }
   // Whether the picture changes by itself, frame after frame (a painterly face's brushes move).
   bool animates() const { return painter_ != nullptr; }
+  // Frames painted since the painterly style was set (0 in other styles): the painting after as
+  // many frames is the same wherever it is drawn (the brushes' moves come from the style's seed).
+  int painted_frames() const { return painted_frames_; }
 
  private:
-  FaceReconstructor face_;
+  Image photo_;  // as it came: a comic style draws from a copy
+  FaceLandmarks landmarks_;
+  std::optional<FaceReconstructor> face_;
   std::optional<ExpressionState> pending_;
   std::unique_ptr<VideoPainter> painter_;  // painterly style only
+  int painted_frames_ = 0;
+  bool drawn_ = false;
   bool comic_ = false;                     // comic styles
-  gl::Texture comic_face_;
   std::optional<Canvas> painting_;         // what the painter paints over, frame after frame
   gl::Texture painted_;                    // its latest frame, to lay into the viewport
   RectImage rect_image_;

@@ -206,6 +206,7 @@ class FaceView {
 
   // Whether the picture changes by itself (a painterly face's brushes move).
   bool animates() const { return view_ && view_->animates(); }
+  int painted_frames() const { return view_ ? view_->painted_frames() : 0; }
   std::string expression() const { return expression_json(view_ ? std::optional(view_->expression()) : std::nullopt); }
 
  private:
@@ -241,6 +242,7 @@ EMSCRIPTEN_BINDINGS(inkwire_faces) {
       .function("setExpression", &FaceView::set_expression)
       .function("draw", &FaceView::draw)
       .function("animates", &FaceView::animates)
+      .function("paintedFrames", &FaceView::painted_frames)
       .function("expressionJson", &FaceView::expression);
   function("expressionNamesJson", &inkwire::expression_names_json);
 }
