@@ -37,6 +37,11 @@ class CallGrid {
   const std::vector<Tile>& tiles() const { return tiles_; }
   // The expression a member's tile shows.
   std::optional<ExpressionState> expression(uint16_t member) const;
+  // Whether a tile changes by itself, frame after frame (a painterly face): a grid that does not
+  // need drawing again until something changes (the native window and the browser wait so).
+  bool animates() const {
+    return std::any_of(views_.begin(), views_.end(), [](const auto& v) { return v.second->animates(); });
+  }
   // Whether there is a call to show: some member publishes or has a photo. A conference whose
   // members only watch the session's own speaker shows that speaker alone, as before calls.
   bool empty() const {

@@ -248,7 +248,7 @@ export class InkwireCall extends SessionElement {
 
   loop() {
     if (!this.hasAttribute('joined')) return;
-    if (this.tiles.view) {
+    if (this.tiles.view && this.tiles.due()) {
       try {
         if (this.tiles.draw(performance.now() / 1000)) this.firstFaceAt ??= performance.now();
       } catch (error) {

@@ -144,6 +144,8 @@ class CallGridView {
     return tiles.dump();
   }
 
+  bool animates() const { return grid_.animates(); }
+
   // The expression a member's tile shows: {"code", "name", "intensity"}, or null.
   std::string member_expression_json(int member) const { return expression_json(grid_.expression(uint16_t(member))); }
 
@@ -232,6 +234,7 @@ EMSCRIPTEN_BINDINGS(inkwire_faces) {
       .function("setFace", &CallGridView::set_face)
       .function("draw", &CallGridView::draw)
       .function("tilesJson", &CallGridView::tiles_json)
+      .function("animates", &CallGridView::animates)
       .function("expressionJson", &CallGridView::member_expression_json);
   using inkwire::FaceView;
   class_<FaceView>("FaceView")

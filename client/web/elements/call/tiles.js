@@ -1,7 +1,9 @@
 // A call's grid in the page (SPEC F11, F16): every tile drawn by the native client's CallGrid
 // compiled into the module (client/web/module/face_module.cpp), in the session's style; the
 // captions, which the grid says where to put and what to say (caption_of in C++), are the page's
-// own text under the tiles. Made in pre-join, so the module is there when the call is.
+// own text under the tiles. Made in pre-join, so the module is there when the call is. The grid is
+// drawn again only when something changed, a face is tweening or a style paints frame after
+// frame: a call's page has camera crops to make on its thread too.
 import { lendBytes, loadRenderModule } from '../session_element.js';
 
 export class CallTiles {
@@ -9,6 +11,16 @@ export class CallTiles {
     this.canvas = canvas;
     this.captions = captions;
     this.shown = '';
+    this.changed = true;  // something to draw
+    this.tweenUntil = 0;
+  }
+
+  // Whether the next animation frame has anything new to draw.
+  due() {
+    const ratio = window.devicePixelRatio || 1;
+    const resized = this.canvas.width !== Math.max(1, Math.round(this.canvas.clientWidth * ratio)) ||
+                    this.canvas.height !== Math.max(1, Math.round(this.canvas.clientHeight * ratio));
+    return this.changed || resized || performance.now() < this.tweenUntil || this.view.animates();
   }
 
   // Loads the module from `server` (a ws:// address); throws with the reason it cannot.
@@ -24,17 +36,25 @@ export class CallTiles {
   setMemberFace(member, photo, landmarks) {
     const reason = lendBytes(this.module, photo, (address, size) => this.view.setMemberFace(member, address, size, landmarks));
     if (reason) throw new Error(reason);
+    this.changed = true;
   }
 
   setRoster(roster) {
     const reason = this.view.setRoster(JSON.stringify({ you: roster.you, members: roster.members.map(({ assets, ...m }) => m) }));
     if (reason) throw new Error(reason);
+    this.changed = true;
   }
 
   // The session's style ({renderer, settings}); "" or why it is refused.
-  setStyle(style) { return this.view.setStyle(style.renderer, JSON.stringify(style.settings ?? [])); }
+  setStyle(style) {
+    this.changed = true;
+    return this.view.setStyle(style.renderer, JSON.stringify(style.settings ?? []));
+  }
 
-  setFace(member, expression) { this.view.setFace(member, expression.code, expression.intensity); }
+  setFace(member, expression) {
+    this.view.setFace(member, expression.code, expression.intensity);
+    this.tweenUntil = performance.now() + 250;  // the face tweens for 100 ms
+  }
 
   // The name of the expression a member's tile shows ('neutral' before any).
   expressionOf(member) { return JSON.parse(this.view.expressionJson(member))?.name ?? 'neutral'; }
@@ -47,6 +67,7 @@ export class CallTiles {
     if (canvas.width !== width || canvas.height !== height) canvas.width = width, canvas.height = height;
     const reason = this.view.draw(seconds);
     if (reason) throw new Error(reason);
+    this.changed = false;
     const tiles = JSON.parse(this.view.tilesJson());
     const text = JSON.stringify(tiles.map((t) => [t.caption, t.speaking, t.rect]));
     if (text !== this.shown) {
