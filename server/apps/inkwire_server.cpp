@@ -1,5 +1,7 @@
 // inkwire-server: sessions, assets and control messages for thin clients (CONTRACTS.md).
+#include <algorithm>
 #include <csignal>
+#include <optional>
 #include <cstdio>
 #include <iostream>
 
@@ -10,6 +12,7 @@
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "server/products/product_store.hpp"
+#include "server/self_signed.hpp"
 #include "server/server.hpp"
 #include "server/session_token.hpp"
 
@@ -19,6 +22,28 @@ namespace {
 
 // `inkwire-server add-product`: a turntable session NAME in the data folder, from a folder of
 // photos or a mesh, made once (the same inputs and settings again find the stored product).
+// What a person hosting a call for a friend needs: the link to send and the fingerprint the
+// friend's browser will show for the throw-away certificate.
+void say_join_links(const server::ServerConfig& config, uint16_t port, const server::SelfSigned& certificate) {
+  std::string call = "conference";
+  for (const auto& s : config.sessions)
+    if (s.kind == protocol::SessionKind::Conference) {
+      call = s.name;
+      break;
+    }
+  const bool everywhere = config.http_host == "0.0.0.0" || config.http_host == "::";
+  std::cout << "inkwire-server: TLS with a throw-away certificate, SHA-256 fingerprint\n  " << certificate.fingerprint
+            << "\n(your friend's browser warns of it once: the fingerprint it shows must be this one)\njoin links:\n";
+  for (const std::string& name : certificate.names) {
+    if (everywhere ? (name == "localhost" || name == "127.0.0.1" || name == "::1") : name != config.http_host) continue;
+    const bool v6 = name.find(':') != std::string::npos;
+    std::cout << "  https://" << (v6 ? "[" + name + "]" : name) << ":" << port << "/call/" << call << "\n";
+  }
+  if (!everywhere && std::find(certificate.names.begin(), certificate.names.end(), config.http_host) == certificate.names.end())
+    std::cout << "  https://" << config.http_host << ":" << port << "/call/" << call << "\n";
+  std::cout << std::flush;
+}
+
 int add_product(const std::string& name, const server::ProductSource& source, const std::string& data, const std::string& editor_token) {
   if (name.empty() || name.size() > protocol::kMaxName ||
       name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_.") != std::string::npos)
@@ -73,6 +98,10 @@ int main(int argc, char** argv) {
   app.add_option("--broker", broker, "redis://HOST:PORT: share sessions with the other instances on that Redis (each with its own --name)");
   app.add_option("--name", name, "this instance's name, unique among the instances sharing a broker (default inkwire-server)");
   app.add_flag("--quiet", quiet, "log warnings and errors only");
+  bool self_signed = false;
+  app.add_flag("--self-signed", self_signed,
+               "TLS with a throw-away certificate for this machine's names and addresses (kept in DATA/tls): prints the join link and the "
+               "certificate's fingerprint, for hosting a call for a friend with --http 0.0.0.0:PORT");
 
   std::string product_name, product_data, editor_token;
   server::ProductSource source;
@@ -125,6 +154,13 @@ int main(int argc, char** argv) {
     if (!data.empty()) config.data_dir = data;
     if (!broker.empty()) config.broker = broker;
     if (!name.empty()) config.name = name;
+    std::optional<server::SelfSigned> certificate;
+    if (self_signed) {
+      if (!config.http) throw Error("--self-signed needs --http HOST:PORT: browsers join a call over HTTPS");
+      certificate = server::make_self_signed(config.data_dir / "tls");
+      config.tls = server::TlsConfig{.certificate = certificate->certificate, .key = certificate->key};
+      log_info("self-signed", {{"fingerprint", certificate->fingerprint}, {"names", certificate->names}});
+    }
     // A client vanishing mid-write must not kill the server.
     std::signal(SIGPIPE, SIG_IGN);
     asio::io_context io(1);
@@ -135,6 +171,7 @@ int main(int argc, char** argv) {
       server.stop();
     });
     server.start();
+    if (certificate) say_join_links(config, server.http_port(), *certificate);
     io.run();
     log_info("stopped");
     return 0;

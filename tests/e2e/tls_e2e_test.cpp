@@ -104,3 +104,31 @@ TEST_F(TlsE2ETest, PlainListenersOffThisMachineAreRefusedAtStartWithTheReason) {
   EXPECT_NE(server.output().find("reachable from other machines"), std::string::npos) << server.output();
   EXPECT_FALSE(fs::exists(dir / "data")) << "the refused server created its data folder";
 }
+
+// Hosting a call for a friend is one command (SPEC F19): --self-signed makes a certificate for this
+// machine's names and addresses, prints the join link and the fingerprint a friend's browser shows,
+// and both listeners speak TLS with it (a client trusting that certificate joins at 127.0.0.1).
+TEST_F(TlsE2ETest, SelfSignedMakesACertificatePrintsTheJoinLinkAndItsFingerprintAndServesWithIt) {
+  const fs::path dir = output_dir("tls-self-signed");
+  std::ofstream(dir / "server.json") << nlohmann::json{{"sessions", {{{"name", "friends"}, {"kind", "conference"}}}}}.dump();
+  Process server("inkwire-server", {"--listen", "127.0.0.1:0", "--http", "127.0.0.1:0", "--data", (dir / "data").string(), "--config",
+                                    (dir / "server.json").string(), "--self-signed"}, dir / "server.log");
+  ASSERT_TRUE(eventually([&] { return server.output().find("/call/friends") != std::string::npos || !server.running(); })) << server.output();
+  const std::string out = server.output();
+  const fs::path certificate = dir / "data" / "tls" / "self-signed-certificate.pem";
+  ASSERT_TRUE(fs::exists(certificate)) << out;
+  EXPECT_EQ(fs::status(dir / "data" / "tls" / "self-signed-key.pem").permissions() & (fs::perms::group_all | fs::perms::others_all), fs::perms::none)
+      << "the key is readable by others";
+  // The fingerprint printed is the certificate's (as openssl computes it).
+  Process fingerprint(kOpenssl.string(), {"x509", "-in", certificate.string(), "-noout", "-fingerprint", "-sha256"}, dir / "fingerprint.log");
+  ASSERT_EQ(fingerprint.wait(), 0);
+  const std::string printed = fingerprint.output().substr(fingerprint.output().find('=') + 1, 95);
+  EXPECT_NE(out.find(printed), std::string::npos) << "fingerprint " << printed << " not in: " << out;
+  int tcp = 0, http = 0;
+  for (const auto& j : log_events(out, "listening")) tcp = j.value("port", 0);
+  for (const auto& j : log_events(out, "http-listening")) http = j.value("port", 0);
+  EXPECT_NE(out.find("https://127.0.0.1:" + std::to_string(http) + "/call/friends"), std::string::npos) << out;
+  // A client that trusts it reaches the server by address: the certificate names 127.0.0.1.
+  SessionClient member("127.0.0.1:" + std::to_string(tcp), "friend", client_tls_context(certificate.string()));
+  EXPECT_NO_THROW(member.join("friends", ""));
+}
