@@ -19,6 +19,8 @@
 #include <sstream>
 #include <thread>
 
+#include <nlohmann/json.hpp>
+
 #include "bench_harness.hpp"
 #include "client/call/audio_file.hpp"
 #include "client/call/call_audio.hpp"
@@ -268,6 +270,21 @@ std::vector<Result> run_call_suite(Harness& harness) {
     r.counters = {{"delivered_fraction", relayed > 0 ? double(received) / relayed : 0}, {"p99_ms", percentile(transit, 0.99)},
                   {"voice_relayed", relayed}, {"crops_analysed", double(load.server->counters().call.crops)}};
     results.push_back(r);
+  }
+  // The browsers' voice with a quiet page and one whose thread stalls 400 ms in every 2 s, per
+  // engine this machine has (tests/web/call_engines_test.py measures them; Firefox and WebKit need
+  // a display, which xvfb-run gives).
+  {
+    const fs::path script = fs::path(INKWIRE_SOURCE_DIR) / "tests/web/call_engines_test.py", json = dir / "browsers.json";
+    const std::string display = std::system("command -v xvfb-run > /dev/null") == 0 ? "xvfb-run -a -s '-screen 0 1024x768x24' " : "";
+    run(display + "/usr/bin/python3 '" + script.string() + "' '" + INKWIRE_BIN_DIR + "' '" + (dir / "browsers").string() + "' --bench '" + json.string() + "'");
+    if (!fs::exists(json)) std::fprintf(stderr, "inkwire-bench: the browsers' call rows did not run: none written\n");
+    else
+      for (const auto& row : nlohmann::json::parse(std::ifstream(json)).at("rows")) {
+        Result b{.suite = "call", .renderer = "call", .variant = row.at("variant"), .object = "browser"};
+        for (const auto& [key, value] : row.at("counters").items()) b.counters[key] = value.get<double>();
+        results.push_back(std::move(b));
+      }
   }
   return results;
 }

@@ -14,7 +14,9 @@ time, each joining a call with a native inkwire-client member on a real inkwire-
   jitter rule: the voice lives in a worker and audio worklets, not on the page's thread;
 - the element's `reason` is empty: every engine here carries voice.
 
-  call_engines_test.py BIN_DIR OUT_DIR [ENGINE ...]   (default: chromium firefox webkit)
+  call_engines_test.py BIN_DIR OUT_DIR [ENGINE ...] [--bench ROWS.json]   (default: every engine)
+With --bench it measures a quiet page too and writes inkwire-bench's rows `browser,engine=E,stall=MS`
+(inkwire-bench --suite call runs it so).
 
 An engine that is not installed, or that needs a display when there is none, is skipped with a
 message; the test skips as a whole when none can run."""
@@ -32,7 +34,11 @@ sys.path.insert(0, os.path.dirname(__file__))
 from browser_support import ENGINES, Checks, Server, engine, engine_missing, skip  # skips without Chromium's tooling
 
 BIN, OUT = sys.argv[1], sys.argv[2]
-wanted = sys.argv[3:] or list(ENGINES)
+args = sys.argv[3:]
+BENCH = args[args.index("--bench") + 1] if "--bench" in args else None
+wanted = [a for a in args if a in ENGINES] or list(ENGINES)
+STALLS = (0, 400) if BENCH else (400,)
+rows = []
 YALE = os.path.join(os.path.dirname(__file__), "..", "..", "..", "shared", "data", "yalefaces")
 DLIB = "/usr/share/doc/libdlib19.1/examples/faces"
 if not shutil.which("espeak-ng"):
@@ -169,20 +175,25 @@ try:
                 seen |= {m["expression"] for m in driver.execute_script(f"return {element}.members") if m["name"] == "Nat"}
                 time.sleep(0.3)
             counts = f"return await {element}.link.figures(true)"
-            before = driver.execute_script(counts)
-            driver.execute_script("window.stalls = setInterval(() => { const t = performance.now(); while (performance.now() - t < 400); }, 2000);")
-            end = time.time() + STALL_SECONDS
-            while time.time() < end:
-                seen |= {m["expression"] for m in driver.execute_script(f"return {element}.members") if m["name"] == "Nat"}
-                time.sleep(0.5)
-            driver.execute_script("clearInterval(window.stalls);")
-            time.sleep(1)  # what is in flight lands
-            after = driver.execute_script(counts)
-            received = after["voiceReceived"] - before["voiceReceived"]
-            played, late, dropped = (after[k] - before[k] for k in ("played", "late", "dropped"))
-            print(f"{name}: stalled 400 ms every 2 s for {STALL_SECONDS} s: {received} packets received, {played} played, {late} late, "
-                  f"{dropped} dropped, delay {after['delayMs']:.0f} ms, the longest wait between two packets {after['voiceGapMs']} ms; "
-                  f"{after['voiceSent']} sent, {after['encoderErrors']} encoder and {after['decoderErrors']} decoder errors")
+            for stall in STALLS:  # the bench measures a quiet page first; the test, the stalling one
+                before = driver.execute_script(counts)
+                if stall:
+                    driver.execute_script(f"window.stalls = setInterval(() => {{ const t = performance.now(); while (performance.now() - t < {stall}); }}, 2000);")
+                end = time.time() + STALL_SECONDS
+                while time.time() < end:
+                    seen |= {m["expression"] for m in driver.execute_script(f"return {element}.members") if m["name"] == "Nat"}
+                    time.sleep(0.5)
+                driver.execute_script("clearInterval(window.stalls);")
+                time.sleep(1)  # what is in flight lands
+                after = driver.execute_script(counts)
+                received = after["voiceReceived"] - before["voiceReceived"]
+                played, late, dropped = (after[k] - before[k] for k in ("played", "late", "dropped"))
+                print(f"{name}: stalled {stall} ms every 2 s for {STALL_SECONDS} s: {received} packets received, {played} played, {late} late, "
+                      f"{dropped} dropped, delay {after['delayMs']:.0f} ms, the longest wait between two packets {after['voiceGapMs']} ms; "
+                      f"{after['voiceSent']} sent, {after['encoderErrors']} encoder and {after['decoderErrors']} decoder errors")
+                rows.append({"variant": f"browser,engine={name},stall={stall}",
+                             "counters": {"packets_played_fraction": played / received if received else 0, "packets_late": late,
+                                          "packets_received": received, "delay_ms": after["delayMs"], "voice_gap_ms_max": after["voiceGapMs"]}})
             checks.check(received > STALL_SECONDS * 10, f"{name}: the native member's voice arrived while the page stalled ({received} packets)")
             # Chromium delivers a worker's WebSocket messages off the page's thread; Gecko and WebKit
             # route them through it, so a stall holds packets back before the worker sees them
@@ -244,4 +255,7 @@ try:
             checks.check(loud >= 5 and holds >= 0.9, f"{name}: the native member hears the browser's microphone ({loud:.1f} s, held {holds:.1%})")
 finally:
     server.stop()
+if BENCH:
+    with open(BENCH, "w") as f:
+        json.dump({"rows": rows}, f)
 checks.finish()
