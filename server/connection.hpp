@@ -35,6 +35,10 @@ class Connection : public std::enable_shared_from_this<Connection> {
   uint64_t id() const { return id_; }
   const std::string& address() const { return address_; }  // the peer's IP address
   const Transport& transport() const { return *transport_; }
+  bool in_session() const { return session_ != nullptr; }
+  // How long since anything arrived from the peer (the server pings a quiet one: a live peer is
+  // never silent much longer than a heartbeat).
+  std::chrono::steady_clock::duration silent_for() const { return Clock::now() - last_heard_; }
 
  private:
   asio::awaitable<void> read_loop();

@@ -205,6 +205,12 @@ void Server::start_face_feeds() {
   }
 }
 
+std::map<std::pair<std::string, bool>, size_t> Server::connections_by_kind() const {
+  std::map<std::pair<std::string, bool>, size_t> kinds;
+  for (const auto& [key, connection] : connections_) ++kinds[{connection->transport().name(), connection->in_session()}];
+  return kinds;
+}
+
 void Server::start() {
   start_face_feeds();
   log_info("listening", {{"host", config_.host}, {"port", port()}, {"data", config_.data_dir.string()}, {"sessions", sessions_.size()}});

@@ -74,6 +74,8 @@ class Server {
   // proxy speaks for many people) unless the config says so.
   bool limited(const std::string& address) const;
   size_t connection_count() const { return connections_.size(); }
+  // Open connections by transport ("tcp", "tls", "websocket") and whether they are in a session.
+  std::map<std::pair<std::string, bool>, size_t> connections_by_kind() const;
   ServerCounters& counters() { return counters_; }
   const std::map<std::string, std::shared_ptr<Session>>& sessions() const { return sessions_; }
   void persist(Session& session);

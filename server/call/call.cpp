@@ -19,6 +19,8 @@ constexpr auto kFaceLost = std::chrono::milliseconds(1000);     // camera faces 
 constexpr auto kVoiceMouthStep = std::chrono::milliseconds(150); // a mouth from the voice changes at most this often
 constexpr auto kNoFaceAfter = std::chrono::seconds(3);          // crops without a face this long: "no face found"
 constexpr auto kVoiceMouthKeepalive = std::chrono::seconds(1);
+constexpr auto kRejoinWithin = std::chrono::seconds(60);         // a member back this soon takes its number again
+constexpr auto kTwinSilence = std::chrono::seconds(8);           // beyond a heartbeat and its answer: that connection is gone
 constexpr float kLevelDecayDb = 1.5f;                           // per packet, so a level falls ~75 dB a second
 
 // A token bucket: `rate` a second, a second's worth at once.
@@ -96,12 +98,34 @@ uint16_t Call::take_number() {
   return next_number_++;
 }
 
+uint16_t Call::number_for(const std::string& name, const std::string& address) {
+  const auto now = Clock::now();
+  std::erase_if(departed_, [&](const auto& d) { return now - d.second.when > kRejoinWithin; });
+  for (auto it = members_.begin(); it != members_.end(); ++it) {
+    const auto twin = it->second->connection.lock();
+    if (it->second->entry.name != name || !twin || twin->address() != address || twin->silent_for() < kTwinSilence) continue;
+    log_info("call-rejoin-replaces", {{"session", session_}, {"member", it->second->entry.member}, {"name", name}});
+    const uint16_t number = it->second->entry.member;
+    analyst_.forget({session_, number});
+    members_.erase(it);
+    twin->close_with(protocol::ErrorCode::Refused, "this member joined again on another connection");
+    return number;
+  }
+  if (const auto it = departed_.find({name, address}); it != departed_.end()) {
+    const uint16_t number = it->second.member;
+    departed_.erase(it);
+    const bool taken = find_member(number) || std::any_of(remotes_.begin(), remotes_.end(), [&](const auto& r) { return r.second.entry.member == number; });
+    if (!taken) return number;
+  }
+  return take_number();
+}
+
 void Call::join(const std::shared_ptr<Connection>& connection, const std::string& name) {
   leave(connection->id());
   auto m = std::make_unique<Member>();
   m->connection = connection;
   m->connection_id = connection->id();
-  m->entry.member = take_number();
+  m->entry.member = name.empty() ? take_number() : number_for(name, connection->address());
   m->entry.name = name.empty() ? "member " + std::to_string(m->entry.member) : name;
   members_[connection->id()] = std::move(m);
   send_roster();
@@ -112,6 +136,8 @@ void Call::leave(uint64_t connection) {
   const auto it = members_.find(connection);
   if (it == members_.end()) return;
   analyst_.forget({session_, it->second->entry.member});
+  if (const auto c = it->second->connection.lock())
+    departed_[{it->second->entry.name, c->address()}] = {.member = it->second->entry.member, .when = Clock::now()};
   members_.erase(it);
   send_roster();
   share_roster();

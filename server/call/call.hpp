@@ -95,6 +95,17 @@ class Call {
   Counters& counters_;
   std::map<uint64_t, std::unique_ptr<Member>> members_;  // by connection id
   uint16_t next_number_ = 1;
+  // Who left lately, by name and address, with their number: one whose connection dropped comes
+  // back under the same number, so the same tile (SPEC F19).
+  struct Departed {
+    uint16_t member;
+    Clock::time_point when;
+  };
+  std::map<std::pair<std::string, std::string>, Departed> departed_;
+  // The number a member joining as `name` from `address` takes: its own of a minute ago when it
+  // comes back, else a new one. A twin of it still here and silent past two heartbeats (its
+  // connection dropped without a word) gives way first.
+  uint16_t number_for(const std::string& name, const std::string& address);
   uint16_t take_number();
   void share_roster();
 

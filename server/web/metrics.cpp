@@ -1,5 +1,8 @@
 #include "server/web/metrics.hpp"
 
+#include <filesystem>
+#include <fstream>
+
 #include "server/relay/relay.hpp"
 #include "server/server.hpp"
 
@@ -28,6 +31,24 @@ class MetricsText {
   std::string text_;
 };
 
+// What the kernel says of this process: resident memory (bytes) and threads, from
+// /proc/self/status; open descriptors, from /proc/self/fd. Zero where /proc is not there.
+struct ProcessFigures {
+  double resident_bytes = 0, threads = 0, descriptors = 0;
+};
+ProcessFigures process_figures() {
+  ProcessFigures f;
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);) {
+    if (line.rfind("VmRSS:", 0) == 0) f.resident_bytes = std::stod(line.substr(6)) * 1024;  // kB
+    if (line.rfind("Threads:", 0) == 0) f.threads = std::stod(line.substr(8));
+  }
+  std::error_code ec;
+  for (auto it = std::filesystem::directory_iterator("/proc/self/fd", ec); !ec && it != std::filesystem::directory_iterator(); it.increment(ec))
+    ++f.descriptors;
+  return f;
+}
+
 }  // namespace
 
 std::string metric_label(const std::string& value) {
@@ -44,6 +65,13 @@ std::string metrics_text(Server& server) {
   const ServerCounters& c = server.counters();
   MetricsText m;
   m.one("inkwire_connections", "gauge", "Open client connections (TCP and WebSocket).", server.connection_count());
+  m.metric("inkwire_connections_by_kind", "gauge", "Open client connections by transport, and whether they have joined a session.");
+  for (const auto& [kind, count] : server.connections_by_kind())
+    m.sample("inkwire_connections_by_kind", count, "transport=\"" + kind.first + "\",state=\"" + (kind.second ? "in-session" : "connected") + "\"");
+  const ProcessFigures process = process_figures();
+  m.one("process_resident_memory_bytes", "gauge", "Resident memory of the server process.", process.resident_bytes);
+  m.one("process_open_fds", "gauge", "Open file descriptors of the server process (sockets, files).", process.descriptors);
+  m.one("inkwire_process_threads", "gauge", "Threads of the server process.", process.threads);
   m.one("inkwire_sessions", "gauge", "Sessions this instance serves.", server.sessions().size());
   m.metric("inkwire_session_members", "gauge", "Members of each session on this instance.");
   for (const auto& [name, session] : server.sessions()) m.sample("inkwire_session_members", session->members(), "session=\"" + metric_label(name) + "\"");

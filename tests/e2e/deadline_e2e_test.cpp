@@ -83,6 +83,11 @@ TEST(DeadlineE2ETest, AMemberThatGoesSilentIsClosedAndLeavesTheRosterWithinTheDe
   EXPECT_TRUE(eventually([&] { return lid.closed_by_server(); })) << "its socket is still open";
   EXPECT_EQ(log_events(server.process().output(), "idle-timeout").size(), 1u);
   EXPECT_GE(metric(server, "inkwire_deadline_closed_total"), 1);
+  // What an operator watching for a slow leak reads there too.
+  EXPECT_GT(metric(server, "process_resident_memory_bytes"), 1e6);
+  EXPECT_GT(metric(server, "process_open_fds"), 3);
+  EXPECT_GE(metric(server, "inkwire_process_threads"), 2);
+  EXPECT_NE(metrics_of(server).find("inkwire_connections_by_kind{transport=\"tcp\",state=\"in-session\"} 1"), std::string::npos) << metrics_of(server);
   EXPECT_TRUE(listener.connected()) << "the listener, quiet but answering pings, was closed too: " << listener.last_error();
 }
 
@@ -140,4 +145,32 @@ TEST(DeadlineE2ETest, AClientNoticesAServerThatStoppedAnswering) {
   ASSERT_TRUE(noticed) << "the client still thinks it is connected";
   EXPECT_GE(seconds_since(start), double(SessionClient::kServerSilence.count()) * 0.9);
   EXPECT_NE(client.last_error().find("no word from the server"), std::string::npos) << client.last_error();
+}
+
+// A member whose connection dropped without a word joins again before the server noticed (SPEC
+// F19): its silent twin gives way and the member keeps its number (the same tile), one tile in
+// all; two live members of the same name from one address (two tabs of "guest") both stay.
+TEST(DeadlineE2ETest, AMemberJoiningAgainReplacesItsSilentTwinAndKeepsItsNumber) {
+  const fs::path dir = output_dir("deadline-rejoin");
+  ServerUnderTest server(dir, config({{"idle_timeout_seconds", 30}, {"heartbeat_seconds", 5}}));
+  SessionClient listener(server.address(), "Listener");
+  listener.join("call", "");
+  RawClient dropped(server);
+  dropped.hello_and_join("Ada", "call");
+  ASSERT_TRUE(eventually([&] { return named(listener.roster(), "Ada") != nullptr; }));
+  const uint16_t number = named(listener.roster(), "Ada")->member;
+  SessionClient guest1(server.address(), "guest"), guest2(server.address(), "guest");
+  guest1.join("call", "");
+  guest2.join("call", "");
+  // Past a heartbeat and its answer: the dropped connection has said nothing since it joined.
+  std::this_thread::sleep_for(std::chrono::seconds(9));
+  SessionClient back(server.address(), "Ada");
+  back.join("call", "");
+  ASSERT_TRUE(eventually([&] { return listener.roster().members.size() == 4; })) << listener.roster().members.size() << " members";
+  const protocol::Roster roster = listener.roster();
+  EXPECT_EQ(std::count_if(roster.members.begin(), roster.members.end(), [](const auto& m) { return m.name == "Ada"; }), 1) << "two Ada tiles";
+  EXPECT_EQ(named(roster, "Ada")->member, number) << "Ada came back under another number (another tile)";
+  EXPECT_EQ(std::count_if(roster.members.begin(), roster.members.end(), [](const auto& m) { return m.name == "guest"; }), 2)
+      << "a live member of the same name gave way";
+  EXPECT_TRUE(eventually([&] { return dropped.closed_by_server(); })) << "the silent twin's socket is still open";
 }

@@ -191,7 +191,24 @@ try:
     checks.check(crops1 == crops0, f"camera off, Bea sends no crops ({crops1 - crops0} in 2 s)")
     bea_entry = [m for m in ada.execute_script(f"return {element}.roster.members") if m["name"] == "Bea"]
     checks.check(bool(bea_entry) and not bea_entry[0]["microphone"] and not bea_entry[0]["camera"], "Ada sees Bea muted with her camera off")
-    bea.execute_script(f"{element}.leave()")
+
+    # Ada's connection is cut under her (as a lost network would): her page joins again by itself,
+    # and Bea sees her back within 5 s, in one tile, under her number of before (the same tile).
+    number_of = lambda d, name: [m["member"] for m in d.execute_script(f"return {element}.roster.members") if m["name"] == name]
+    before = number_of(bea, "Ada")
+    ada.execute_script(f"{element}.link.worker.postMessage({{ op: 'cut' }})")
+    cut, gone = time.time(), False
+    while time.time() < cut + 8:
+        now = number_of(bea, "Ada")
+        gone |= not now
+        if gone and now:
+            break
+        time.sleep(0.05)
+    back = time.time() - cut
+    checks.check(gone and number_of(bea, "Ada") == before and back <= 5,
+                 f"Ada's cut connection: gone from Bea's roster and back in {back:.1f} s in one tile, number {number_of(bea, 'Ada')} (was {before})")
+    checks.check(ada.execute_script(f"return {element}.hasAttribute('joined')"), "Ada's page is in the call again")
+    bea.execute_script(f"{element}.hangUp()")
     end = time.time() + 5
     while time.time() < end and "Bea" in names(ada):
         time.sleep(0.1)

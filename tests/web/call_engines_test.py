@@ -222,7 +222,7 @@ try:
             follows = speech_follows(played_env[-50 * STALL_SECONDS:], envelope(nat_samples, nat_rate))
             print(f"{name}: it played {len(played_env) / 50:.1f} s; over the stalls its envelope follows Nat's speech at r = {follows:.2f}")
             checks.check(follows >= 0.6, f"{name}: what it played while stalling is Nat's speech (envelope correlation {follows:.2f} >= 0.6)")
-            driver.execute_script(f"{element}.leave()")
+            driver.execute_script(f"{element}.hangUp()")
             driver.save_screenshot(os.path.join(out, "after-leaving.png"))
             print(f"{name}: it saw Nat as {sorted(seen)}")
             if yale:

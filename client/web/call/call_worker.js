@@ -10,7 +10,8 @@
 // cross-origin isolated page, {op: 'rings', capture, playout, slots, maxSamples} (the shared
 // rings of call/audio_ring.js: no message at all per chunk), {op: 'open', url,
 // session, token, name, clockOrigin}, {op: 'send', message}, {op: 'sending', on}, {op:
-// 'fetch-asset', id, asset}, {op: 'close'}, {op: 'status'} (answered at once). To the page: {op: 'ready', reason} once, {op:
+// 'fetch-asset', id, asset}, {op: 'close'}, {op: 'cut'} (the socket closed as a lost network would,
+// for tests), {op: 'status'} (answered at once). To the page: {op: 'ready', reason} once, {op:
 // 'event', type, detail} for the session's events, {op: 'asset', id, bytes | error}, and
 // {op: 'status', voiceSent, voiceReceived, encoderErrors, decoderErrors} twice a second.
 import { Session } from '../net/session.js';
@@ -164,6 +165,7 @@ self.onmessage = (e) => {
   else if (d.op === 'sending') sending = d.on;
   else if (d.op === 'fetch-asset') fetchAsset(d);
   else if (d.op === 'close') close();
+  else if (d.op === 'cut') session?.socket.close();  // what a lost network does to the socket, without a leave (tests)
   else if (d.op === 'status') {
     self.postMessage({ op: 'status', ...status });
     if (d.reset) status.voiceGapMs = 0;

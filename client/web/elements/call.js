@@ -12,7 +12,8 @@
 // Attributes: server, session, token, name, muted, camera ("off"). Sets `joined` once in the
 // call; properties `members`: [{name, speaking, expression}], `voiceStats` ({played, late,
 // dropped, delayMs}: what it heard) and `reason` ('' or why this engine cannot carry its voice);
-// method join() does what the Join button does, leave() what Leave does; counters voiceSent and
+// method join() does what the Join button does, hangUp() what Leave does (a lost connection is
+// joined again, under the same name, until then); counters voiceSent and
 // camera.sent say what went out; `firstFaceAt` (performance.now() of the first frame with a face).
 import { CameraSender, photoOf } from '../call/camera.js';
 import { CallLink, voiceUnsupported } from '../call/voice.js';
@@ -63,7 +64,7 @@ export class InkwireCall extends SessionElement {
                           grid: $('.grid'), controls: $('.controls'), muteButton: $('.mute'), cameraButton: $('.camera') });
     $('.take').addEventListener('click', () => this.takePhoto());
     $('.join').addEventListener('click', () => this.join());
-    $('.leave').addEventListener('click', () => this.leave());
+    $('.leave').addEventListener('click', () => this.hangUp());
     this.muteButton.addEventListener('click', () => this.setMuted(!this.muted));
     this.cameraButton.addEventListener('click', () => this.setCameraOff(!this.cameraOff));
     this.tiles = new CallTiles(this.canvas, $('.captions'));
@@ -136,10 +137,30 @@ export class InkwireCall extends SessionElement {
     session.addEventListener('roster', (e) => this.updateRoster(session, e.detail));
     session.addEventListener('face-region', (e) => { if (this.camera) this.camera.region = e.detail; });
     session.addEventListener('member-face', (e) => this.faceArrived(e.detail));
-    session.addEventListener('close', () => { if (this.session === session) this.leave(); });
+    session.addEventListener('close', () => this.lost(session));
+  }
+
+  // A connection lost while in the call (Wi-Fi, a laptop lid, a server gone quiet: SPEC F19) is
+  // joined again under the same name, every 2 s for a minute; the server gives the member its
+  // tile back. Leaving on purpose (hangUp) stops that.
+  lost(session) {
+    if (this.session !== session) return;
+    if (this.hasAttribute('joined')) this.rejoinUntil = performance.now() + 60000;
+    this.leave();
+    if (!(performance.now() < this.rejoinUntil) || !this.isConnected) return;
+    this.message.textContent = 'the connection was lost: joining again';
+    setTimeout(() => { if (!this.session && this.isConnected && performance.now() < this.rejoinUntil) this.join(); }, 2000);
+  }
+
+  // The Leave button: out of the call, and no joining again.
+  hangUp() {
+    this.rejoinUntil = 0;
+    this.leave();
   }
 
   async entered(session, snapshot) {
+    if (this.rejoinUntil) this.message.textContent = '';
+    this.rejoinUntil = 0;
     if (this.preview.videoWidth && !this.photo) await this.takePhoto();
     if (this.session !== session) return;
     if (this.photo) session.send({ type: 'neutral-photo', jpeg: this.photo });
@@ -199,7 +220,7 @@ export class InkwireCall extends SessionElement {
   }
 
   disconnectedCallback() {
-    this.leave();
+    this.hangUp();
     this.link?.close();
     this.link = null;
     this.hasVoice = false;
