@@ -63,6 +63,8 @@ class ByteStream {
 
 // A server's TLS context from a PEM certificate chain and private key (TLS 1.2 and newer).
 // Throws inkwire::Error naming the file that cannot be used.
+// The TLS 1.2 suites a server offers (OpenSSL's names): ECDHE with AES-GCM or ChaCha20-Poly1305.
+extern const char* const kTls12Suites;
 std::shared_ptr<asio::ssl::context> server_tls_context(const std::string& certificate, const std::string& key);
 // A client's: trusts the CAs of `ca_file` (PEM), or the system's when empty, and verifies the
 // server's certificate (the stream checks the name). Throws inkwire::Error.

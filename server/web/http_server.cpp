@@ -175,7 +175,10 @@ asio::awaitable<void> HttpServer::serve(ByteStream accepted) {
   Place place(server_, accepted.socket().remote_endpoint(address_error).address().to_string());
   auto socket_ptr = std::make_shared<ByteStream>(std::move(accepted));
   auto& socket = *socket_ptr;
-  auto reply = [&](const std::string& text) -> asio::awaitable<void> {
+  // Over HTTPS every reply tells the browser to come back over HTTPS only (HSTS, two years).
+  const bool https = server_.tls() != nullptr;
+  auto reply = [&](std::string text) -> asio::awaitable<void> {
+    if (https) text.insert(text.find("\r\n") + 2, "Strict-Transport-Security: max-age=63072000\r\n");
     co_await asio::async_write(socket, asio::buffer(text), no_throw);
     socket.close();
   };
