@@ -287,11 +287,6 @@ std::map<uint16_t, Bytes> SessionClient::tween_cells() const {
   return tween_cells_;
 }
 
-size_t SessionClient::tween_cell_count() const {
-  std::lock_guard lock(mutex_);
-  return tween_cells_.size();
-}
-
 std::vector<std::filesystem::path> SessionClient::fetch_assets(const Snapshot& snapshot, AssetCache& cache) {
   std::vector<std::filesystem::path> paths;
   for (const AssetAnnounce& asset : snapshot.assets) paths.push_back(fetch_asset(asset, cache));
@@ -299,8 +294,10 @@ std::vector<std::filesystem::path> SessionClient::fetch_assets(const Snapshot& s
 }
 
 std::filesystem::path SessionClient::fetch_asset(const AssetAnnounce& asset, AssetCache& cache) {
-  if (cache.has(asset)) return cache.path_of(asset);
-  uint64_t received = cache.partial_size(asset), requested = received;
+  // Alone with the asset's file: another download of it (a thread here, another process) ends first.
+  std::optional<AssetCache::Download> download = cache.begin(asset);
+  if (!download) return cache.path_of(asset);
+  uint64_t received = download->resume_at(), requested = received;
   while (received < asset.size) {
     // Keep a few requests in flight so a download is not one round trip per chunk.
     while (requested < asset.size && requested - received < kRequestsAhead * kMaxChunk) {
@@ -315,10 +312,10 @@ std::filesystem::path SessionClient::fetch_asset(const AssetAnnounce& asset, Ass
     if (const auto* error = std::get_if<ErrorMessage>(&reply)) throw Error("cannot fetch " + asset.name + ": " + error->reason);
     const auto& chunk = std::get<AssetChunk>(reply);
     if (chunk.data.empty()) throw Error("server sent an empty chunk of " + asset.name);
-    cache.append(asset, chunk.offset, chunk.data);
+    download->append(chunk.offset, chunk.data);
     received += chunk.data.size();
   }
-  return cache.finish(asset);
+  return download->finish();
 }
 
 }  // namespace inkwire

@@ -67,7 +67,6 @@ class SessionClient {
   // The tween-data messages of a turntable session's product received since the last
   // snapshot (SPEC T12), by cell index, and how many have arrived.
   std::map<uint16_t, protocol::Bytes> tween_cells() const;
-  size_t tween_cell_count() const;
 
   // Calls (SPEC F7-F12): the newest roster, each member's newest face, where the server last
   // found this member's face, and the voice packets received since the last take (at most a
