@@ -53,18 +53,4 @@ std::string to_hex(const ContentHash& hash) {
   return hex;
 }
 
-ContentHash hash_from_hex(const std::string& hex) {
-  if (hex.size() != 64) throw Error("content hash '" + hex + "' is not 64 hex digits");
-  ContentHash hash{};
-  for (size_t i = 0; i < 32; ++i) {
-    auto nibble = [&](char c) {
-      if (c >= '0' && c <= '9') return c - '0';
-      if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-      throw Error("content hash '" + hex + "' is not 64 lower-case hex digits");
-    };
-    hash[i] = uint8_t(nibble(hex[2 * i]) << 4 | nibble(hex[2 * i + 1]));
-  }
-  return hash;
-}
-
 }  // namespace inkwire

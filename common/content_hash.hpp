@@ -14,7 +14,5 @@ ContentHash content_hash(const void* data, size_t size);
 ContentHash content_hash_of_file(const std::filesystem::path& path);
 
 std::string to_hex(const ContentHash& hash);
-// Throws inkwire::Error unless `hex` is 64 hexadecimal digits.
-ContentHash hash_from_hex(const std::string& hex);
 
 }  // namespace inkwire

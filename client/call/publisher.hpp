@@ -42,8 +42,6 @@ class Publisher {
   void set_camera_off(bool off);
   bool muted() const { return muted_; }
   bool camera_off() const { return camera_off_; }
-  bool has_camera() const { return !options_.camera.empty(); }
-  bool has_microphone() const { return !options_.microphone.empty(); }
   uint64_t crops_sent() const { return crops_; }
   uint64_t voice_sent() const { return voices_; }
   uint64_t bytes_sent() const { return bytes_; }

@@ -85,7 +85,6 @@ class BrushField {
   const StepStats& last_step() const { return last_; }
   double visible_fraction() const { return brushes_.empty() ? 0.0 : double(last_.visible) / double(brushes_.size()); }
   double respawn_fraction() const { return brushes_.empty() ? 0.0 : double(last_.respawned) / double(brushes_.size()); }
-  void set_motion(const MotionSettings& motion) { motion_ = motion; }
   // Moves every brush to a fresh random place (a new object, a cut in a video).
   void scatter();
 

@@ -140,8 +140,6 @@ Image wash(uint32_t seed) {
 
 }  // namespace
 
-const std::vector<std::string>& brush_shape_names() { return kNames; }
-
 BrushShape brush_shape(const std::string& name) {
   for (size_t i = 0; i < kNames.size(); ++i)
     if (kNames[i] == name) return BrushShape(i);

@@ -15,7 +15,6 @@ inline constexpr int kBrushTextureSize = 64;
 
 // "dot", "stroke", "blotch", "spatter", "wash". Throws inkwire::Error naming the known shapes.
 BrushShape brush_shape(const std::string& name);
-const std::vector<std::string>& brush_shape_names();
 
 // The shape's texture: RGB the paint's shading (bristle streaks), A its coverage. Strokes run
 // along +x, from a loaded start at the left to a dry end at the right.

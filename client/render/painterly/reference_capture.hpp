@@ -32,7 +32,6 @@ class ReferenceCapture {
   // Throws inkwire::Error for unknown styles and for painterly ones: a painting of a painting
   // would recurse.
   void use_renderer(const std::string& name);
-  const std::string& renderer_name() const { return name_; }
   void prepare(const SceneObject& object);
 
   // Draws the object for `frame` into an off-screen canvas the size of the frame's viewport,

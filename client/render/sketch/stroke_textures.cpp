@@ -10,13 +10,6 @@
 
 namespace inkwire {
 
-Medium parse_medium(const std::string& name) {
-  if (name == "pencil") return Medium::Pencil;
-  if (name == "charcoal") return Medium::Charcoal;
-  if (name == "chalk") return Medium::Chalk;
-  throw Error("medium '" + name + "' is not pencil, charcoal or chalk");
-}
-
 namespace {
 
 float smoothstep(float e0, float e1, float x) {

@@ -12,8 +12,6 @@ namespace inkwire {
 
 enum class Medium { Pencil, Charcoal, Chalk };
 
-Medium parse_medium(const std::string& name);  // "pencil", "charcoal", "chalk"
-
 // `variants` strips of `length` x `width` texels (length a power of two, tiling along u).
 std::vector<Image> make_stroke_textures(Medium medium, int variants = 4, int length = 256, int width = 32, uint32_t seed = 7);
 
