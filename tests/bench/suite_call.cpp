@@ -278,9 +278,11 @@ std::vector<Result> run_call_suite(Harness& harness) {
     const fs::path script = fs::path(INKWIRE_SOURCE_DIR) / "tests/web/call_engines_test.py", json = dir / "browsers.json";
     const std::string display = std::system("command -v xvfb-run > /dev/null") == 0 ? "xvfb-run -a -s '-screen 0 1024x768x24' " : "";
     run(display + "/usr/bin/python3 '" + script.string() + "' '" + INKWIRE_BIN_DIR + "' '" + (dir / "browsers").string() + "' --bench '" + json.string() + "'");
-    if (!fs::exists(json)) std::fprintf(stderr, "inkwire-bench: the browsers' call rows did not run: none written\n");
+    // Parsed into a name of its own: a range-for over a member of a temporary would dangle.
+    const nlohmann::json measured = fs::exists(json) ? nlohmann::json::parse(std::ifstream(json)) : nlohmann::json();
+    if (measured.is_null()) std::fprintf(stderr, "inkwire-bench: the browsers' call rows did not run: none written\n");
     else
-      for (const auto& row : nlohmann::json::parse(std::ifstream(json)).at("rows")) {
+      for (const auto& row : measured.at("rows")) {
         Result b{.suite = "call", .renderer = "call", .variant = row.at("variant"), .object = "browser"};
         for (const auto& [key, value] : row.at("counters").items()) b.counters[key] = value.get<double>();
         results.push_back(std::move(b));

@@ -137,6 +137,12 @@ try:
     checks.check(all(d.execute_script(f"return {element}.hasAttribute('joined')") for d in drivers.values()), "both browsers are in the call ('joined')")
     checks.check(names(ada) == ["Ada", "Bea", "Nat"] and names(bea) == ["Ada", "Bea", "Nat"], f"everyone sees everyone: {names(ada)}, {names(bea)}")
     checks.check(level > -60, f"the microphone's level meter moved before joining ({level:.1f} dB)")
+    end = time.time() + 20
+    while time.time() < end and not ada.execute_script(f"return {element}.firstFaceAt"):
+        time.sleep(0.2)
+    module_bytes, joined_at, first_face = ada.execute_script(f"const e = {element}; return [e.tiles.moduleBytes, e.joinedAt, e.firstFaceAt]")
+    print(f"Ada's page: the renderer's module {module_bytes} bytes fetched in pre-join; joined {joined_at:.0f} ms after the page began, "
+          f"the first face drawn {first_face - joined_at:.0f} ms after joining")
 
     # Smiles arrive as smiles (the clips smile from their fourth second on). Watched for 15 s, and
     # on until every smile has come (up to 25 s, while the native member is still in the call): on

@@ -14,7 +14,8 @@
 // dropped, delayMs}: what it heard) and `reason` ('' or why this engine cannot carry its voice);
 // method join() does what the Join button does, hangUp() what Leave does (a lost connection is
 // joined again, under the same name, until then); counters voiceSent and
-// camera.sent say what went out; `firstFaceAt` (performance.now() of the first frame with a face).
+// camera.sent say what went out; `joinedAt` and `firstFaceAt` (performance.now() of joining and
+// of the first frame with a face).
 import { CameraSender, photoOf } from '../call/camera.js';
 import { CallLink, voiceUnsupported } from '../call/voice.js';
 import { CallTiles } from './call/tiles.js';
@@ -169,6 +170,7 @@ export class InkwireCall extends SessionElement {
     this.publish();
     this.prejoin.hidden = true;
     this.grid.hidden = this.controls.hidden = false;
+    this.joinedAt ??= performance.now();
     this.setAttribute('joined', '');
     this.dispatchEvent(new Event('joined'));
     this.showStyle(snapshot.style);
