@@ -21,6 +21,7 @@
 #include "client/call/call_grid.hpp"
 #include "client/gl/gl.hpp"
 #include "client/gl/webgl_context.hpp"
+#include "client/web/module/module_calls.hpp"
 #include "common/error.hpp"
 
 namespace inkwire {
@@ -40,24 +41,6 @@ std::vector<fs::path> write_face(const std::string& stem, uintptr_t address, siz
   std::ofstream(photo, std::ios::binary).write(reinterpret_cast<const char*>(address), std::streamsize(size));
   std::ofstream(landmarks) << landmarks_json;
   return {photo, landmarks};
-}
-
-std::vector<std::string> settings_of(const std::string& settings_json) {
-  std::vector<std::string> settings;
-  for (const json& s : json::parse(settings_json)) settings.push_back(s.get<std::string>());
-  return settings;
-}
-
-template <class Action>
-std::string guarded(Action action) {
-  try {
-    action();
-    return "";
-  } catch (const Error& e) {
-    return e.what();
-  } catch (const std::exception& e) {
-    return std::string("unexpected: ") + e.what();
-  }
 }
 
 std::string expression_json(const std::optional<ExpressionState>& e) {

@@ -20,6 +20,7 @@
 #include "client/render/backdrop.hpp"
 #include "client/render/scene_object.hpp"
 #include "client/render/styles.hpp"
+#include "client/web/module/module_calls.hpp"
 #include "common/camera.hpp"
 #include "common/error.hpp"
 #include "common/glb_mesh.hpp"
@@ -37,11 +38,6 @@ json param_json(const ParamSpec& p) {
   return j;
 }
 
-std::vector<std::string> settings_of(const std::string& settings_json) {
-  std::vector<std::string> settings;
-  for (const auto& s : json::parse(settings_json)) settings.push_back(s.get<std::string>());
-  return settings;
-}
 
 }  // namespace
 
@@ -115,18 +111,6 @@ class SceneView {
   double redraw_hz() const { return redraw_hz_; }
 
  private:
-  template <class Action>
-  std::string guarded(Action action) {
-    try {
-      action();
-      return "";
-    } catch (const Error& e) {
-      return e.what();
-    } catch (const std::exception& e) {
-      return std::string("unexpected: ") + e.what();
-    }
-  }
-
   std::unique_ptr<Context> context_;
   std::string error_;
   std::optional<SceneObject> object_;
