@@ -230,17 +230,28 @@ void Call::voice(uint64_t connection, protocol::VoiceFrame frame) {
 }
 
 void Call::update_speakers(Clock::time_point now) {
-  // The K loudest of those who spoke lately; the roster says who they are.
-  std::vector<Member*> talking;
-  for (auto& [id, m] : members_)
-    if (m->entry.microphone && now - m->last_voice < kSpeakingHold) talking.push_back(m.get());
-  std::sort(talking.begin(), talking.end(), [](const Member* a, const Member* b) { return a->level_db > b->level_db; });
+  // The K loudest of those who spoke lately, on this instance and the others alike (each
+  // instance shares its own loudest: the call's loudest are among them); the roster says who.
+  struct Talker {
+    float level_db;
+    protocol::CallMember* entry;
+  };
+  std::vector<Talker> talking, everyone;
+  for (auto& [id, m] : members_) {
+    everyone.push_back({m->level_db, &m->entry});
+    if (m->entry.microphone && now - m->last_voice < kSpeakingHold) talking.push_back(everyone.back());
+  }
+  for (auto& [key, r] : remotes_) {
+    everyone.push_back({r.level_db, &r.entry});
+    if (r.entry.microphone && now - r.last_voice < kSpeakingHold) talking.push_back(everyone.back());
+  }
+  std::sort(talking.begin(), talking.end(), [](const Talker& a, const Talker& b) { return a.level_db > b.level_db; });
   if (talking.size() > size_t(options_.loudest)) talking.resize(size_t(options_.loudest));
   bool changed = false;
-  for (auto& [id, m] : members_) {
-    const bool speaking = std::find(talking.begin(), talking.end(), m.get()) != talking.end();
-    changed |= speaking != m->entry.speaking;
-    m->entry.speaking = speaking;
+  for (const Talker& t : everyone) {
+    const bool speaking = std::any_of(talking.begin(), talking.end(), [&](const Talker& k) { return k.entry == t.entry; });
+    changed |= speaking != t.entry->speaking;
+    t.entry->speaking = speaking;
   }
   if (changed) send_roster();
 }
@@ -340,9 +351,11 @@ void Call::remote(const CallShare& share) {
     for (const protocol::CallMember& m : roster->members) {
       Remote* r = remote_member(share.origin, m.member, true);
       const uint16_t local = r->entry.member;
+      const bool speaking = r->entry.speaking;  // among the call's loudest: this instance's reading
       std::vector<protocol::AssetAnnounce> assets = std::move(r->entry.assets);  // its photo comes on its own
       r->entry = m;
       r->entry.member = local;
+      r->entry.speaking = speaking;
       r->entry.assets = std::move(assets);
       r->heard = now;
     }
@@ -358,6 +371,15 @@ void Call::remote(const CallShare& share) {
   if (!r) return;  // not in a roster heard yet: its next roster brings it
   *member = r->entry.member;
   r->heard = now;
+  if (const auto* voice = std::get_if<protocol::VoiceFrame>(&message)) {
+    // Its origin shared it as one of its own loudest; here it plays only if among the call's.
+    const auto reading = r->voice.read(voice->opus);
+    if (!reading) return;
+    r->level_db = std::max(reading->level_db, r->level_db - kLevelDecayDb);
+    if (reading->level_db > VoiceAnalysis::kSilenceDb) r->last_voice = now;
+    update_speakers(now);
+    if (!r->entry.speaking) return;
+  }
   const auto frame = std::make_shared<const Bytes>(protocol::encode(message));
   for (const auto& [id, m] : members_)
     if (const auto c = m->connection.lock()) {

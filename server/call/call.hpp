@@ -110,10 +110,15 @@ class Call {
   void share_roster();
 
   // Members of other instances: their entry under a number of this instance, their photo's bytes.
+  // Their voice is read here too (level, when last heard), so every instance picks the same
+  // loudest few across the whole call (SPEC F19), not a few of its own each.
   struct Remote {
     protocol::CallMember entry;
     std::map<protocol::Hash, protocol::Bytes> asset_bytes;
     Clock::time_point heard;
+    VoiceAnalysis voice;
+    float level_db = -100;
+    Clock::time_point last_voice{};
   };
   std::map<std::pair<std::string, uint16_t>, Remote> remotes_;  // by (origin, the origin's number)
   Remote* remote_member(const std::string& origin, uint16_t number, bool create);

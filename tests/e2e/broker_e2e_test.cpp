@@ -278,6 +278,37 @@ TEST_F(BrokerE2ETest, AMemberPublishingOnOneInstanceIsSeenAndHeardOnTheOther) {
   EXPECT_TRUE(eventually([&] { return !named(listener.roster(), "Ada"); })) << "Ada left instance one but stays in instance two's roster";
 }
 
+// One loudest-K across the call, not K per instance (SPEC F19): with call_loudest 1, Ada speaking
+// softly on instance one and Bea loudly on instance two, a listener on instance one hears Bea
+// alone (before, each instance relayed its own loudest: both).
+TEST_F(BrokerE2ETest, TheLoudestFewAreTheCallsWhicheverInstanceTheySpeakOn) {
+  const fs::path dir = output_dir("broker-loudest");
+  with_instance_folders(dir);
+  BrokerUnderTest broker(dir);
+  nlohmann::json first = instance_config("one", broker, {{{"name", "call"}, {"kind", "conference"}}}), second = instance_config("two", broker, nlohmann::json::array());
+  first["call_loudest"] = second["call_loudest"] = 1;
+  ServerUnderTest one(dir / "one", first), two(dir / "two", second);
+  ASSERT_TRUE(eventually([&] { return count_events(two, "session-added") == 1; })) << two.process().output();
+  SessionClient listener(one.address(), "Listener"), ada(one.address(), "Ada"), bea(two.address(), "Bea");
+  for (SessionClient* c : {&listener, &ada, &bea}) c->join("call", "");
+  ada.send(protocol::Publish{.camera = false, .microphone = true});
+  bea.send(protocol::Publish{.camera = false, .microphone = true});
+  ASSERT_TRUE(eventually([&] { return named(listener.roster(), "Ada") && named(listener.roster(), "Bea"); }));
+  const uint16_t ada_number = named(listener.roster(), "Ada")->member, bea_number = named(listener.roster(), "Bea")->member;
+  const auto soft = voice_packets(100, 0.1f), loud = voice_packets(100, 1.0f);
+  for (int k = 0; k < 100; ++k) {
+    ada.send(protocol::VoiceFrame{.member = 0, .time_ms = uint32_t(k * 20), .opus = soft[size_t(k)]});
+    bea.send(protocol::VoiceFrame{.member = 0, .time_ms = uint32_t(k * 20), .opus = loud[size_t(k)]});
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  size_t from_ada = 0, from_bea = 0;
+  for (const auto& [v, arrived] : listener.take_voice()) (v.member == ada_number ? from_ada : v.member == bea_number ? from_bea : from_ada) += 1;
+  std::printf("  the listener heard %zu of Bea's packets (loud, instance two) and %zu of Ada's (soft, its own instance)\n", from_bea, from_ada);
+  EXPECT_GE(from_bea, 80u) << "the loudest speaker of the call, on the other instance, is not heard";
+  EXPECT_LE(from_ada, 10u) << "the listener's own instance relayed its own loudest beside the call's";
+}
+
 // A broker that stops answering without closing its sockets (SIGSTOP) is noticed by the PING
 // heartbeat within its deadline (3 s): the instance says so and serves its own members; when the
 // broker answers again, changes flow between the instances again.

@@ -110,8 +110,9 @@ inline std::unique_ptr<Process> headless_client(const ServerUnderTest& server, c
       dir / (name + ".log"));
 }
 
-// Calls: `count` 20 ms Opus packets (12 kbit/s) of a voiced buzz, as a member's microphone sends them.
-inline std::vector<protocol::Bytes> voice_packets(int count) {
+// Calls: `count` 20 ms Opus packets (12 kbit/s) of a voiced buzz, as a member's microphone sends them
+// (`gain` 1: about -13 dBFS).
+inline std::vector<protocol::Bytes> voice_packets(int count, float gain = 1.0f) {
   int error = 0;
   OpusEncoder* encoder = opus_encoder_create(48000, 1, OPUS_APPLICATION_VOIP, &error);
   opus_encoder_ctl(encoder, OPUS_SET_BITRATE(12000));
@@ -120,7 +121,7 @@ inline std::vector<protocol::Bytes> voice_packets(int count) {
   for (int k = 0; k < count; ++k) {
     for (int i = 0; i < 960; ++i) {
       const float t = float(k * 960 + i) / 48000.0f;
-      pcm[size_t(i)] = 0.3f * std::sin(2 * 3.14159265f * 180 * t) + 0.15f * std::sin(2 * 3.14159265f * 720 * t);
+      pcm[size_t(i)] = gain * (0.3f * std::sin(2 * 3.14159265f * 180 * t) + 0.15f * std::sin(2 * 3.14159265f * 720 * t));
     }
     protocol::Bytes out(400);
     out.resize(size_t(opus_encode_float(encoder, pcm.data(), 960, out.data(), opus_int32(out.size()))));
