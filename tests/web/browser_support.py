@@ -48,6 +48,18 @@ def chromium(out, width, height, extra=()):
     return webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
 
 
+def face_frames(folder, neutral, smile, seconds):
+    """A camera for a call member: a folder of frames at 15 fps, `neutral` for seconds[0] and then
+    `smile` for seconds[1] (links to the two photos)."""
+    os.makedirs(folder)
+    frame = 0
+    for photo, count in ((neutral, seconds[0] * 15), (smile, seconds[1] * 15)):
+        for _ in range(count):
+            os.symlink(photo, os.path.join(folder, f"{frame:04d}{os.path.splitext(photo)[1]}"))
+            frame += 1
+    return folder
+
+
 ENGINES = ("chromium", "firefox", "webkit")
 HERE = os.path.dirname(os.path.abspath(__file__))
 MINIBROWSER = "/usr/lib/x86_64-linux-gnu/webkit2gtk-4.1/MiniBrowser"

@@ -26,7 +26,7 @@ import time
 import wave
 
 sys.path.insert(0, os.path.dirname(__file__))
-from browser_support import Checks, Server, chromium, skip  # skips without the browser
+from browser_support import Checks, Server, chromium, face_frames, skip  # skips without the browser
 
 BIN, OUT = sys.argv[1], sys.argv[2]
 YALE = os.path.join(os.path.dirname(__file__), "..", "..", "..", "shared", "data", "yalefaces")
@@ -46,13 +46,7 @@ if not yale:
 
 def face_clip(name, neutral, smile, seconds=(3, 9)):
     """A folder of frames and a y4m of them at 15 fps: `neutral` for seconds[0], then `smile`."""
-    folder = os.path.join(OUT, name)
-    os.makedirs(folder)
-    frame = 0
-    for photo, count in ((neutral, seconds[0] * 15), (smile, seconds[1] * 15)):
-        for _ in range(count):
-            os.symlink(photo, os.path.join(folder, f"{frame:04d}{os.path.splitext(photo)[1]}"))
-            frame += 1
+    folder = face_frames(os.path.join(OUT, name), neutral, smile, seconds)
     y4m = os.path.join(OUT, f"{name}.y4m")
     subprocess.run(["ffmpeg", "-v", "error", "-y", "-framerate", "15", "-i", os.path.join(folder, "%04d" + os.path.splitext(neutral)[1]),
                     "-vf", "scale=320:240:force_original_aspect_ratio=decrease,pad=320:240:(ow-iw)/2:(oh-ih)/2,format=yuv420p", y4m], check=True)

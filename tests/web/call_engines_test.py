@@ -31,7 +31,7 @@ import time
 import wave
 
 sys.path.insert(0, os.path.dirname(__file__))
-from browser_support import ENGINES, Checks, Server, engine, engine_missing, skip  # skips without Chromium's tooling
+from browser_support import ENGINES, Checks, Server, engine, engine_missing, face_frames, skip  # skips without Chromium's tooling
 
 BIN, OUT = sys.argv[1], sys.argv[2]
 args = sys.argv[3:]
@@ -62,18 +62,6 @@ if not yale:
     print("../shared/data/yalefaces is absent: libdlib's photos stand in and the expression change is not checked")
 STALL_SECONDS = 16
 MAX_DELAY_MS = 300  # client/web/call/playout.js kMaxDelayMs
-
-
-def face_clip(name, neutral, smile, seconds):
-    """A folder of frames at 15 fps: `neutral` for seconds[0], then `smile` for seconds[1]."""
-    folder = os.path.join(OUT, name)
-    os.makedirs(folder)
-    frame = 0
-    for photo, count in ((neutral, seconds[0] * 15), (smile, seconds[1] * 15)):
-        for _ in range(count):
-            os.symlink(photo, os.path.join(folder, f"{frame:04d}{os.path.splitext(photo)[1]}"))
-            frame += 1
-    return folder
 
 
 def read_wav(path):
@@ -153,7 +141,7 @@ try:
                 time.sleep(0.2)
             # The native member: its camera turns from neutral to a smile after 4 s, it speaks for its whole stay.
             native = subprocess.Popen([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{server.tcp}", "--session", f"call-{name}", "--name", "Nat",
-                                       "--camera", face_clip(f"nat-{name}", *faces, (4, 60)), "--microphone", nat_wav, "--headless",
+                                       "--camera", face_frames(os.path.join(OUT, f"nat-{name}"), *faces, (4, 60)), "--microphone", nat_wav, "--headless",
                                        "--frames", str(15 * 55), "--fps", "15", "--size", "320x240", "--out", os.path.join(out, "nat.mp4"),
                                        "--audio-out", os.path.join(out, "nat-heard.wav"), "--frame-log", os.path.join(out, "nat.jsonl"),
                                        "--cache", os.path.join(out, "cache-nat")], stderr=open(os.path.join(out, "nat.log"), "w"))
