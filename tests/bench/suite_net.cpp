@@ -79,22 +79,28 @@ Result run_load(const LoadShape& shape, const std::string& data_dir) {
   return r;
 }
 
-// After a turntable session's assets are downloaded, one interaction (the viewer turns the
-// object: one pose to the session) costs what crosses the wire for it.
-Result turntable_interaction(const std::string& data_dir) {
+// After a turntable session's assets are downloaded, one interaction costs what crosses the wire
+// for it: an editor turning the product for everyone (one pose to the session), and a visitor
+// turning its own view (nothing: the view is the visitor's own, SPEC T13). A visitor's pose to the
+// session is refused (it may not change what others see), so it is not what is measured.
+std::vector<Result> turntable_interaction(const std::string& data_dir) {
+  constexpr const char* kEditorToken = "bench-editor";
   asio::io_context server_io(1);
   server::ServerConfig config = server::ServerConfig::embedded_default();
   config.port = 0;
   config.data_dir = data_dir;
+  for (server::SessionConfig& s : config.sessions)
+    if (s.name == "turntable") s.editor_token = kEditorToken;
   server::Server server(server_io, config);
   server.start();
   std::thread server_thread([&] { server_io.run(); });
-  Result r;
+  Result r, own;
   r.suite = "net", r.renderer = "net", r.variant = "turntable-interaction", r.object = "-";
+  own.suite = "net", own.renderer = "net", own.variant = "turntable-visitor-view", own.object = "-";
   {
     const std::string address = "127.0.0.1:" + std::to_string(server.port());
-    SessionClient viewer(address, "viewer"), other(address, "other");
-    const Snapshot state = viewer.join("turntable", "");
+    SessionClient viewer(address, "editor"), other(address, "visitor");
+    const Snapshot state = viewer.join("turntable", kEditorToken);
     other.join("turntable", "");
     AssetCache cache(data_dir + "-cache");
     viewer.fetch_assets(state, cache);
@@ -108,11 +114,16 @@ Result turntable_interaction(const std::string& data_dir) {
       other.wait_for_update(other.updates(), std::chrono::milliseconds(100));
     const double per = double(viewer.bytes_sent() - sent0 + viewer.bytes_received() - received0) / interactions;
     r.counters = {{"bytes_per_interaction", per}, {"download_bytes", double(download)},
-                  {"assets", double(state.assets.size())}};
+                  {"assets", double(state.assets.size())}, {"refused", double(viewer.refusals())}};
+    // The visitor turns its own view as often: its client draws it and sends nothing.
+    const uint64_t visitor0 = other.bytes_sent() + other.bytes_received();
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    own.counters = {{"bytes_per_interaction", double(other.bytes_sent() + other.bytes_received() - visitor0) / interactions},
+                    {"refused", double(other.refusals())}};
   }
   asio::post(server_io, [&] { server.stop(); });
   server_thread.join();
-  return r;
+  return {r, own};
 }
 
 // The machine's own pauses: two threads (one per core, as the server and the clients use)
@@ -165,7 +176,7 @@ std::vector<Result> run_net_suite(Harness& harness) {
                  c.at("msgs_per_second"), c.at("p50_ms"), c.at("p99_ms"), c.at("stalls"), c.at("delivered_fraction"));
   }
   for (Result& r : run_net_instance_rows(base)) results.push_back(std::move(r));
-  results.push_back(turntable_interaction(base + "/turntable"));
+  for (Result& r : turntable_interaction(base + "/turntable")) results.push_back(std::move(r));
   results.push_back(machine_pauses(5));
   const auto& pauses = results.back().counters;
   std::fprintf(stderr, "  net machine pauses: %.0f over %.1f ms, longest %.2f ms, %.2f%% of the time\n", pauses.at("pauses"), kPauseMs,

@@ -13,12 +13,13 @@
 // 'fetch-asset', id, asset}, {op: 'close'}, {op: 'cut'} (the socket closed as a lost network would,
 // for tests), {op: 'status'} (answered at once). To the page: {op: 'ready', reason} once, {op:
 // 'event', type, detail} for the session's events, {op: 'asset', id, bytes | error}, and
-// {op: 'status', voiceSent, voiceReceived, encoderErrors, decoderErrors} twice a second.
+// {op: 'status', voiceSent, voiceReceived, voiceGapMs, encoderErrors, decoderErrors, ringFull}
+// twice a second.
 import { Session } from '../net/session.js';
 import { PacketRing, SampleRing } from './audio_ring.js';
 
 const kOpusRate = 48000, kBitrate = 10000, kFrameMs = 60;  // as client/call/publisher.hpp
-const kForwarded = ['snapshot', 'roster', 'member-face', 'face-region', 'permissions', 'state', 'tween-data', 'refused', 'error', 'close'];
+const kForwarded = ['snapshot', 'roster', 'member-face', 'face-region', 'permissions', 'state', 'refused', 'error', 'close'];
 
 let session = null, joined = false, sending = false, clockOrigin = 0, encoder = null, playout = null, playoutRing = null;
 const decoders = new Map();  // member -> {decoder, pending: [time_ms]}
