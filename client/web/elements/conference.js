@@ -6,7 +6,7 @@
 // fitted and centred. Property `expression` ({code, name, intensity}); attribute `loaded` once the
 // face is drawn.
 import { AssetKind } from '../net/session.js';
-import { lendBytes, loadRenderModule, SessionElement } from './session_element.js';
+import { fitCanvas, lendBytes, loadRenderModule, SessionElement } from './session_element.js';
 
 const template = `
 <style>
@@ -84,9 +84,7 @@ export class InkwireConference extends SessionElement {
 
   draw(now = performance.now() / 1000) {
     if (!this.view || !this.faceShown) return;
-    const ratio = window.devicePixelRatio || 1, canvas = this.canvas;
-    const width = Math.max(1, Math.round(canvas.clientWidth * ratio)), height = Math.max(1, Math.round(canvas.clientHeight * ratio));
-    if (canvas.width !== width || canvas.height !== height) canvas.width = width, canvas.height = height;
+    fitCanvas(this.canvas);
     const reason = this.view.draw(now);
     if (reason) this.fail(reason);
   }

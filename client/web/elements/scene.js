@@ -8,7 +8,7 @@
 // controls are off with the reason beside them); `loaded` once the module and
 // model are there and the first frame is drawn. Properties: styleName, settings (object),
 // camera ({azimuth, elevation, distance}); setting them changes the session as the panel would.
-import { lendBytes, loadRenderModule, SessionElement } from './session_element.js';
+import { fitCanvas, lendBytes, loadRenderModule, SessionElement } from './session_element.js';
 import { AssetKind } from '../net/session.js';
 import { ScenePanel } from './scene/panel.js';
 
@@ -212,9 +212,7 @@ export class InkwireScene extends SessionElement {
   // by default the time since the element started.
   draw(seconds) {
     if (!this.view) return;
-    const ratio = window.devicePixelRatio || 1;
-    const width = Math.max(1, Math.round(this.canvas.clientWidth * ratio)), height = Math.max(1, Math.round(this.canvas.clientHeight * ratio));
-    if (this.canvas.width !== width || this.canvas.height !== height) this.canvas.width = width, this.canvas.height = height;
+    fitCanvas(this.canvas);
     const reason = this.view.draw(seconds ?? (performance.now() - this.startedAt) / 1000);
     if (reason) this.message.textContent = reason;
     this.framesDrawn = (this.framesDrawn ?? 0) + 1;

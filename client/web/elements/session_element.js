@@ -38,6 +38,16 @@ export async function loadRenderModule(server, canvas) {
   return { module, bytes };
 }
 
+// Sizes `canvas` to its box at the device pixel ratio; true when its size changed (which clears
+// its drawing buffer: a frame is due).
+export function fitCanvas(canvas) {
+  const ratio = window.devicePixelRatio || 1;
+  const width = Math.max(1, Math.round(canvas.clientWidth * ratio)), height = Math.max(1, Math.round(canvas.clientHeight * ratio));
+  if (canvas.width === width && canvas.height === height) return false;
+  canvas.width = width, canvas.height = height;
+  return true;
+}
+
 // `bytes` lent to the module for as long as `use(address, size)` reads them.
 export function lendBytes(module, bytes, use) {
   const address = module._malloc(Math.max(1, bytes.length));
@@ -117,9 +127,9 @@ export class SessionElement extends HTMLElement {
 
   // Sizes the canvas to its box at the device pixel ratio and clears it to white; [width, height].
   beginFrame() {
-    const gl = this.gl, ratio = window.devicePixelRatio || 1;
-    const width = Math.max(1, Math.round(this.canvas.clientWidth * ratio)), height = Math.max(1, Math.round(this.canvas.clientHeight * ratio));
-    if (this.canvas.width !== width || this.canvas.height !== height) this.canvas.width = width, this.canvas.height = height;
+    const gl = this.gl;
+    fitCanvas(this.canvas);
+    const { width, height } = this.canvas;
     gl.viewport(0, 0, width, height);
     gl.clearColor(1, 1, 1, 1);
     gl.clearDepth(1);

@@ -4,7 +4,7 @@
 // own text under the tiles. Made in pre-join, so the module is there when the call is. The grid is
 // drawn again only when something changed, a face is tweening or a style paints frame after
 // frame: a call's page has camera crops to make on its thread too.
-import { lendBytes, loadRenderModule } from '../session_element.js';
+import { fitCanvas, lendBytes, loadRenderModule } from '../session_element.js';
 
 export class CallTiles {
   constructor(canvas, captions) {
@@ -16,12 +16,7 @@ export class CallTiles {
   }
 
   // Whether the next animation frame has anything new to draw.
-  due() {
-    const ratio = window.devicePixelRatio || 1;
-    const resized = this.canvas.width !== Math.max(1, Math.round(this.canvas.clientWidth * ratio)) ||
-                    this.canvas.height !== Math.max(1, Math.round(this.canvas.clientHeight * ratio));
-    return this.changed || resized || performance.now() < this.tweenUntil || this.view.animates();
-  }
+  due() { return fitCanvas(this.canvas) || this.changed || performance.now() < this.tweenUntil || this.view.animates(); }
 
   // Loads the module from `server` (a ws:// address); throws with the reason it cannot.
   async load(server) {
@@ -62,9 +57,8 @@ export class CallTiles {
   // One frame at the canvas's size in device pixels, then the captions under the tiles. Returns
   // whether a face was drawn.
   draw(seconds) {
-    const ratio = window.devicePixelRatio || 1, canvas = this.canvas;
-    const width = Math.max(1, Math.round(canvas.clientWidth * ratio)), height = Math.max(1, Math.round(canvas.clientHeight * ratio));
-    if (canvas.width !== width || canvas.height !== height) canvas.width = width, canvas.height = height;
+    fitCanvas(this.canvas);
+    const ratio = window.devicePixelRatio || 1;
     const reason = this.view.draw(seconds);
     if (reason) throw new Error(reason);
     this.changed = false;
