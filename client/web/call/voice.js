@@ -70,8 +70,21 @@ export class CallLink {
     this.audio = voiceUnsupported() ? null : this.buildAudio();
   }
 
-  // One context at Opus's 48 kHz when the engine allows it with a microphone, else the device's
-  // own rate (the worklets resample).
+  // Joins a worklet `node` to the worker as its `which` ('capture' or 'playout'): through `ring`
+  // (a SharedArrayBuffer; `layout` what both need to read it) on an isolated page, else through a
+  // MessagePort of their own.
+  joinToWorker(node, which, ring, layout = {}) {
+    if (ring) {
+      node.port.postMessage({ ring, ...layout });
+      this.worker.postMessage({ op: 'rings', [which]: ring, ...layout });
+    } else {
+      const channel = new MessageChannel();
+      node.port.postMessage({ worker: channel.port1 }, [channel.port1]);
+      this.worker.postMessage({ op: 'ports', [which]: channel.port2 }, [channel.port2]);
+    }
+  }
+
+  // One context at Opus's 48 kHz (the worklets resample, should an engine run it at another rate).
   async buildAudio() {
     const context = (this.context = new AudioContext({ sampleRate: 48000 }));
     const base = new URL('.', import.meta.url);
@@ -79,15 +92,8 @@ export class CallLink {
     this.playout = new AudioWorkletNode(context, 'inkwire-playout', { numberOfInputs: 0, outputChannelCount: [1] });
     this.playout.connect(context.destination);
     this.playout.port.onmessage = (e) => this.fromPlayout(e.data);
-    if (this.shared) {
-      const ring = new SharedArrayBuffer(PacketRing.bytes(kPlayoutSlots, kPacketSamples));
-      this.playout.port.postMessage({ ring, slots: kPlayoutSlots, maxSamples: kPacketSamples });
-      this.worker.postMessage({ op: 'rings', playout: ring, slots: kPlayoutSlots, maxSamples: kPacketSamples });
-    } else {
-      const toPlayout = new MessageChannel();
-      this.playout.port.postMessage({ worker: toPlayout.port1 }, [toPlayout.port1]);
-      this.worker.postMessage({ op: 'ports', playout: toPlayout.port2 }, [toPlayout.port2]);
-    }
+    this.joinToWorker(this.playout, 'playout', this.shared && new SharedArrayBuffer(PacketRing.bytes(kPlayoutSlots, kPacketSamples)),
+                      { slots: kPlayoutSlots, maxSamples: kPacketSamples });
     context.resume().catch(() => {});
     return context;
   }
@@ -102,17 +108,9 @@ export class CallLink {
     } catch (error) {
       throw new Error(`this browser cannot read the microphone into its audio graph (${error.message})`);
     }
-    const node = (this.captureNode = new AudioWorkletNode(context, 'inkwire-capture', { numberOfOutputs: 1, outputChannelCount: [1] }));
+    const node = new AudioWorkletNode(context, 'inkwire-capture', { numberOfOutputs: 1, outputChannelCount: [1] });
     node.port.onmessage = (e) => this.onLevel?.(e.data.level);
-    if (this.shared) {
-      const ring = new SharedArrayBuffer(SampleRing.bytes(kCaptureRingFrames));
-      node.port.postMessage({ ring });
-      this.worker.postMessage({ op: 'rings', capture: ring });
-    } else {
-      const toWorker = new MessageChannel();
-      node.port.postMessage({ worker: toWorker.port1 }, [toWorker.port1]);
-      this.worker.postMessage({ op: 'ports', capture: toWorker.port2 }, [toWorker.port2]);
-    }
+    this.joinToWorker(node, 'capture', this.shared && new SharedArrayBuffer(SampleRing.bytes(kCaptureRingFrames)));
     source.connect(node);
     // Pulled by the graph through a silent gain: a capture node must reach the destination to run.
     const silent = context.createGain();
