@@ -20,8 +20,7 @@
 
 #include "client/call/call_grid.hpp"
 #include "client/gl/gl.hpp"
-#include "client/gl/webgl_context.hpp"
-#include "client/web/module/module_calls.hpp"
+#include "client/web/module/module_class.hpp"
 #include "common/error.hpp"
 
 namespace inkwire {
@@ -58,14 +57,8 @@ std::string expression_names_json() {
 
 class CallGridView {
  public:
-  explicit CallGridView(const std::string& canvas_selector) {
-    try {
-      context_ = create_webgl_context(canvas_selector);
-    } catch (const Error& e) {
-      error_ = e.what();
-    }
-  }
-  std::string error() const { return error_; }
+  explicit CallGridView(const std::string& canvas_selector) : canvas_(canvas_selector) {}
+  std::string error() const { return canvas_.error(); }
 
   // A member's neutral photo (JPEG or PNG, `size` bytes at `address`) and its landmarks (the
   // server's JSON): the member's tile shows a face from the next set_roster() on.
@@ -109,10 +102,7 @@ class CallGridView {
   // One frame of the grid at `time_seconds` into the canvas's drawing buffer.
   std::string draw(double time_seconds) {
     return guarded([&] {
-      if (!context_) throw Error(error_);
-      const glm::ivec2 size = context_->framebuffer_size();
-      gl::glBindFramebuffer(GL_FRAMEBUFFER, 0);
-      gl::glViewport(0, 0, size.x, size.y);
+      const glm::ivec2 size = canvas_.begin_frame();
       grid_.draw(size, time_seconds, nullptr);
     });
   }
@@ -133,8 +123,7 @@ class CallGridView {
   std::string member_expression_json(int member) const { return expression_json(grid_.expression(uint16_t(member))); }
 
  private:
-  std::unique_ptr<Context> context_;
-  std::string error_;
+  ModuleCanvas canvas_;
   CallGrid grid_;
   std::map<uint16_t, std::vector<fs::path>> files_;
   std::map<int, int> versions_;
@@ -144,14 +133,8 @@ class CallGridView {
 // client's SessionView shows a conference session.
 class FaceView {
  public:
-  explicit FaceView(const std::string& canvas_selector) {
-    try {
-      context_ = create_webgl_context(canvas_selector);
-    } catch (const Error& e) {
-      error_ = e.what();
-    }
-  }
-  std::string error() const { return error_; }
+  explicit FaceView(const std::string& canvas_selector) : canvas_(canvas_selector) {}
+  std::string error() const { return canvas_.error(); }
 
   // The speaker's neutral photo (`size` bytes at `address`) and its landmarks' JSON.
   std::string set_face(uintptr_t address, size_t size, const std::string& landmarks_json) {
@@ -179,10 +162,7 @@ class FaceView {
 
   std::string draw(double time_seconds) {
     return guarded([&] {
-      if (!context_) throw Error(error_);
-      const glm::ivec2 size = context_->framebuffer_size();
-      gl::glBindFramebuffer(GL_FRAMEBUFFER, 0);
-      gl::glViewport(0, 0, size.x, size.y);
+      const glm::ivec2 size = canvas_.begin_frame();
       gl::glClearColor(1, 1, 1, 1);
       gl::glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
       if (view_) view_->draw(size, time_seconds);
@@ -195,8 +175,7 @@ class FaceView {
   std::string expression() const { return expression_json(view_ ? std::optional(view_->expression()) : std::nullopt); }
 
  private:
-  std::unique_ptr<Context> context_;
-  std::string error_;
+  ModuleCanvas canvas_;
   std::optional<ConferenceView> view_;
   std::string renderer_ = "default";
   std::vector<std::string> settings_;

@@ -16,11 +16,10 @@
 #include <nlohmann/json.hpp>
 
 #include "client/gl/gl.hpp"
-#include "client/gl/webgl_context.hpp"
 #include "client/render/backdrop.hpp"
 #include "client/render/scene_object.hpp"
 #include "client/render/styles.hpp"
-#include "client/web/module/module_calls.hpp"
+#include "client/web/module/module_class.hpp"
 #include "common/camera.hpp"
 #include "common/error.hpp"
 #include "common/glb_mesh.hpp"
@@ -45,14 +44,8 @@ json param_json(const ParamSpec& p) {
 // Every call that can fail returns "" or a one-line reason; nothing throws into JavaScript.
 class SceneView {
  public:
-  explicit SceneView(const std::string& canvas_selector) {
-    try {
-      context_ = create_webgl_context(canvas_selector);
-    } catch (const Error& e) {
-      error_ = e.what();
-    }
-  }
-  std::string error() const { return error_; }
+  explicit SceneView(const std::string& canvas_selector) : canvas_(canvas_selector) {}
+  std::string error() const { return canvas_.error(); }
 
   // The session's model, a GLB (the server sends every mesh as one), at `address` in the
   // module's memory.
@@ -90,10 +83,7 @@ class SceneView {
   // One frame at `time_seconds` of animation time into the canvas's drawing buffer.
   std::string draw(double time_seconds) {
     return guarded([&] {
-      if (!context_) throw Error(error_);
-      const glm::ivec2 size = context_->framebuffer_size();
-      gl::glBindFramebuffer(GL_FRAMEBUFFER, 0);
-      gl::glViewport(0, 0, size.x, size.y);
+      const glm::ivec2 size = canvas_.begin_frame();
       if (!backdrop_) backdrop_.emplace(BackdropSpec::parse("paper"));
       backdrop_->draw();
       if (!object_ || !renderer_) return;
@@ -111,8 +101,7 @@ class SceneView {
   double redraw_hz() const { return redraw_hz_; }
 
  private:
-  std::unique_ptr<Context> context_;
-  std::string error_;
+  ModuleCanvas canvas_;
   std::optional<SceneObject> object_;
   std::unique_ptr<Renderer> renderer_;
   std::optional<Backdrop> backdrop_;
