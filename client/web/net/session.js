@@ -23,6 +23,9 @@ export class Session extends EventTarget {
     this.token = token;
     this.bytesSent = 0;
     this.bytesReceived = 0;
+    // Of those, the heartbeat's (the server's pings and our pongs), which flow whatever the
+    // person does: what an action costs is the rest.
+    this.keepAliveBytes = { sent: 0, received: 0 };
     this.waiting = new Map();  // hash hex -> {reject, chunk}
     this.receivedBy = new Map();  // hash hex -> bytesReceived when its download completed
     this.socket = new WebSocket(url);
@@ -45,6 +48,7 @@ export class Session extends EventTarget {
   send(message) {
     const frame = encode(message);
     this.bytesSent += frame.length;
+    if (message.type === 'pong') this.keepAliveBytes.sent += frame.length;
     this.socket.send(frame);
   }
 
@@ -64,7 +68,10 @@ export class Session extends EventTarget {
       return this.fail(`malformed data from the server: ${e.message}`);
     }
     if (m.type === 'welcome') this.send({ type: 'join', session: this.session, token: this.token });
-    else if (m.type === 'ping') this.send({ type: 'pong', nonce: m.nonce });
+    else if (m.type === 'ping') {
+      this.keepAliveBytes.received += data.byteLength;
+      this.send({ type: 'pong', nonce: m.nonce });
+    }
     else if (m.type === 'snapshot') this.dispatchEvent(new CustomEvent('snapshot', { detail: m }));
     else if (m.type === 'tween-data') this.dispatchEvent(new CustomEvent('tween-data', { detail: m }));
     else if (m.type === 'expression-code' || m.type === 'style-change' || m.type === 'camera-pose' || m.type === 'object-pose')
