@@ -261,6 +261,24 @@ void serialise(Stream& s, FaceCrop& m) {
 }
 
 template <class Stream>
+void serialise(Stream& s, FaceVideo& m) {
+  s.u32(m.time_ms);
+  s.u32(m.sequence);
+  for (uint16_t* v : {&m.frame_width, &m.frame_height, &m.x, &m.y, &m.width, &m.height}) s.u16(*v);
+  flag(s, m.key, "face video key");
+  s.blob(m.vp8, kMaxVideoFrameBytes);
+  if constexpr (Stream::reading) {
+    check(m.frame_width >= 16 && m.frame_height >= 16 && m.frame_width <= 4096 && m.frame_height <= 4096, "face video: frame size outside 16..4096");
+    check(m.width >= 8 && m.height >= 8 && uint32_t(m.x) + m.width <= m.frame_width && uint32_t(m.y) + m.height <= m.frame_height,
+          "face video: rectangle outside its frame");
+    check(!m.vp8.empty(), "empty face video frame");
+  }
+}
+
+template <class Stream>
+void serialise(Stream&, KeyFrameRequest&) {}
+
+template <class Stream>
 void serialise(Stream& s, FaceRegion& m) {
   flag(s, m.found, "face region found");
   for (uint16_t* v : {&m.x, &m.y, &m.width, &m.height}) s.u16(*v);
@@ -365,7 +383,8 @@ const char* name_of(MessageType type) {
   static const char* names[] = {"hello", "welcome", "error", "ping", "pong", "join", "leave", "snapshot",
                                 "style-change", "camera-pose", "object-pose", "expression-code", "tween-data",
                                 "asset-announce", "asset-request", "asset-chunk", "publish", "neutral-photo",
-                                "face-crop", "face-region", "voice-frame", "member-face", "roster", "permissions"};
+                                "face-crop", "face-region", "voice-frame", "member-face", "roster", "permissions",
+                                "face-video", "key-frame-request"};
   const auto i = unsigned(type);
   return i >= 1 && i <= kMessageTypes ? names[i - 1] : "unknown";
 }

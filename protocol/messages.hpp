@@ -18,7 +18,8 @@
 namespace inkwire::protocol {
 
 inline constexpr uint32_t kMagic = 0x574B4E49;  // the bytes "INKW" read as a little-endian u32
-inline constexpr uint16_t kVersion = 5;  // 2: snapshots describe a turntable's product; 3: calls, refused changes; 4: zoom levels; 5: permissions
+inline constexpr uint16_t kVersion = 6;  // 2: snapshots describe a turntable's product; 3: calls, refused changes; 4: zoom levels; 5: permissions;
+                                         // 6: face video
 
 inline constexpr size_t kMaxName = 64;           // session, client and server names
 inline constexpr size_t kMaxToken = 128;
@@ -36,6 +37,8 @@ inline constexpr uint64_t kMaxAssetBytes = uint64_t(1) << 30;
 // What a frame may carry; the server drops what is over its own, smaller limits (server/call/)
 // and counts it, so a client with a bad encoder loses a crop, not its call.
 inline constexpr size_t kMaxCropBytes = 64 * 1024;    // one face crop, a JPEG of about 160 px (4-10 KB)
+inline constexpr size_t kMaxVideoFrameBytes = 64 * 1024;  // one VP8 frame of the face video (a key frame of 160 px: 1-4 KB)
+inline constexpr uint16_t kMaxVideoSide = 320;          // the face video's picture: 160 x 160 on the face, 320 wide while searching
 inline constexpr size_t kMaxPhotoBytes = 120 * 1024;  // a member's neutral photo, JPEG
 inline constexpr size_t kMaxVoiceBytes = 1275;        // one Opus packet at most (RFC 6716); 12 kbit/s x 60 ms is 90 bytes
 inline constexpr size_t kMaxMembers = 64;             // members a roster lists
@@ -43,9 +46,10 @@ inline constexpr size_t kMaxMembers = 64;             // members a roster lists
 enum class MessageType : uint16_t {
   Hello = 1, Welcome, Error, Ping, Pong, Join, Leave, Snapshot, StyleChange, CameraPose,
   ObjectPose, ExpressionCode, TweenData, AssetAnnounce, AssetRequest, AssetChunk,
-  Publish, NeutralPhoto, FaceCrop, FaceRegion, VoiceFrame, MemberFace, Roster, Permissions
+  Publish, NeutralPhoto, FaceCrop, FaceRegion, VoiceFrame, MemberFace, Roster, Permissions,
+  FaceVideo, KeyFrameRequest
 };
-inline constexpr uint16_t kMessageTypes = 24;
+inline constexpr uint16_t kMessageTypes = 26;
 
 enum class SessionKind : uint8_t { Scene = 1, Turntable = 2, Conference = 3 };
 // Samples: a product's sample photos in sample order; Matte: their mattes, in the same order;
@@ -244,6 +248,28 @@ struct FaceCrop {
   Bytes jpeg;
 };
 
+// The face region as one frame of a VP8 video (C->S, at most 15 a second; SPEC F17): a picture
+// of a fixed size while it follows the face (160 x 160) showing the rectangle x, y, width, height
+// of the frame_width x frame_height camera frame; the whole frame while the face is not found.
+// `sequence` counts the stream's frames from its key frame on, so the server sees one missing;
+// `key` is the VP8 frame's own key-frame flag (a key frame starts the stream, may change its size).
+struct FaceVideo {
+  static constexpr MessageType type = MessageType::FaceVideo;
+  bool operator==(const FaceVideo&) const = default;
+  uint32_t time_ms = 0, sequence = 0;
+  uint16_t frame_width = 0, frame_height = 0;
+  uint16_t x = 0, y = 0, width = 0, height = 0;
+  bool key = false;
+  Bytes vp8;
+};
+
+// The publisher's next face-video frame must be a key frame (S->C): the server lost its place in
+// the stream (a frame refused, missing or unreadable) and decodes nothing until one comes.
+struct KeyFrameRequest {
+  static constexpr MessageType type = MessageType::KeyFrameRequest;
+  bool operator==(const KeyFrameRequest&) const = default;
+};
+
 // Where the server found the publisher's face (S->C, to the publisher only): the box in frame
 // pixels to crop around next, or found = false (then the next crop is the whole frame).
 struct FaceRegion {
@@ -312,7 +338,8 @@ struct Permissions {
 // Alternatives in MessageType order: index + 1 == type code.
 using Message = std::variant<Hello, Welcome, ErrorMessage, Ping, Pong, Join, Leave, Snapshot, StyleChange, CameraPose,
                              ObjectPose, ExpressionCode, TweenData, AssetAnnounce, AssetRequest, AssetChunk,
-                             Publish, NeutralPhoto, FaceCrop, FaceRegion, VoiceFrame, MemberFace, Roster, Permissions>;
+                             Publish, NeutralPhoto, FaceCrop, FaceRegion, VoiceFrame, MemberFace, Roster, Permissions,
+                             FaceVideo, KeyFrameRequest>;
 
 MessageType type_of(const Message& m);
 const char* name_of(MessageType type);

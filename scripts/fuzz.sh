@@ -10,7 +10,7 @@ cd "$here"
 seconds=${1:-600}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_frames fuzz_message fuzz_tween fuzz_landmarks fuzz_http fuzz_websocket fuzz_config fuzz_broker fuzz_voice fuzz_glb)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_frames fuzz_message fuzz_tween fuzz_landmarks fuzz_http fuzz_websocket fuzz_config fuzz_broker fuzz_voice fuzz_glb fuzz_video)
 
 if [ "${FUZZ_TABLE_ONLY:-0}" != 1 ]; then
 for p in clang libclang-rt-14-dev; do
@@ -47,6 +47,23 @@ open("fuzz-corpus/fuzz_broker/definition", "wb").write(b"\x00" + b"71:sha256:" +
 for t in ("voice-frame", "member-face", "roster"):
     open(f"fuzz-corpus/fuzz_broker/call-{t}", "wb").write(b"\x02" + b"M3:one4:call" + frames[t])
 open("fuzz-corpus/fuzz_broker/call-photo", "wb").write(b"\x02" + b"P3:one4:call3 4:\xff\xd8\xff\xe02:{}")
+PY
+fi
+
+# A real face video: six VP8 frames (a key frame, then inter frames) of 160 px, each behind its
+# 2-byte length, as fuzz_video reads them.
+if [ -d fuzz-corpus/fuzz_video ] && [ ! -f fuzz-corpus/fuzz_video/six-frames ]; then
+  ffmpeg -v error -y -f lavfi -i testsrc=size=160x160:rate=15 -frames:v 6 -c:v libvpx -deadline realtime -lag-in-frames 0 -b:v 36k \
+    fuzz-out/six-frames.ivf
+  /usr/bin/python3 - <<'PY'
+import struct
+ivf = open("fuzz-out/six-frames.ivf", "rb").read()
+at, out = 32, b""
+while at + 12 <= len(ivf):
+    n = struct.unpack_from("<I", ivf, at)[0]
+    out += struct.pack("<H", n) + ivf[at + 12:at + 12 + n]
+    at += 12 + n
+open("fuzz-corpus/fuzz_video/six-frames", "wb").write(out)
 PY
 fi
 

@@ -191,6 +191,7 @@ void Connection::handle(Message& message) {
     case MessageType::Publish:
     case MessageType::NeutralPhoto:
     case MessageType::FaceCrop:
+    case MessageType::FaceVideo:
     case MessageType::VoiceFrame:
       publish(message);
       break;
@@ -260,6 +261,7 @@ void Connection::publish(Message& message) {
   if (auto* p = std::get_if<Publish>(&message)) call->publish(id_, *p);
   else if (auto* photo = std::get_if<NeutralPhoto>(&message)) call->photo(id_, std::move(photo->jpeg));
   else if (auto* crop = std::get_if<FaceCrop>(&message)) call->crop(id_, std::move(*crop));
+  else if (auto* video = std::get_if<FaceVideo>(&message)) call->video(id_, std::move(*video));
   else if (auto* voice = std::get_if<VoiceFrame>(&message)) call->voice(id_, std::move(*voice));
 }
 

@@ -52,6 +52,9 @@ int main(int argc, char** argv) {
   app.add_option("--voice-bitrate", call.voice_bitrate, "calls: Opus bits a second (default 10000)")->check(CLI::Range(6000, 12000));
   app.add_option("--voice-frame-ms", call.voice_frame_ms, "calls: milliseconds of voice per packet: 20, 40 or 60 (default)")
       ->check(CLI::IsMember({20, 40, 60}));
+  const std::map<std::string, PublisherOptions::Crops> crops{{"vp8", PublisherOptions::Crops::Vp8}, {"jpeg", PublisherOptions::Crops::Jpeg}};
+  app.add_option("--crops", call.crops, "calls: send the face as vp8 video (default) or as separate jpeg crops (about 8 times the bits)")
+      ->transform(CLI::CheckedTransformer(crops, CLI::ignore_case));
   app.add_option("--audio-out", o.audio_out, "calls, headless: write the sound heard to this WAV file (an .mp4 --out gets it too)");
   try {
     app.parse(argc, argv);

@@ -8,6 +8,7 @@
 #include <portaudio.h>
 
 #include "client/call/audio_file.hpp"
+#include "client/call/face_crop.hpp"
 #include "client/call/voice_codec.hpp"
 #include "common/error.hpp"
 #include "common/image.hpp"
@@ -16,7 +17,7 @@
 namespace inkwire {
 namespace {
 
-constexpr int kCropSide = 160, kSearchWidth = 320, kPhotoSide = 480;
+constexpr int kCropSide = kFaceVideoSide, kSearchWidth = kFaceSearchWidth, kPhotoSide = 480;
 constexpr int kCropQuality = 75, kPhotoQuality = 90;
 
 Image fit_within(const Image& image, int side_x, int side_y) {
@@ -151,7 +152,7 @@ void Publisher::run_camera(Image frame) {
   auto tick = std::chrono::steady_clock::now();
   int64_t read = 1;  // frames read from the source so far
   for (int64_t k = 1; !stopping_; ++k) {
-    if (!camera_off_) send_crop(frame);
+    if (!camera_off_) options_.crops == PublisherOptions::Crops::Vp8 ? send_video(frame) : send_crop(frame);
     std::optional<Image> next;
     if (camera_source_->live()) {
       next = camera_source_->next();
@@ -186,6 +187,44 @@ void Publisher::send_crop(const Image& frame) {
   bytes_ += crop.jpeg.size();
   ++crops_;
   client_.send(std::move(crop));
+}
+
+}  // namespace inkwire
+
+namespace inkwire {
+
+// The face video's next frame: the crop follows the server's region (face_crop.hpp), scaled to
+// 160 x 160; until the face is found, the whole frame scaled to 320 wide. A new picture size, a
+// jump of the crop or the server's asking starts the video again with a key frame.
+void Publisher::send_video(const Image& frame) {
+  const auto reported = client_.face_region();
+  bool key = client_.take_key_frame_request();
+  if (reported && reported->found && reported->width >= 8 && reported->height >= 8 && reported->x + reported->width <= frame.width &&
+      reported->y + reported->height <= frame.height) {
+    const FaceCropChoice choice = follow_face(video_crop_, *reported);
+    video_crop_ = choice.region;
+    key = key || choice.jumped;
+  } else {
+    video_crop_ = protocol::FaceRegion{.found = false, .x = 0, .y = 0, .width = uint16_t(frame.width), .height = uint16_t(frame.height)};
+  }
+  int width = kCropSide, height = kCropSide;
+  if (!video_crop_.found) {  // the whole frame, even sides (VP8 pictures are 4:2:0)
+    width = std::min(kSearchWidth, frame.width) & ~1;
+    height = std::max(16, int(std::lround(double(frame.height) * width / frame.width / 2)) * 2);
+  }
+  if (!video_encoder_ || video_encoder_->width() != width || video_encoder_->height() != height) {
+    video_encoder_ = std::make_unique<FaceVideoEncoder>(width, height, options_.max_fps, options_.video_bitrate);
+    key = true;
+  }
+  const Image picture = resized(cropped(frame, video_crop_.x, video_crop_.y, video_crop_.width, video_crop_.height), width, height);
+  const uint32_t time = now_ms();
+  FaceVideoEncoder::Frame encoded = video_encoder_->encode(picture, time, key);
+  if (encoded.vp8.empty()) return;
+  bytes_ += encoded.vp8.size();
+  ++crops_;
+  client_.send(protocol::FaceVideo{.time_ms = time, .sequence = ++video_sequence_, .frame_width = uint16_t(frame.width),
+                                   .frame_height = uint16_t(frame.height), .x = video_crop_.x, .y = video_crop_.y, .width = video_crop_.width,
+                                   .height = video_crop_.height, .key = encoded.key, .vp8 = std::move(encoded.vp8)});
 }
 
 }  // namespace inkwire

@@ -1,8 +1,9 @@
 #pragma once
 // What a call member sends of itself (SPEC F7-F9), from its own camera and microphone: the
-// neutral photo once (given, or the camera's first frame), face crops around where the server
-// last found the face (about 160 px, JPEG, at most 15 a second; the whole frame scaled to 320 px
-// until it is found), and Opus voice, both stamped on one clock. Camera and microphone are read
+// neutral photo once (given, or the camera's first frame), its face around where the server
+// last found it (at most 15 pictures a second, 160 px; the whole frame scaled to 320 px until it
+// is found) as VP8 video (SPEC F17) or, where asked, as separate JPEG crops, and Opus voice, all
+// stamped on one clock. Camera and microphone are read
 // on threads of their own, recorded sources (video, image folder, WAV) in real time as a device
 // would deliver them; at their end the member stops publishing them. Muted sends no voice,
 // camera off no crops. Camera pictures stay in memory.
@@ -11,6 +12,7 @@
 #include <string>
 #include <thread>
 
+#include "client/call/face_video_encoder.hpp"
 #include "client/net/session_client.hpp"
 #include "common/image.hpp"
 #include "common/video_source.hpp"
@@ -27,6 +29,10 @@ struct PublisherOptions {
   int voice_bitrate = 10000;
   int voice_frame_ms = 60;
   double max_fps = 15;
+  // The face as VP8 video (Vp8) or as separate JPEG crops (Jpeg: about 8 times the bits, for a
+  // server that reads no video). 36 kbit/s: with voice and framing a publisher sends under 64.
+  enum class Crops { Vp8, Jpeg } crops = Crops::Vp8;
+  int video_bitrate = 36000;
 };
 
 class Publisher {
@@ -57,6 +63,7 @@ class Publisher {
   void run_camera(Image first);
   void run_microphone();
   void send_crop(const Image& frame);
+  void send_video(const Image& frame);
 
   SessionClient& client_;
   PublisherOptions options_;
@@ -66,6 +73,11 @@ class Publisher {
   std::atomic<float> level_db_{-100};
   std::unique_ptr<VideoSource> camera_source_;
   std::unique_ptr<Microphone> microphone_source_;
+  // The face video, on the camera's thread only: its encoder (for the picture size it has now),
+  // the crop it shows, its frames so far.
+  std::unique_ptr<FaceVideoEncoder> video_encoder_;
+  protocol::FaceRegion video_crop_;
+  uint32_t video_sequence_ = 0;
   std::thread camera_, microphone_;
 };
 

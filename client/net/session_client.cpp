@@ -144,6 +144,8 @@ void SessionClient::on_message(Message message) {
     ++updates_;
   } else if (const auto* region = std::get_if<FaceRegion>(&message)) {
     face_region_ = *region;
+  } else if (std::holds_alternative<KeyFrameRequest>(message)) {
+    key_frame_requested_ = true;
   } else if (auto* voice = std::get_if<VoiceFrame>(&message)) {
     constexpr size_t kKept = 500;  // ten seconds of 20 ms packets
     if (voice_.size() >= kKept) voice_.pop_front();

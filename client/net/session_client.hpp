@@ -2,6 +2,7 @@
 // A thin client's connection to a server (SPEC N3-N5): handshake, join, the session's state as
 // it changes, changes sent by this client, and assets fetched into the cache. Network I/O runs
 // on its own thread; the methods here are thread-safe and meant for the render thread.
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
@@ -74,6 +75,8 @@ class SessionClient {
   protocol::Roster roster() const;
   std::map<uint16_t, protocol::MemberFace> member_faces() const;
   std::optional<protocol::FaceRegion> face_region() const;
+  // True once after the server asked for a key frame of this member's face video.
+  bool take_key_frame_request() { return key_frame_requested_.exchange(false); }
   struct ReceivedVoice {
     protocol::VoiceFrame frame;
     std::chrono::steady_clock::time_point arrived;
@@ -112,6 +115,7 @@ class SessionClient {
   protocol::Permissions permissions_;
   std::map<uint16_t, protocol::MemberFace> member_faces_;
   std::optional<protocol::FaceRegion> face_region_;
+  std::atomic<bool> key_frame_requested_{false};
   std::deque<ReceivedVoice> voice_;
   std::deque<protocol::MemberFace> face_queue_;
   uint64_t updates_ = 0;

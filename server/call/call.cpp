@@ -19,6 +19,7 @@ constexpr auto kFaceLost = std::chrono::milliseconds(1000);     // camera faces 
 constexpr auto kVoiceMouthStep = std::chrono::milliseconds(150); // a mouth from the voice changes at most this often
 constexpr auto kNoFaceAfter = std::chrono::seconds(3);          // crops without a face this long: "no face found"
 constexpr auto kVoiceMouthKeepalive = std::chrono::seconds(1);
+constexpr auto kKeyFrameAskEvery = std::chrono::milliseconds(500);  // a key frame is asked for again after this long without one
 constexpr auto kRejoinWithin = std::chrono::seconds(60);         // a member back this soon takes its number again
 constexpr auto kTwinSilence = std::chrono::seconds(8);           // beyond a heartbeat and its answer: that connection is gone
 constexpr float kLevelDecayDb = 1.5f;                           // per packet, so a level falls ~75 dB a second
@@ -68,6 +69,7 @@ struct Call::Member {
   ExpressionState voice_mouth;
   Clock::time_point voice_mouth_sent{};
   uint32_t latest_voice_time = 0;
+  Clock::time_point key_frame_asked{};
 };
 
 Call::Call(std::string session, CallOptions options, CallAnalyst& analyst, Counters& counters, Relay& relay, std::string origin)
@@ -194,6 +196,14 @@ void Call::crop(uint64_t connection, protocol::FaceCrop crop) {
   analyst_.crop({session_, m->entry.member}, std::move(crop));
 }
 
+// Checked here for rate and size only: the bitstream is read on the analyst's thread, where a
+// frame that fails is counted and the stream waits for the key frame asked for in analysed().
+void Call::video(uint64_t connection, protocol::FaceVideo frame) {
+  Member* m = find(connection);
+  if (!m || !admitted(*m, false, frame.vp8.size())) return;  // the gap it leaves asks for a key frame
+  analyst_.video({session_, m->entry.member}, std::move(frame));
+}
+
 void Call::voice(uint64_t connection, protocol::VoiceFrame frame) {
   Member* m = find(connection);
   if (!m || !admitted(*m, true, frame.opus.size())) return;
@@ -273,14 +283,24 @@ void Call::analysed(const CropAnalysed& result) {
   Member* m = find_member(result.who.member);
   if (!m) return;
   const auto now = Clock::now();
-  if (!result.error.empty()) {
-    dropped(*m, "crop-unreadable");
+  const auto connection = m->connection.lock();
+  if (result.frames_dropped > 0) {
+    log_info("call-video-dropped", {{"session", session_}, {"member", m->entry.member}, {"frames", result.frames_dropped}, {"reason", result.error}});
+    for (int k = 0; k < result.frames_dropped; ++k)
+      if (dropped(*m, "video-unreadable")) return;
+  }
+  if (result.key_frame_wanted && connection && now - m->key_frame_asked >= kKeyFrameAskEvery) {
+    m->key_frame_asked = now;
+    connection->send(protocol::KeyFrameRequest{});
+  }
+  if (!result.region) {
+    if (!result.error.empty() && result.frames_dropped == 0) dropped(*m, "crop-unreadable");
     return;
   }
   ++counters_.crops;
   counters_.seconds += result.analysis_ms / 1000.0;
-  if (const auto c = m->connection.lock()) c->send(result.region);
-  if (result.region.found) {
+  if (connection) connection->send(*result.region);
+  if (result.region->found) {
     m->last_face = now;
     m->faceless_since.reset();
   } else if (!m->faceless_since) {

@@ -59,6 +59,7 @@ class Call {
   void publish(uint64_t connection, const protocol::Publish& publish);
   void photo(uint64_t connection, protocol::Bytes jpeg);
   void crop(uint64_t connection, protocol::FaceCrop crop);
+  void video(uint64_t connection, protocol::FaceVideo frame);
   void voice(uint64_t connection, protocol::VoiceFrame frame);
 
   // A few times a second: speakers who fell silent stop speaking; other instances hear this

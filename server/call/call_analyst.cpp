@@ -23,6 +23,7 @@ constexpr int kDetectSide = 200;       // crops are looked at this large (see an
 constexpr float kRegionMargin = 1.8f;  // the next crop: the face's box grown this much about its centre
 constexpr float kPoseStep = 8;         // degrees a head must turn before it is sent again
 constexpr int kDetectEvery = 2;        // crops: the detector checks the face is still there; between, it is tracked
+constexpr size_t kMaxWaitingFrames = 45;  // a member's video frames waiting (3 s): past this the oldest go, and with them the stream
 
 Image decode_jpeg(const protocol::Bytes& jpeg, const char* what) {
   if (!looks_like_jpeg(jpeg)) throw Error(std::string(what) + " is not a JPEG");
@@ -37,6 +38,13 @@ int8_t degrees_byte(float degrees) { return int8_t(std::clamp(std::lround(degree
 }  // namespace
 
 bool looks_like_jpeg(const protocol::Bytes& b) { return b.size() >= 4 && b[0] == 0xff && b[1] == 0xd8 && b[2] == 0xff; }
+
+// One picture of a member's face and where it lies in the publisher's camera frame.
+struct CallAnalyst::Picture {
+  uint32_t time_ms = 0;
+  uint16_t frame_width = 0, frame_height = 0, x = 0, y = 0, width = 0, height = 0;
+  Image image;
+};
 
 struct CallAnalyst::Models {
   FaceAnalyzer analyzer;
@@ -87,9 +95,22 @@ void CallAnalyst::crop(const MemberKey& who, protocol::FaceCrop crop) {
   wake_.notify_one();
 }
 
+void CallAnalyst::video(const MemberKey& who, protocol::FaceVideo frame) {
+  {
+    std::lock_guard lock(mutex_);
+    auto& waiting = videos_[who];
+    if (waiting.size() >= kMaxWaitingFrames) waiting.pop_front();  // the decoder then finds a frame missing and asks for a key frame
+    waiting.push_back(std::move(frame));
+    if (auto& member = members_[who]; !member) member = std::make_unique<Member>();
+  }
+  wake_.notify_one();
+}
+
 void CallAnalyst::forget(const MemberKey& who) {
   std::lock_guard lock(mutex_);
   crops_.erase(who);
+  videos_.erase(who);
+  decoders_.erase(who);
   std::erase_if(photos_, [&](const auto& p) { return p.first == who; });
   members_.erase(who);
 }
@@ -97,7 +118,7 @@ void CallAnalyst::forget(const MemberKey& who) {
 void CallAnalyst::run() {
   for (;;) {
     std::unique_lock lock(mutex_);
-    wake_.wait(lock, [&] { return stopping_ || !photos_.empty() || !crops_.empty(); });
+    wake_.wait(lock, [&] { return stopping_ || !photos_.empty() || !crops_.empty() || !videos_.empty(); });
     if (stopping_) return;
     std::optional<Result> result;
     try {
@@ -118,6 +139,10 @@ void CallAnalyst::run() {
         auto node = crops_.extract(crops_.begin());
         lock.unlock();
         result = analyse_crop(node.key(), node.mapped());
+      } else if (!videos_.empty()) {
+        auto node = videos_.extract(videos_.begin());
+        lock.unlock();
+        result = analyse_video(node.key(), std::move(node.mapped()));
       }
     } catch (const std::exception& e) {
       // No model: every job says so (the server logs it once per member).
@@ -153,12 +178,59 @@ PhotoAnalysed CallAnalyst::analyse_photo(const MemberKey& who, protocol::Bytes j
 }
 
 CropAnalysed CallAnalyst::analyse_crop(const MemberKey& who, const protocol::FaceCrop& crop) {
-  CropAnalysed out{.who = who, .time_ms = crop.time_ms, .error = {}, .region = {}, .face = {}};
+  CropAnalysed out{.who = who, .time_ms = crop.time_ms};
   try {
     const auto started = std::chrono::steady_clock::now();
+    Picture picture{.time_ms = crop.time_ms, .frame_width = crop.frame_width, .frame_height = crop.frame_height, .x = crop.x, .y = crop.y,
+                    .width = crop.width, .height = crop.height, .image = decode_jpeg(crop.jpeg, "face crop")};
+    analyse_picture(who, picture, out);
+    out.analysis_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  } catch (const Error& e) {
+    out.error = e.what();
+  }
+  return out;
+}
+
+// Every frame is decoded, in order (each needs the one before); the newest picture is analysed.
+// A frame that fails is counted with its reason and the stream waits for a key frame.
+CropAnalysed CallAnalyst::analyse_video(const MemberKey& who, std::deque<protocol::FaceVideo> frames) {
+  CropAnalysed out{.who = who, .time_ms = frames.back().time_ms};
+  const auto started = std::chrono::steady_clock::now();
+  std::shared_ptr<FaceVideoDecoder> decoder;
+  {
+    std::lock_guard lock(mutex_);
+    if (!members_.count(who)) return out;  // left meanwhile
+    auto& d = decoders_[who];
+    if (!d) d = std::make_shared<FaceVideoDecoder>();
+    decoder = d;
+  }
+  std::optional<Picture> newest;
+  for (const protocol::FaceVideo& f : frames) {
+    try {
+      newest = Picture{.time_ms = f.time_ms, .frame_width = f.frame_width, .frame_height = f.frame_height, .x = f.x, .y = f.y,
+                       .width = f.width, .height = f.height, .image = decoder->decode(f)};
+    } catch (const Error& e) {
+      if (out.error.empty()) out.error = e.what();
+      ++out.frames_dropped;
+    }
+  }
+  out.key_frame_wanted = decoder->waiting_for_key();
+  if (!newest) return out;
+  out.time_ms = newest->time_ms;
+  try {
+    analyse_picture(who, *newest, out);
+  } catch (const Error& e) {
+    if (out.error.empty()) out.error = e.what();
+  }
+  out.analysis_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  return out;
+}
+
+void CallAnalyst::analyse_picture(const MemberKey& who, const Picture& crop, CropAnalysed& out) {
+  {
     // A 160 px crop shows a face of about 90 px, near the detector's smallest (80): at 200 px it
     // is found without the detector's doubling, which costs 2.5 times as much.
-    Image image = decode_jpeg(crop.jpeg, "face crop");
+    Image image = crop.image;
     if (image.width < kDetectSide && image.height < kDetectSide) {
       const float up = float(kDetectSide) / float(std::max(image.width, image.height));
       image = resized(image, int(std::lround(float(image.width) * up)), int(std::lround(float(image.height) * up)));
@@ -170,7 +242,7 @@ CropAnalysed CallAnalyst::analyse_crop(const MemberKey& who, const protocol::Fac
     {
       std::lock_guard lock(mutex_);
       const auto it = members_.find(who);
-      if (it == members_.end()) return out;
+      if (it == members_.end()) return;
       Member& m = *it->second;
       if (m.last_in_frame && m.since_detection + 1 < kDetectEvery) {
         glm::vec2 lo(1e9f), hi(-1e9f);
@@ -194,11 +266,10 @@ CropAnalysed CallAnalyst::analyse_crop(const MemberKey& who, const protocol::Fac
         found = models_->analyzer.landmarks_in(image, *detected);
       }
     }
-    out.analysis_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
     // The member's calibration is read and changed under the lock: forget() may end it meanwhile.
     std::lock_guard lock(mutex_);
     const auto it = members_.find(who);
-    if (it == members_.end()) return out;  // left meanwhile
+    if (it == members_.end()) return;  // left meanwhile
     Member* member = it->second.get();
     member->since_detection = tracked ? member->since_detection + 1 : 0;
     if (detected && found) {
@@ -212,8 +283,8 @@ CropAnalysed CallAnalyst::analyse_crop(const MemberKey& who, const protocol::Fac
     const ExpressionState state = member->selector.update(found ? std::optional(measure_features(*found, &image)) : std::nullopt);
     if (!found) {
       member->last_in_frame.reset();
-      out.region = {.found = false};
-      return out;
+      out.region = protocol::FaceRegion{.found = false};
+      return;
     }
     // The landmarks in the publisher's frame: the crop shows crop.width x crop.height of it.
     FaceLandmarks in_frame = *found;
@@ -225,9 +296,9 @@ CropAnalysed CallAnalyst::analyse_crop(const MemberKey& who, const protocol::Fac
     const glm::vec2 centre = (lo + hi) * 0.5f;
     const float side = std::max(hi.x - lo.x, hi.y - lo.y) * kRegionMargin;
     const float x0 = std::clamp(centre.x - side / 2, 0.0f, float(crop.frame_width - 8)), y0 = std::clamp(centre.y - side / 2, 0.0f, float(crop.frame_height - 8));
-    out.region = {.found = true, .x = uint16_t(x0), .y = uint16_t(y0),
-                  .width = uint16_t(std::clamp(side, 8.0f, float(crop.frame_width) - x0)),
-                  .height = uint16_t(std::clamp(side, 8.0f, float(crop.frame_height) - y0))};
+    out.region = protocol::FaceRegion{.found = true, .x = uint16_t(x0), .y = uint16_t(y0),
+                                      .width = uint16_t(std::clamp(side, 8.0f, float(crop.frame_width) - x0)),
+                                      .height = uint16_t(std::clamp(side, 8.0f, float(crop.frame_height) - y0))};
     member->last_in_frame = in_frame;
     if (!member->neutral) member->neutral = in_frame;
     const HeadPose pose = head_pose(in_frame, *member->neutral);
@@ -240,10 +311,7 @@ CropAnalysed CallAnalyst::analyse_crop(const MemberKey& who, const protocol::Fac
       out.face = protocol::MemberFace{.member = who.member, .time_ms = crop.time_ms, .expression = expression, .yaw = degrees_byte(pose.yaw),
                                       .pitch = degrees_byte(pose.pitch), .roll = degrees_byte(pose.roll), .source = protocol::FaceSource::Camera};
     }
-  } catch (const Error& e) {
-    out.error = e.what();
   }
-  return out;
 }
 
 }  // namespace inkwire::server

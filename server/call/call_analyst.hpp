@@ -1,10 +1,12 @@
 #pragma once
 // Face analysis for calls (SPEC F8), on a thread of its own so the I/O thread keeps serving:
-// members' neutral photos (the face and its 68 landmarks) and their face crops (landmarks in
-// the publisher's frame, the expression against the member's neutral face, head pose). Each
-// member has one crop waiting at most: a newer crop replaces it (analysis keeps up with the
-// newest picture, never with a backlog). Results are handed to `done` on the analyst's thread;
-// the server posts them to its I/O thread. Camera pictures live in memory only.
+// members' neutral photos (the face and its 68 landmarks) and their face pictures (landmarks in
+// the publisher's frame, the expression against the member's neutral face, head pose). Pictures
+// come as JPEG crops or as VP8 face video (SPEC F17). Each member has one crop waiting at most:
+// a newer crop replaces it; video frames all wait, since each needs the one before, and are
+// decoded together, the newest picture analysed (analysis keeps up with the newest picture,
+// never with a backlog). Results are handed to `done` on the analyst's thread; the server posts
+// them to its I/O thread. Camera pictures live in memory only.
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
@@ -17,6 +19,7 @@
 #include <variant>
 
 #include "protocol/messages.hpp"
+#include "server/call/face_video_decoder.hpp"
 
 namespace inkwire::server {
 
@@ -41,8 +44,10 @@ struct CropAnalysed {
   MemberKey who;
   uint32_t time_ms = 0;
   double analysis_ms = 0;             // decoding and finding the face took this long (server CPU per publisher)
-  std::string error;                  // the crop could not be read (not a JPEG, too large)
-  protocol::FaceRegion region;        // where to crop next, for the publisher
+  std::string error;                  // the crop could not be read (not a JPEG, too large, video that failed)
+  int frames_dropped = 0;             // video frames that could not be decoded (the first one's reason in `error`)
+  bool key_frame_wanted = false;      // the member's video waits for a key frame: ask for one
+  std::optional<protocol::FaceRegion> region;  // where to crop next, for the publisher (none: nothing was analysed)
   std::optional<protocol::MemberFace> face;  // what to send the others, when it changed (or once a second)
 };
 
@@ -57,6 +62,7 @@ class CallAnalyst {
 
   void photo(const MemberKey& who, protocol::Bytes jpeg);
   void crop(const MemberKey& who, protocol::FaceCrop crop);
+  void video(const MemberKey& who, protocol::FaceVideo frame);
   // The member left: its waiting crop and its calibration go.
   void forget(const MemberKey& who);
 
@@ -64,7 +70,10 @@ class CallAnalyst {
   struct Member;
   void run();
   PhotoAnalysed analyse_photo(const MemberKey& who, protocol::Bytes jpeg);
+  struct Picture;
   CropAnalysed analyse_crop(const MemberKey& who, const protocol::FaceCrop& crop);
+  CropAnalysed analyse_video(const MemberKey& who, std::deque<protocol::FaceVideo> frames);
+  void analyse_picture(const MemberKey& who, const Picture& picture, CropAnalysed& out);
 
   std::function<void(Result)> done_;
   std::string model_;
@@ -75,6 +84,8 @@ class CallAnalyst {
   std::condition_variable wake_;
   std::deque<std::pair<MemberKey, protocol::Bytes>> photos_;
   std::map<MemberKey, protocol::FaceCrop> crops_;  // the newest waiting crop per member
+  std::map<MemberKey, std::deque<protocol::FaceVideo>> videos_;  // every waiting video frame per member
+  std::map<MemberKey, std::shared_ptr<FaceVideoDecoder>> decoders_;  // used on the analyst's thread only
   std::map<MemberKey, std::unique_ptr<Member>> members_;
   bool stopping_ = false;
   std::thread thread_;

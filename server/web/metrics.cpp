@@ -83,9 +83,9 @@ std::string metrics_text(Server& server) {
   m.one("inkwire_connections_refused_total", "counter", "Connections refused past a connection cap.", c.connections_refused);
   m.one("inkwire_joins_refused_total", "counter", "Joins refused for a wrong token.", c.joins_refused);
   m.one("inkwire_changes_refused_total", "counter", "Changes refused: the member had no authority to make them.", c.changes_refused);
-  m.metric("inkwire_call_dropped_total", "counter", "Call messages dropped (too frequent, too large, not JPEG, not Opus), by reason.");
+  m.metric("inkwire_call_dropped_total", "counter", "Call messages dropped (too frequent, too large, not JPEG, not Opus, video that does not decode), by reason.");
   for (const auto& [reason, count] : c.call.drops) m.sample("inkwire_call_dropped_total", count, "reason=\"" + metric_label(reason) + "\"");
-  m.one("inkwire_call_crops_analysed_total", "counter", "Call members' face crops analysed.", c.call.crops);
+  m.one("inkwire_call_crops_analysed_total", "counter", "Call members' face pictures analysed (JPEG crops and face-video frames).", c.call.crops);
   m.one("inkwire_call_analysis_seconds_total", "counter", "Time the call analyst spent on face crops.", c.call.seconds);
   m.one("inkwire_call_voice_relayed_total", "counter", "Voice packets relayed to call members (one per receiver).", c.call.voice_relayed);
   const RelayStatus r = server.relay().status();

@@ -229,6 +229,66 @@ std::vector<Result> run_call_suite(Harness& harness) {
     row("webrtc-ref", {{"downlink_bps", webrtc_bps}});
   }
 
+  // --- The uplink (SPEC F17): each development subject (01-08) neutral, smiling, surprised and
+  // neutral again for two seconds each, speaking throughout, sent as JPEG crops and as VP8 video
+  // to a listener: the publisher's bytes on the wire, how often the face the listener shows has
+  // the expression of the picture (every 100 ms, past the first 700 ms of each expression), and
+  // capture-to-face p99.
+  for (const auto crops : {PublisherOptions::Crops::Jpeg, PublisherOptions::Crops::Vp8}) {
+    const bool yale = fs::exists(kYale / "subject01_normal.png");
+    std::vector<std::string> subjects = {"02"};
+    if (yale) subjects = {"01", "02", "03", "04", "05", "06", "07", "08"};
+    std::vector<double> uplink_bps, latency;
+    uint64_t samples = 0, matched = 0;
+    for (const std::string& subject : subjects) {
+      const fs::path folder = face_clip(dir / "uplink", subject, 8.0);
+      ServerThread up(dir / ("data-uplink-" + subject));
+      SessionClient viewer(up.address(), "viewer");
+      viewer.join("call", "");
+      SessionClient member(up.address(), "member");
+      member.join("call", "");
+      std::vector<protocol::MemberFace> faces;
+      Clock::time_point publisher_start;
+      uint64_t sent_before = 0;
+      double seconds = 0;
+      {
+        Publisher publisher(member, PublisherOptions{.camera = folder.string(), .microphone = speech.string(), .crops = crops});
+        publisher_start = publisher.clock_start();
+        sent_before = member.bytes_sent();  // the neutral photo, once, is not the stream's
+        const auto end = publisher_start + std::chrono::milliseconds(8000);
+        while (Clock::now() < end) {
+          std::this_thread::sleep_for(std::chrono::milliseconds(10));
+          const auto now = Clock::now();
+          for (const auto& f : viewer.take_member_faces()) {
+            if (f.source != protocol::FaceSource::Camera) continue;
+            faces.push_back(f);
+            latency.push_back(std::chrono::duration<double, std::milli>(now - (publisher_start + std::chrono::milliseconds(f.time_ms))).count());
+          }
+        }
+        seconds = std::chrono::duration<double>(Clock::now() - publisher_start).count();
+        uplink_bps.push_back(double(member.bytes_sent() - sent_before) * 8 / seconds);
+      }
+      up.stop();
+      // The face shown at t: the newest received whose picture is not later than t.
+      const std::vector<std::vector<Expression>> wanted = {{Expression::Neutral}, {Expression::Smile, Expression::Laugh}, {Expression::Surprise},
+                                                           {Expression::Neutral}};
+      for (int t = 0; t < 8000; t += 100) {
+        if (t % 2000 < 700) continue;
+        std::optional<Expression> shown;
+        for (const auto& f : faces)
+          if (f.time_ms <= uint32_t(t)) shown = expression_from_code(f.expression.code);
+        const auto& want = wanted[size_t(t / 2000)];
+        ++samples;
+        matched += shown && std::find(want.begin(), want.end(), *shown) != want.end();
+      }
+    }
+    Result r{.suite = "call", .renderer = "call", .variant = std::string("uplink,crops=") + (crops == PublisherOptions::Crops::Vp8 ? "vp8" : "jpeg"),
+             .object = yale ? "yale01-08" : "dlib"};
+    r.counters = {{"uplink_bps", percentile(uplink_bps, 0.5)}, {"uplink_bps_max", *std::max_element(uplink_bps.begin(), uplink_bps.end())},
+                  {"expression_accuracy", samples ? double(matched) / double(samples) : 0}, {"face_latency_ms_p99", percentile(latency, 0.99)}};
+    results.push_back(r);
+  }
+
   // --- Six publishers and a hundred listeners in one session: every receiver's voice counted
   // against what the server relayed, and each packet's time from its publisher's send.
   {

@@ -69,7 +69,10 @@ std::vector<Message> every_message() {
                                                   .assets = {AssetAnnounce{.hash = sample_hash(4), .size = 5000, .kind = AssetKind::Image, .name = "face.jpg"},
                                                              AssetAnnounce{.hash = sample_hash(5), .size = 900, .kind = AssetKind::Landmarks, .name = "face.landmarks.json"}}}}},
           Permissions{.refused = {{.change = MessageType::StyleChange, .reason = "only the session's editors may change the style; you follow them"},
-                                  {.change = MessageType::CameraPose, .reason = "only the session's editors may move the camera; you follow them"}}}};
+                                  {.change = MessageType::CameraPose, .reason = "only the session's editors may move the camera; you follow them"}}},
+          FaceVideo{.time_ms = 123500, .sequence = 31, .frame_width = 640, .frame_height = 480, .x = 200, .y = 100, .width = 240, .height = 240,
+                    .key = false, .vp8 = Bytes(300, 0x31)},
+          KeyFrameRequest{}};
 }
 
 Bytes stream_of(const std::vector<Message>& messages) {

@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "client/call/face_crop.hpp"
 #include "client/call/playout_delay.hpp"
 #include "client/render/tween/matte_sample.hpp"
 #include "client/viewer/photo_fetch.hpp"
@@ -242,10 +243,37 @@ nlohmann::json playout_cases() {
   return {{"offset_ms", offset}, {"limits", {kStartDelayMs, kDelayMarginMs, kMaxDelayMs}}, {"steps", steps}};
 }
 
+// The face video's rectangle following a face the server reports (SPEC F17): from the whole
+// frame, then kept, drifted, grown, jumped, shrunk by half.
+nlohmann::json face_crop_cases() {
+  using inkwire::protocol::FaceRegion;
+  const std::vector<FaceRegion> reports = {{true, 200, 100, 240, 240}, {true, 210, 105, 240, 240}, {true, 230, 100, 240, 240},
+                                           {true, 230, 100, 280, 280}, {true, 400, 150, 240, 240}, {true, 400, 150, 150, 150}};
+  FaceRegion shown{.found = false, .x = 0, .y = 0, .width = 640, .height = 480};
+  nlohmann::json steps = nlohmann::json::array();
+  const auto json_of = [](const FaceRegion& r) { return nlohmann::json{{"found", r.found}, {"x", r.x}, {"y", r.y}, {"width", r.width}, {"height", r.height}}; };
+  for (const FaceRegion& reported : reports) {
+    const inkwire::FaceCropChoice choice = inkwire::follow_face(shown, reported);
+    steps.push_back({{"shown", json_of(shown)}, {"reported", json_of(reported)}, {"region", json_of(choice.region)}, {"jumped", choice.jumped}});
+    shown = choice.region;
+  }
+  return {{"sides", {inkwire::kFaceVideoSide, inkwire::kFaceSearchWidth}}, {"steps", steps}};
+}
+
+TEST(WarpVectorsTest, AFaceThatStaysKeepsItsCropOneThatDriftsMovesItAndOneThatJumpsStartsAgain) {
+  const nlohmann::json steps = face_crop_cases()["steps"];
+  const std::vector<std::pair<bool, bool>> moved_and_jumped = {{true, true}, {false, false}, {true, false}, {true, false}, {true, true}, {true, true}};
+  for (size_t i = 0; i < steps.size(); ++i) {
+    EXPECT_EQ(steps[i]["region"] != steps[i]["shown"], moved_and_jumped[i].first) << i;
+    EXPECT_EQ(steps[i]["jumped"].get<bool>(), moved_and_jumped[i].second) << i;
+  }
+}
+
 TEST(WarpVectorsTest, GoldenVectorsForTheWebClientAreTheseNumbers) {
   const nlohmann::json golden = {{"delaunay", delaunay_cases()}, {"warp_meshes", warp_mesh_cases()}, {"distance_field", distance_case()},
                                  {"matte_samples", matte_cases()}, {"locate_view", locate_cases()}, {"photo_fetch", photo_fetch_cases()},
-                                 {"turntable", turntable_cases()}, {"playout", playout_cases()}};
+                                 {"turntable", turntable_cases()}, {"playout", playout_cases()},
+                                 {"face_crop", face_crop_cases()}};
   const std::filesystem::path file = std::filesystem::path(INKWIRE_GOLDEN_DIR) / "warp-vectors.json";
   if (const char* approve = std::getenv("INKWIRE_APPROVE_GOLDEN"); approve && std::string(approve) == "1") {
     std::ofstream(file) << golden.dump() << "\n";

@@ -1,0 +1,136 @@
+// A member's face as VP8 video end to end on 127.0.0.1 (SPEC F17): the client's own Publisher
+// encodes a real face clip with libvpx, the server decodes it with libavcodec and finds the
+// expression; a hostile member's bitstreams (truncated, oversized, garbage after a key frame,
+// frames before any key frame or with one missing) are dropped with a counted reason and a key
+// frame asked for, while the call goes on. Reads a Yale development subject from
+// ../shared/data/yalefaces when it is there, else libdlib's example photo (then the smile is
+// not checked, with a message).
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "client/call/face_video_encoder.hpp"
+#include "client/call/publisher.hpp"
+#include "client/net/session_client.hpp"
+#include "common/image.hpp"
+#include "e2e_support.hpp"
+
+using namespace inkwire;
+using namespace inkwire::e2e;
+
+namespace {
+
+const fs::path kYale = fs::path(INKWIRE_SOURCE_DIR) / ".." / "shared" / "data" / "yalefaces";
+const fs::path kDlibPhoto = "/usr/share/doc/libdlib19.1/examples/faces/Tom_Cruise_avp_2014_4.jpg";
+const fs::path kFaceModel = "/usr/share/dlib/shape_predictor_68_face_landmarks.dat";
+
+// A folder of 15 fps frames: `first` for a second and a half, then `then` for three.
+fs::path clip_of(const fs::path& dir, const fs::path& first, const fs::path& then) {
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  for (int i = 0; i < 68; ++i) {
+    const fs::path& photo = i < 22 ? first : then;
+    char name[32];
+    std::snprintf(name, sizeof name, "%04d%s", i, photo.extension().c_str());
+    fs::create_symlink(fs::absolute(photo), dir / name);
+  }
+  return dir;
+}
+
+uint64_t dropped(ServerUnderTest& server, const std::string& reason) {
+  const std::string metrics = metrics_of(server), key = "inkwire_call_dropped_total{reason=\"" + reason + "\"} ";
+  const size_t at = metrics.find(key);
+  return at == std::string::npos ? 0 : std::stoull(metrics.substr(at + key.size()));
+}
+
+}  // namespace
+
+TEST(FaceVideoE2ETest, AFaceSentAsVideoIsReadAsWellAsJpegAtAFractionOfTheBits) {
+  if (!fs::exists(kFaceModel) || !fs::exists(kDlibPhoto)) GTEST_SKIP() << "libdlib-data's model or libdlib-dev's example photo is missing";
+  const bool yale = fs::exists(kYale / "subject02_normal.png");
+  if (!yale) std::printf("../shared/data/yalefaces is absent: the photo of libdlib's examples stands in, and the smile is not checked\n");
+  const fs::path dir = output_dir("face-video");
+  ServerUnderTest server(dir, {{"http", "127.0.0.1:0"}, {"sessions", {{{"name", "call"}, {"kind", "conference"}}}}});
+  const fs::path clip = yale ? clip_of(dir / "clip", kYale / "subject02_normal.png", kYale / "subject02_happy.png")
+                             : clip_of(dir / "clip", kDlibPhoto, kDlibPhoto);
+  SessionClient ada(server.address(), "Ada"), listener(server.address(), "Listener");
+  for (SessionClient* c : {&ada, &listener}) c->join("call", "");
+  uint16_t ada_number = 0;
+  uint64_t pictures = 0, bytes = 0;
+  {
+    Publisher publisher(ada, PublisherOptions{.camera = clip.string(), .crops = PublisherOptions::Crops::Vp8});
+    ASSERT_TRUE(eventually([&] { return named(listener.roster(), "Ada") != nullptr; }));
+    ada_number = named(listener.roster(), "Ada")->member;
+    std::this_thread::sleep_for(std::chrono::milliseconds(4600));  // the clip plays in real time
+    pictures = publisher.crops_sent(), bytes = publisher.bytes_sent();
+  }
+  ASSERT_TRUE(ada.face_region() && ada.face_region()->found) << "the server never found Ada's face in her video";
+  ASSERT_TRUE(eventually([&] { return listener.member_faces().count(ada_number); }));
+  const protocol::MemberFace face = listener.member_faces().at(ada_number);
+  EXPECT_EQ(face.source, protocol::FaceSource::Camera);
+  if (yale) EXPECT_EQ(expression_from_code(face.expression.code), Expression::Smile) << "neutral then smile arrives as " << int(face.expression.code);
+  EXPECT_EQ(dropped(server, "video-unreadable"), 0u) << "the client's own video was refused";
+  // The neutral photo (a JPEG of ~30 KB) is in `bytes` too; the video's pictures are a few hundred bytes.
+  ASSERT_GT(pictures, 40u);
+  EXPECT_LT(double(bytes) / double(pictures), 1500.0) << pictures << " pictures in " << bytes << " bytes";
+}
+
+TEST(FaceVideoE2ETest, HostileVideoIsDroppedWithItsReasonAndAKeyFrameAskedForWhileTheCallGoesOn) {
+  if (!fs::exists(kFaceModel) || !fs::exists(kDlibPhoto)) GTEST_SKIP() << "libdlib-data's model or libdlib-dev's example photo is missing";
+  const fs::path dir = output_dir("face-video-hostile");
+  ServerUnderTest server(dir, {{"http", "127.0.0.1:0"}, {"sessions", {{{"name", "call"}, {"kind", "conference"}}}}});
+  SessionClient mallory(server.address(), "Mallory"), listener(server.address(), "Listener");
+  for (SessionClient* c : {&mallory, &listener}) c->join("call", "");
+  mallory.send(protocol::Publish{.camera = true, .microphone = false});
+
+  const Image photo = resized(load_image(kDlibPhoto), 160, 160);
+  FaceVideoEncoder encoder(160, 160, 15, 36000);
+  const protocol::Bytes key = encoder.encode(photo, 0, true).vp8;
+  ASSERT_GT(key.size(), 10u);
+  uint32_t sequence = 0, time = 0;
+  const auto send = [&](protocol::Bytes vp8, bool is_key, uint32_t seq) {
+    mallory.send(protocol::FaceVideo{.time_ms = time += 100, .sequence = seq, .frame_width = 640, .frame_height = 480, .x = 100, .y = 100,
+                                     .width = 200, .height = 200, .key = is_key, .vp8 = std::move(vp8)});
+    std::this_thread::sleep_for(std::chrono::milliseconds(120));
+  };
+  // The server asks at most twice a second: each case waits that long before the next.
+  const auto asked_for_key = [&] {
+    const bool asked = eventually([&] { return mallory.take_key_frame_request(); });
+    std::this_thread::sleep_for(std::chrono::milliseconds(600));
+    return asked;
+  };
+  uint64_t drops = 0;
+  const auto one_more_drop = [&] { return eventually([&] { return dropped(server, "video-unreadable") > drops; }) && (drops = dropped(server, "video-unreadable"), true); };
+
+  // A frame before any key frame.
+  send(encoder.encode(photo, 100, false).vp8, false, ++sequence);
+  EXPECT_TRUE(one_more_drop()) << "an inter frame before any key frame was not refused";
+  EXPECT_TRUE(asked_for_key());
+  // A truncated key frame.
+  send(protocol::Bytes(key.begin(), key.begin() + 12), true, ++sequence);
+  EXPECT_TRUE(one_more_drop()) << "a truncated key frame was not refused";
+  EXPECT_TRUE(asked_for_key());
+  // A key frame claiming 4000 x 4000 pixels.
+  protocol::Bytes huge = key;
+  huge[6] = 4000 & 0xff, huge[7] = 4000 >> 8, huge[8] = 4000 & 0xff, huge[9] = 4000 >> 8;
+  send(huge, true, ++sequence);
+  EXPECT_TRUE(one_more_drop()) << "an oversized key frame was not refused";
+  // A good key frame, then garbage where the next frame should be.
+  send(key, true, ++sequence);
+  protocol::Bytes garbage(400);
+  for (size_t i = 0; i < garbage.size(); ++i) garbage[i] = uint8_t(i * 131 + 7);
+  garbage[0] = 0x31, garbage[1] = 0x02, garbage[2] = 0x00;  // an inter frame's tag, shown, a 16-byte first partition
+  send(garbage, false, ++sequence);
+  EXPECT_TRUE(one_more_drop()) << "garbage after a key frame was not refused";
+  EXPECT_TRUE(asked_for_key());
+  // A good key frame, then a frame skipped.
+  send(key, true, ++sequence);
+  sequence += 1;
+  send(encoder.encode(photo, 200, false).vp8, false, ++sequence);
+  EXPECT_TRUE(one_more_drop()) << "a missing frame was not noticed";
+
+  // Mallory is still in the call, and so is everyone else.
+  EXPECT_TRUE(mallory.connected() && listener.connected());
+  EXPECT_NE(named(listener.roster(), "Mallory"), nullptr);
+  EXPECT_FALSE(log_events(server.process().output(), "call-video-dropped").empty()) << "the drops were not logged with their reason";
+}
