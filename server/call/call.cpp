@@ -201,7 +201,16 @@ void Call::crop(uint64_t connection, protocol::FaceCrop crop) {
 void Call::video(uint64_t connection, protocol::FaceVideo frame) {
   Member* m = find(connection);
   if (!m || !admitted(*m, false, frame.vp8.size())) return;  // the gap it leaves asks for a key frame
-  analyst_.video({session_, m->entry.member}, std::move(frame));
+  if (analyst_.video({session_, m->entry.member}, std::move(frame))) return;
+  ++counters_.drops["video-analysis-behind"];  // the server's doing, not the member's: no flood is counted
+  ask_for_key_frame(*m);
+}
+
+void Call::ask_for_key_frame(Member& m) {
+  const auto now = Clock::now();
+  if (now - m.key_frame_asked < kKeyFrameAskEvery) return;
+  m.key_frame_asked = now;
+  if (const auto c = m.connection.lock()) c->send(protocol::KeyFrameRequest{});
 }
 
 void Call::voice(uint64_t connection, protocol::VoiceFrame frame) {
@@ -289,10 +298,7 @@ void Call::analysed(const CropAnalysed& result) {
     for (int k = 0; k < result.frames_dropped; ++k)
       if (dropped(*m, "video-unreadable")) return;
   }
-  if (result.key_frame_wanted && connection && now - m->key_frame_asked >= kKeyFrameAskEvery) {
-    m->key_frame_asked = now;
-    connection->send(protocol::KeyFrameRequest{});
-  }
+  if (result.key_frame_wanted) ask_for_key_frame(*m);
   if (!result.region) {
     if (!result.error.empty() && result.frames_dropped == 0) dropped(*m, "crop-unreadable");
     return;

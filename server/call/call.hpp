@@ -83,6 +83,8 @@ class Call {
   // Counts a drop; true when the member has dropped so much in the last second that it floods
   // (it is then closed with the reason).
   bool dropped(Member& m, const std::string& reason);
+  // Sends the member a key-frame-request, at most twice a second.
+  void ask_for_key_frame(Member& m);
   // Within the member's rate and size for a crop or a voice packet; otherwise dropped and counted.
   bool admitted(Member& m, bool voice, size_t size);
   void send_roster();

@@ -23,7 +23,7 @@ constexpr int kDetectSide = 200;       // crops are looked at this large (see an
 constexpr float kRegionMargin = 1.8f;  // the next crop: the face's box grown this much about its centre
 constexpr float kPoseStep = 8;         // degrees a head must turn before it is sent again
 constexpr int kDetectEvery = 2;        // crops: the detector checks the face is still there; between, it is tracked
-constexpr size_t kMaxWaitingFrames = 45;  // a member's video frames waiting (3 s): past this the oldest go, and with them the stream
+constexpr size_t kMaxWaitingFrames = 45;  // a member's video frames waiting (3 s): past this they go, and the stream waits for a key frame
 
 Image decode_jpeg(const protocol::Bytes& jpeg, const char* what) {
   if (!looks_like_jpeg(jpeg)) throw Error(std::string(what) + " is not a JPEG");
@@ -95,21 +95,36 @@ void CallAnalyst::crop(const MemberKey& who, protocol::FaceCrop crop) {
   wake_.notify_one();
 }
 
-void CallAnalyst::video(const MemberKey& who, protocol::FaceVideo frame) {
+bool CallAnalyst::video(const MemberKey& who, protocol::FaceVideo frame) {
+  bool kept = true;
   {
     std::lock_guard lock(mutex_);
     auto& waiting = videos_[who];
-    if (waiting.size() >= kMaxWaitingFrames) waiting.pop_front();  // the decoder then finds a frame missing and asks for a key frame
-    waiting.push_back(std::move(frame));
+    bool& awaiting_key = awaiting_key_[who];
+    if (waiting.size() >= kMaxWaitingFrames) {
+      // The analyst is this far behind (its model loading, a crowd of members): what waits is
+      // dropped, and what comes until a key frame could not be decoded without it.
+      waiting.clear();
+      awaiting_key = true;
+    }
+    if (awaiting_key && !frame.key) {
+      kept = false;
+    } else {
+      awaiting_key = false;
+      waiting.push_back(std::move(frame));
+    }
+    if (waiting.empty()) videos_.erase(who);
     if (auto& member = members_[who]; !member) member = std::make_unique<Member>();
   }
-  wake_.notify_one();
+  if (kept) wake_.notify_one();
+  return kept;
 }
 
 void CallAnalyst::forget(const MemberKey& who) {
   std::lock_guard lock(mutex_);
   crops_.erase(who);
   videos_.erase(who);
+  awaiting_key_.erase(who);
   decoders_.erase(who);
   std::erase_if(photos_, [&](const auto& p) { return p.first == who; });
   members_.erase(who);
@@ -134,15 +149,28 @@ void CallAnalyst::run() {
         photos_.pop_front();
         lock.unlock();
         result = analyse_photo(who, std::move(jpeg));
-      } else if (!crops_.empty()) {
-        // Members take turns: the oldest waiting first would need times; any order keeps each one's newest.
-        auto node = crops_.extract(crops_.begin());
-        lock.unlock();
-        result = analyse_crop(node.key(), node.mapped());
-      } else if (!videos_.empty()) {
-        auto node = videos_.extract(videos_.begin());
-        lock.unlock();
-        result = analyse_video(node.key(), std::move(node.mapped()));
+      } else {
+        // Members take turns, the one after the last served first: a member whose pictures
+        // keep coming while another's is analysed must not keep the others waiting.
+        // A member's place in the turn: those after the last served in key order, then the rest.
+        const auto turn = [&](const MemberKey& k) { return std::pair(!(last_served_ < k), k); };
+        const auto next = [&](const auto& waiting) {
+          return std::min_element(waiting.begin(), waiting.end(), [&](const auto& a, const auto& b) { return turn(a.first) < turn(b.first); });
+        };
+        const auto crop = next(crops_);
+        const auto video = next(videos_);
+        const bool crop_first = video == videos_.end() || (crop != crops_.end() && turn(crop->first) < turn(video->first));
+        if (crop != crops_.end() && crop_first) {
+          auto node = crops_.extract(crop);
+          last_served_ = node.key();
+          lock.unlock();
+          result = analyse_crop(node.key(), node.mapped());
+        } else {
+          auto node = videos_.extract(video);
+          last_served_ = node.key();
+          lock.unlock();
+          result = analyse_video(node.key(), std::move(node.mapped()));
+        }
       }
     } catch (const std::exception& e) {
       // No model: every job says so (the server logs it once per member).

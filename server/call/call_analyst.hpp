@@ -62,7 +62,9 @@ class CallAnalyst {
 
   void photo(const MemberKey& who, protocol::Bytes jpeg);
   void crop(const MemberKey& who, protocol::FaceCrop crop);
-  void video(const MemberKey& who, protocol::FaceVideo frame);
+  // False when the frame was dropped: the analyst fell so far behind that the member's waiting
+  // frames went, and until a key frame comes the rest cannot be decoded (ask for one).
+  bool video(const MemberKey& who, protocol::FaceVideo frame);
   // The member left: its waiting crop and its calibration go.
   void forget(const MemberKey& who);
 
@@ -86,6 +88,8 @@ class CallAnalyst {
   std::map<MemberKey, protocol::FaceCrop> crops_;  // the newest waiting crop per member
   std::map<MemberKey, std::deque<protocol::FaceVideo>> videos_;  // every waiting video frame per member
   std::map<MemberKey, std::shared_ptr<FaceVideoDecoder>> decoders_;  // used on the analyst's thread only
+  std::map<MemberKey, bool> awaiting_key_;  // frames were dropped unread: only a key frame is taken
+  MemberKey last_served_;  // whose picture was analysed last: the next member takes its turn
   std::map<MemberKey, std::unique_ptr<Member>> members_;
   bool stopping_ = false;
   std::thread thread_;

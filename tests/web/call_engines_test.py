@@ -12,7 +12,10 @@ time, each joining a call with a native inkwire-client member on a real inkwire-
 - with the page's own thread blocked 400 ms out of every 2 s (the test blocks it), the browser
   plays at least 98% of the native member's voice packets that reached it, none late beyond the
   jitter rule: the voice lives in a worker and audio worklets, not on the page's thread;
-- the element's `reason` is empty: every engine here carries voice.
+- the element's `reason` is empty: every engine here carries voice;
+- the browser member's camera goes out as VP8 video where the engine has WebCodecs' VP8 encoder
+  (every engine here; else JPEG crops, said in the output), the server reads every frame (none
+  dropped as unreadable) and analyses its pictures; its figures go into the bench rows.
 
   call_engines_test.py BIN_DIR OUT_DIR [ENGINE ...] [--bench ROWS.json]   (default: every engine)
 With --bench it measures a quiet page too and writes inkwire-bench's rows `browser,engine=E,stall=MS`
@@ -24,10 +27,12 @@ import array
 import json
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
 import time
+import urllib.request
 import wave
 
 sys.path.insert(0, os.path.dirname(__file__))
@@ -210,6 +215,23 @@ try:
             follows = speech_follows(played_env[-50 * STALL_SECONDS:], envelope(nat_samples, nat_rate))
             print(f"{name}: it played {len(played_env) / 50:.1f} s; over the stalls its envelope follows Nat's speech at r = {follows:.2f}")
             checks.check(follows >= 0.6, f"{name}: what it played while stalling is Nat's speech (envelope correlation {follows:.2f} >= 0.6)")
+            # The camera's uplink: VP8 video where the engine encodes it, every frame read by the
+            # server: it finds no face in the fake camera's pattern and says so in the roster.
+            face_format, pictures, picture_bytes, skipped, face_found = driver.execute_script(
+                f"const e = {element}, c = e.camera; return [c.format, c.sent, c.bytes, c.faceVideo?.skipped ?? 0, "
+                f"e.roster.members.find((m) => m.member === e.roster.you)?.face_found]")
+            metrics = urllib.request.urlopen(f"http://127.0.0.1:{server.http}/metrics").read().decode()
+            unreadable = re.search(r'inkwire_call_dropped_total\{reason="video-unreadable"\} (\d+)', metrics)
+            unreadable = int(unreadable.group(1)) if unreadable else 0
+            print(f"{name}: its camera went out as {face_format}: {pictures} pictures, {picture_bytes / max(pictures, 1):.0f} bytes each, "
+                  f"{skipped} skipped to hold the bit rate; "
+                  f"{unreadable} video frames unreadable at the server so far; it found a face: {face_found}")
+            checks.check(face_format == "vp8", f"{name}: the camera goes out as VP8 video ({face_format})")
+            checks.check(pictures > 50 and unreadable == 0 and face_found is False,
+                         f"{name}: the server reads every picture of the browser's camera and finds no face in the fake pattern "
+                         f"({pictures} sent, {unreadable} unreadable, face found: {face_found})")
+            rows.append({"variant": f"uplink,engine={name},crops={face_format}",
+                         "counters": {"picture_bytes_mean": picture_bytes / max(pictures, 1), "pictures": pictures, "pictures_skipped": skipped}})
             driver.execute_script(f"{element}.hangUp()")
             driver.save_screenshot(os.path.join(out, "after-leaving.png"))
             print(f"{name}: it saw Nat as {sorted(seen)}")

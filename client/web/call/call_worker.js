@@ -19,7 +19,7 @@ import { Session } from '../net/session.js';
 import { PacketRing, SampleRing } from './audio_ring.js';
 
 const kOpusRate = 48000, kBitrate = 10000, kFrameMs = 60;  // as client/call/publisher.hpp
-const kForwarded = ['snapshot', 'roster', 'member-face', 'face-region', 'permissions', 'state', 'refused', 'error', 'close'];
+const kForwarded = ['snapshot', 'roster', 'member-face', 'face-region', 'key-frame-request', 'permissions', 'state', 'refused', 'error', 'close'];
 
 let session = null, joined = false, sending = false, clockOrigin = 0, encoder = null, playout = null, playoutRing = null;
 const decoders = new Map();  // member -> {decoder, pending: [time_ms]}

@@ -16,7 +16,7 @@
 // joined again, under the same name, until then); counters voiceSent and
 // camera.sent say what went out; `joinedAt` and `firstFaceAt` (performance.now() of joining and
 // of the first frame with a face).
-import { CameraSender, photoOf } from '../call/camera.js';
+import { CameraSender, faceFormat, photoOf } from '../call/camera.js';
 import { CallLink, voiceUnsupported } from '../call/voice.js';
 import { CallTiles } from './call/tiles.js';
 import { SessionElement } from './session_element.js';
@@ -137,6 +137,7 @@ export class InkwireCall extends SessionElement {
     session.addEventListener('state', (e) => { if (e.detail.type === 'style-change') this.showStyle(e.detail); });
     session.addEventListener('roster', (e) => this.updateRoster(session, e.detail));
     session.addEventListener('face-region', (e) => { if (this.camera) this.camera.region = e.detail; });
+    session.addEventListener('key-frame-request', () => this.camera?.keyFrame());
     session.addEventListener('member-face', (e) => this.faceArrived(e.detail));
     session.addEventListener('close', () => this.lost(session));
   }
@@ -163,9 +164,10 @@ export class InkwireCall extends SessionElement {
     if (this.rejoinUntil) this.message.textContent = '';
     this.rejoinUntil = 0;
     if (this.preview.videoWidth && !this.photo) await this.takePhoto();
+    const format = await faceFormat();
     if (this.session !== session) return;
     if (this.photo) session.send({ type: 'neutral-photo', jpeg: this.photo });
-    if (this.preview.videoWidth) this.camera = new CameraSender(this.preview, (m) => this.session?.send(m), () => this.now());
+    if (this.preview.videoWidth) this.camera = new CameraSender(this.preview, (m) => this.session?.send(m), () => this.now(), format);
     if (this.camera) this.camera.off = this.cameraOff;
     this.publish();
     this.prejoin.hidden = true;

@@ -5,7 +5,7 @@
 import { ProtocolError, ReadStream, WriteStream } from './streams.js';
 
 export const kMagic = 0x574b4e49;  // the bytes "INKW" read as a little-endian u32
-export const kVersion = 5;
+export const kVersion = 6;
 export const kMaxName = 64;
 export const kMaxToken = 128;
 export const kMaxReason = 512;
@@ -19,6 +19,8 @@ export const kMaxChunk = 64 * 1024;
 export const kMaxTween = 16 * 1024;
 export const kMaxAssetBytes = 2 ** 30;
 export const kMaxCropBytes = 64 * 1024;
+export const kMaxVideoFrameBytes = 64 * 1024;
+export const kMaxVideoSide = 320;
 export const kMaxPhotoBytes = 120 * 1024;
 export const kMaxVoiceBytes = 1275;
 export const kMaxMembers = 64;
@@ -27,9 +29,9 @@ export const MessageType = Object.freeze({
   hello: 1, welcome: 2, error: 3, ping: 4, pong: 5, join: 6, leave: 7, snapshot: 8, 'style-change': 9, 'camera-pose': 10,
   'object-pose': 11, 'expression-code': 12, 'tween-data': 13, 'asset-announce': 14, 'asset-request': 15, 'asset-chunk': 16,
   publish: 17, 'neutral-photo': 18, 'face-crop': 19, 'face-region': 20, 'voice-frame': 21, 'member-face': 22, roster: 23,
-  permissions: 24,
+  permissions: 24, 'face-video': 25, 'key-frame-request': 26,
 });
-export const kMessageTypes = 24;
+export const kMessageTypes = 26;
 export const FaceSource = Object.freeze({ neutral: 0, camera: 1, voice: 2 });
 export const nameOf = (type) => Object.keys(MessageType).find((k) => MessageType[k] === type) ?? 'unknown';
 
@@ -256,6 +258,21 @@ function serialiseFaceCrop(s, m) {
   }
 }
 
+function serialiseFaceVideo(s, m) {
+  m.time_ms = s.u32(m.time_ms ?? 0);
+  m.sequence = s.u32(m.sequence ?? 0);
+  for (const f of ['frame_width', 'frame_height', 'x', 'y', 'width', 'height']) m[f] = s.u16(m[f] ?? 0);
+  m.key = flag(s, m.key, 'face video key');
+  m.vp8 = s.blob(m.vp8 ?? new Uint8Array(), kMaxVideoFrameBytes);
+  if (s.constructor.reading) {
+    check(m.frame_width >= 16 && m.frame_height >= 16 && m.frame_width <= 4096 && m.frame_height <= 4096, 'face video: frame size outside 16..4096');
+    check(m.width >= 8 && m.height >= 8 && m.x + m.width <= m.frame_width && m.y + m.height <= m.frame_height, 'face video: rectangle outside its frame');
+    check(m.vp8.length > 0, 'empty face video frame');
+  }
+}
+
+function serialiseKeyFrameRequest() {}
+
 function serialiseFaceRegion(s, m) {
   m.found = flag(s, m.found, 'face region found');
   for (const f of ['x', 'y', 'width', 'height']) m[f] = s.u16(m[f] ?? 0);
@@ -322,7 +339,7 @@ const serialisers = [serialiseHello, serialiseWelcome, serialiseErrorMessage, se
                      serialiseSnapshot, serialiseStyleChange, serialiseCameraPose, serialiseObjectPose, serialiseExpressionCode,
                      serialiseTweenData, serialiseAssetAnnounce, serialiseAssetRequest, serialiseAssetChunk, serialisePublish,
                      serialiseNeutralPhoto, serialiseFaceCrop, serialiseFaceRegion, serialiseVoiceFrame, serialiseMemberFace, serialiseRoster,
-                     serialisePermissions];
+                     serialisePermissions, serialiseFaceVideo, serialiseKeyFrameRequest];
 
 export const kHeaderBytes = 6;
 export const kMaxPayload = 128 * 1024;

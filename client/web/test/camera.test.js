@@ -1,0 +1,18 @@
+// The browser's face-video rectangle against the C++ client's (tests/golden/warp-vectors.json,
+// "face_crop", written by WarpVectorsTest): the same reports give the same rectangles and the
+// same key frames. Run: node --test client/web/test/
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { test } from 'node:test';
+
+import { followFace, kFaceSearchWidth, kFaceVideoSide } from '../call/camera.js';
+
+test('a face that stays keeps its crop, one that drifts moves it, one that jumps starts again, as in C++', () => {
+  const golden = JSON.parse(readFileSync(new URL('../../../tests/golden/warp-vectors.json', import.meta.url))).face_crop;
+  assert.deepEqual([kFaceVideoSide, kFaceSearchWidth], golden.sides);
+  for (const step of golden.steps) {
+    const choice = followFace(step.shown, step.reported);
+    assert.deepEqual(choice.region, step.region, JSON.stringify(step));
+    assert.equal(choice.jumped, step.jumped, JSON.stringify(step));
+  }
+});
