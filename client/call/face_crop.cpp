@@ -9,9 +9,18 @@ namespace {
 constexpr double kDriftMove = 0.1, kDriftScale = 1.15;  // of the shown side: move the crop
 constexpr double kJumpMove = 0.5, kJumpScale = 1.5;     // ... start the video again
 
+// The square of the region's longer side about its centre, moved into the frame.
+protocol::FaceRegion squared(const protocol::FaceRegion& r, int frame_width, int frame_height) {
+  const int side = std::min({int(std::max(r.width, r.height)), frame_width, frame_height});
+  const int x = std::clamp(int(r.x) + int(r.width) / 2 - side / 2, 0, frame_width - side);
+  const int y = std::clamp(int(r.y) + int(r.height) / 2 - side / 2, 0, frame_height - side);
+  return {.found = true, .x = uint16_t(x), .y = uint16_t(y), .width = uint16_t(side), .height = uint16_t(side)};
+}
+
 }  // namespace
 
-FaceCropChoice follow_face(const protocol::FaceRegion& shown, const protocol::FaceRegion& reported) {
+FaceCropChoice follow_face(const protocol::FaceRegion& shown, const protocol::FaceRegion& reported_region, int frame_width, int frame_height) {
+  const protocol::FaceRegion reported = squared(reported_region, frame_width, frame_height);
   if (!shown.found) return {.region = reported, .jumped = true};
   const double side = std::max(1.0, double(std::max(shown.width, shown.height)));
   const double dx = (double(reported.x) + reported.width / 2.0) - (double(shown.x) + shown.width / 2.0);

@@ -18,7 +18,9 @@ struct FaceCropChoice {
 };
 
 // `shown`: the crop the video shows now (found = false: the whole frame); `reported`: the
-// server's latest region, found.
-FaceCropChoice follow_face(const protocol::FaceRegion& shown, const protocol::FaceRegion& reported);
+// server's latest region, found, in a frame_width x frame_height frame. The crop is square (the
+// video's picture is, and a face stretched one way reads as another expression): the reported
+// region's longer side, moved into the frame, or the frame's shorter side when it is longer.
+FaceCropChoice follow_face(const protocol::FaceRegion& shown, const protocol::FaceRegion& reported, int frame_width, int frame_height);
 
 }  // namespace inkwire

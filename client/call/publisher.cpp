@@ -85,9 +85,9 @@ Publisher::Publisher(SessionClient& client, PublisherOptions options)
     microphone_source_ = std::make_unique<Microphone>(options_.microphone, kCallRate * options_.voice_frame_ms / 1000);
   const Image photo = !options_.photo.empty() ? load_image(options_.photo) : first ? *first : Image();
   if (photo.width > 0) {
-    const auto jpeg = encode_image(fit_within(photo, kPhotoSide, kPhotoSide), "jpg", kPhotoQuality);
-    client_.send(protocol::NeutralPhoto{.jpeg = jpeg});
-    bytes_ += jpeg.size();
+    photo_jpeg_ = encode_image(fit_within(photo, kPhotoSide, kPhotoSide), "jpg", kPhotoQuality);
+    client_.send(protocol::NeutralPhoto{.jpeg = photo_jpeg_});
+    bytes_ += photo_jpeg_.size();
   }
   camera_live_ = first.has_value();
   microphone_live_ = microphone_source_ != nullptr;
@@ -110,6 +110,15 @@ void Publisher::announce() {
   client_.send(protocol::Publish{.camera = camera_live_ && !camera_off_, .microphone = microphone_live_ && !muted_});
 }
 
+void Publisher::say_again_if_rejoined() {
+  uint64_t said = connection_said_;
+  const uint64_t now = client_.connections();
+  if (now == said || !client_.connected() || !connection_said_.compare_exchange_strong(said, now)) return;
+  if (!photo_jpeg_.empty()) client_.send(protocol::NeutralPhoto{.jpeg = photo_jpeg_});
+  announce();
+  video_restart_ = true;
+}
+
 void Publisher::set_muted(bool muted) {
   muted_ = muted;
   announce();
@@ -126,6 +135,7 @@ void Publisher::run_microphone() {
   while (!stopping_) {
     const std::vector<float>* frame = microphone_source_->next();
     if (!frame) break;
+    say_again_if_rejoined();
     double sum = 0;
     for (float s : *frame) sum += double(s) * s;
     level_db_ = float(10.0 * std::log10(std::max(sum / double(frame->size()), 1e-10)));
@@ -152,6 +162,7 @@ void Publisher::run_camera(Image frame) {
   auto tick = std::chrono::steady_clock::now();
   int64_t read = 1;  // frames read from the source so far
   for (int64_t k = 1; !stopping_; ++k) {
+    say_again_if_rejoined();
     if (!camera_off_) options_.crops == PublisherOptions::Crops::Vp8 ? send_video(frame) : send_crop(frame);
     std::optional<Image> next;
     if (camera_source_->live()) {
@@ -198,10 +209,10 @@ namespace inkwire {
 // jump of the crop or the server's asking starts the video again with a key frame.
 void Publisher::send_video(const Image& frame) {
   const auto reported = client_.face_region();
-  bool key = client_.take_key_frame_request();
+  bool key = client_.take_key_frame_request() || video_restart_.exchange(false);
   if (reported && reported->found && reported->width >= 8 && reported->height >= 8 && reported->x + reported->width <= frame.width &&
       reported->y + reported->height <= frame.height) {
-    const FaceCropChoice choice = follow_face(video_crop_, *reported);
+    const FaceCropChoice choice = follow_face(video_crop_, *reported, frame.width, frame.height);
     video_crop_ = choice.region;
     key = key || choice.jumped;
   } else {

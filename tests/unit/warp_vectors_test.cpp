@@ -243,17 +243,19 @@ nlohmann::json playout_cases() {
   return {{"offset_ms", offset}, {"limits", {kStartDelayMs, kDelayMarginMs, kMaxDelayMs}}, {"steps", steps}};
 }
 
-// The face video's rectangle following a face the server reports (SPEC F17): from the whole
-// frame, then kept, drifted, grown, jumped, shrunk by half.
+// The face video's rectangle following a face the server reports (SPEC F17) in a 640 x 480
+// frame: from the whole frame, then kept, drifted, grown, jumped, shrunk by half, then a region
+// cut by the frame's edge (squared and moved in) and one taller than the frame.
 nlohmann::json face_crop_cases() {
   using inkwire::protocol::FaceRegion;
   const std::vector<FaceRegion> reports = {{true, 200, 100, 240, 240}, {true, 210, 105, 240, 240}, {true, 230, 100, 240, 240},
-                                           {true, 230, 100, 280, 280}, {true, 400, 150, 240, 240}, {true, 400, 150, 150, 150}};
+                                           {true, 230, 100, 280, 280}, {true, 400, 150, 240, 240}, {true, 400, 150, 150, 150},
+                                           {true, 500, 300, 140, 180}, {true, 100, 0, 400, 480}};
   FaceRegion shown{.found = false, .x = 0, .y = 0, .width = 640, .height = 480};
   nlohmann::json steps = nlohmann::json::array();
   const auto json_of = [](const FaceRegion& r) { return nlohmann::json{{"found", r.found}, {"x", r.x}, {"y", r.y}, {"width", r.width}, {"height", r.height}}; };
   for (const FaceRegion& reported : reports) {
-    const inkwire::FaceCropChoice choice = inkwire::follow_face(shown, reported);
+    const inkwire::FaceCropChoice choice = inkwire::follow_face(shown, reported, 640, 480);
     steps.push_back({{"shown", json_of(shown)}, {"reported", json_of(reported)}, {"region", json_of(choice.region)}, {"jumped", choice.jumped}});
     shown = choice.region;
   }
@@ -262,10 +264,15 @@ nlohmann::json face_crop_cases() {
 
 TEST(WarpVectorsTest, AFaceThatStaysKeepsItsCropOneThatDriftsMovesItAndOneThatJumpsStartsAgain) {
   const nlohmann::json steps = face_crop_cases()["steps"];
-  const std::vector<std::pair<bool, bool>> moved_and_jumped = {{true, true}, {false, false}, {true, false}, {true, false}, {true, true}, {true, true}};
+  const std::vector<std::pair<bool, bool>> moved_and_jumped = {{true, true}, {false, false}, {true, false}, {true, false},
+                                                                {true, true},  {true, true},   {true, true},  {true, true}};
   for (size_t i = 0; i < steps.size(); ++i) {
     EXPECT_EQ(steps[i]["region"] != steps[i]["shown"], moved_and_jumped[i].first) << i;
     EXPECT_EQ(steps[i]["jumped"].get<bool>(), moved_and_jumped[i].second) << i;
+    const auto& r = steps[i]["region"];
+    EXPECT_EQ(r["width"], r["height"]) << i << ": not square";
+    EXPECT_LE(r["x"].get<int>() + r["width"].get<int>(), 640) << i;
+    EXPECT_LE(r["y"].get<int>() + r["height"].get<int>(), 480) << i;
   }
 }
 

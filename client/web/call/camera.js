@@ -32,9 +32,20 @@ export function photoOf(video) {
   return jpeg(video, [0, 0, video.videoWidth, video.videoHeight], fit(video.videoWidth, video.videoHeight, kPhotoSide), 0.9);
 }
 
-// The rectangle to show next: `shown` ({found: false}: the whole frame) kept while the face
+// The square of the region's longer side about its centre, moved into the frame.
+function squared(r, frameWidth, frameHeight) {
+  const side = Math.min(Math.max(r.width, r.height), frameWidth, frameHeight);
+  const clamp = (v, lo, hi) => Math.min(Math.max(v, lo), hi);
+  const x = clamp(r.x + Math.trunc(r.width / 2) - Math.trunc(side / 2), 0, frameWidth - side);
+  const y = clamp(r.y + Math.trunc(r.height / 2) - Math.trunc(side / 2), 0, frameHeight - side);
+  return { found: true, x, y, width: side, height: side };
+}
+
+// The rectangle to show next, square (the video's picture is, and a face stretched one way
+// reads as another expression): `shown` ({found: false}: the whole frame) kept while the face
 // stays well inside it, moved when the face drifted, a jump (a key frame) when it went far.
-export function followFace(shown, reported) {
+export function followFace(shown, reportedRegion, frameWidth, frameHeight) {
+  const reported = squared(reportedRegion, frameWidth, frameHeight);
   if (!shown.found) return { region: reported, jumped: true };
   const side = Math.max(1, Math.max(shown.width, shown.height));
   const dx = (reported.x + reported.width / 2) - (shown.x + shown.width / 2);
@@ -90,7 +101,7 @@ class FaceVideo {
     }
     const W = video.videoWidth, H = video.videoHeight;
     if (region) {
-      const choice = followFace(this.shown, region);
+      const choice = followFace(this.shown, region, W, H);
       this.shown = choice.region;
       if (choice.jumped) this.keyWanted = true;
     } else {

@@ -11,7 +11,7 @@ test('a face that stays keeps its crop, one that drifts moves it, one that jumps
   const golden = JSON.parse(readFileSync(new URL('../../../tests/golden/warp-vectors.json', import.meta.url))).face_crop;
   assert.deepEqual([kFaceVideoSide, kFaceSearchWidth], golden.sides);
   for (const step of golden.steps) {
-    const choice = followFace(step.shown, step.reported);
+    const choice = followFace(step.shown, step.reported, 640, 480);
     assert.deepEqual(choice.region, step.region, JSON.stringify(step));
     assert.equal(choice.jumped, step.jumped, JSON.stringify(step));
   }
