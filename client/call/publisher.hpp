@@ -64,12 +64,18 @@ class Publisher {
   void run_microphone();
   void send_crop(const Image& frame);
   void send_video(const Image& frame);
+  // After the client rejoined (a new connection): the photo and what is published said again, and
+  // the video starts with a key frame. Either thread may find it first; one says it.
+  void say_again_if_rejoined();
 
   SessionClient& client_;
   PublisherOptions options_;
   std::chrono::steady_clock::time_point start_;
   std::atomic<bool> stopping_{false}, muted_{false}, camera_off_{false}, camera_live_{false}, microphone_live_{false};
   std::atomic<uint64_t> crops_{0}, voices_{0}, bytes_{0};
+  std::atomic<uint64_t> connection_said_{1};  // the client's connection this member last announced itself on
+  std::vector<uint8_t> photo_jpeg_;           // the neutral photo as sent
+  std::atomic<bool> video_restart_{false};
   std::atomic<float> level_db_{-100};
   std::unique_ptr<VideoSource> camera_source_;
   std::unique_ptr<Microphone> microphone_source_;

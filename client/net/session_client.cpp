@@ -22,14 +22,14 @@ ByteStream plain_or_tls(asio::io_context& io, asio::ssl::context* tls) {
 }  // namespace
 
 SessionClient::SessionClient(const std::string& host_port, const std::string& client_name, std::shared_ptr<asio::ssl::context> tls)
-    : tls_(std::move(tls)), stream_(plain_or_tls(io_, tls_.get())) {
+    : tls_(std::move(tls)), stream_(plain_or_tls(io_, tls_.get())), client_name_(client_name.substr(0, kMaxName)) {
   const size_t colon = host_port.rfind(':');
   if (colon == std::string::npos || colon == 0) throw Error("--connect '" + host_port + "' is not HOST:PORT");
-  const std::string host = host_port.substr(0, colon);
+  const std::string host = host_ = host_port.substr(0, colon);
   std::error_code ec;
   asio::ip::tcp::resolver resolver(io_);
-  const auto endpoints = resolver.resolve(host, host_port.substr(colon + 1), ec);
-  if (!ec) asio::connect(stream_.socket(), endpoints, ec);
+  endpoints_ = resolver.resolve(host, host_port.substr(colon + 1), ec);
+  if (!ec) asio::connect(stream_.socket(), endpoints_, ec);
   if (ec) throw Error("cannot connect to " + host_port + ": " + ec.message());
   stream_.socket().set_option(asio::ip::tcp::no_delay(true), ec);
   if (auto* tls_stream = stream_.tls_stream()) {
@@ -43,7 +43,7 @@ SessionClient::SessionClient(const std::string& host_port, const std::string& cl
   watch_for_silence();
   thread_ = std::thread([this] { io_.run(); });
   try {
-    send(Hello{.client_name = client_name.substr(0, kMaxName)});
+    send(Hello{.client_name = client_name_});
     const Message reply = wait_for([](const Message& m) { return std::holds_alternative<Welcome>(m); }, kReplyTimeout);
     if (const auto* error = std::get_if<ErrorMessage>(&reply)) throw Error("server refused the connection: " + error->reason);
   } catch (const Error& e) {
@@ -61,11 +61,82 @@ SessionClient::SessionClient(const std::string& host_port, const std::string& cl
 SessionClient::~SessionClient() { stop(); }
 
 void SessionClient::stop() {
+  stopping_ = true;
   asio::post(io_, [this] {
     silence_timer_.cancel();
+    rejoin_timer_.cancel();
     stream_.close();
   });
   if (thread_.joinable()) thread_.join();
+}
+
+void SessionClient::drop_connection() {
+  asio::post(io_, [this] { stream_.close(); });
+}
+
+void SessionClient::lost(const std::string& reason) {
+  silence_timer_.cancel();
+  const bool again = rejoin_ && !stopping_ && !session_.empty();
+  {
+    std::lock_guard lock(mutex_);
+    if (!connected_) return;  // already lost (the socket closed after the silence): the first reason stands
+    rejoining_ = again;       // before connected_ turns false, so no reader sees the client as over
+    connected_ = false;
+    if (!reason.empty()) last_error_ = reason;
+    changed_.notify_all();
+  }
+  stream_.close();
+  outbox_.clear();
+  if (!again) return;
+  rejoin_until_ = std::chrono::steady_clock::now() + kRejoinFor;
+  std::fprintf(stderr, "inkwire-client: the connection was lost%s: joining again\n", reason.empty() ? "" : (" (" + reason + ")").c_str());
+  rejoin_later();
+}
+
+void SessionClient::rejoin_later() {
+  if (stopping_ || std::chrono::steady_clock::now() > rejoin_until_) {
+    rejoining_ = false;
+    std::lock_guard lock(mutex_);
+    changed_.notify_all();
+    return;
+  }
+  rejoin_timer_.expires_after(kRejoinEvery);
+  rejoin_timer_.async_wait([this](std::error_code ec) {
+    if (ec || stopping_) return;
+    stream_ = plain_or_tls(io_, tls_.get());
+    asio::async_connect(stream_.socket(), endpoints_, [this](std::error_code ec, const asio::ip::tcp::endpoint&) {
+      if (ec) return rejoin_later();
+      stream_.socket().set_option(asio::ip::tcp::no_delay(true), ec);
+      auto* tls_stream = stream_.tls_stream();
+      if (!tls_stream) return rejoined();
+      tls_stream->set_verify_callback(asio::ssl::host_name_verification(host_));
+      SSL_set_tlsext_host_name(tls_stream->native_handle(), host_.c_str());
+      tls_stream->async_handshake(asio::ssl::stream_base::client, [this](std::error_code ec) { ec ? rejoin_later() : rejoined(); });
+    });
+  });
+}
+
+void SessionClient::rejoined() {
+  decoder_ = FrameDecoder();
+  last_heard_ = std::chrono::steady_clock::now();
+  {
+    std::lock_guard lock(mutex_);
+    connected_ = true;
+    last_error_.clear();
+    replies_.clear();
+  }
+  // Hello and join ahead of anything sent meanwhile (dropped while not connected).
+  outbox_.clear();
+  for (const Message& m : {Message(Hello{.client_name = client_name_}), Message(Join{.session = session_, .token = token_})}) {
+    outbox_.push_back(encode(m));
+    bytes_sent_ += outbox_.back().size();
+  }
+  ++connections_;
+  rejoining_ = false;
+  std::fprintf(stderr, "inkwire-client: connected again, joining '%s'\n", session_.c_str());
+  start_reading();
+  watch_for_silence();
+  write_next();
 }
 
 void SessionClient::watch_for_silence() {
@@ -73,25 +144,15 @@ void SessionClient::watch_for_silence() {
   silence_timer_.async_wait([this](std::error_code ec) {
     if (ec) return;
     if (std::chrono::steady_clock::now() - last_heard_ <= kServerSilence) return watch_for_silence();
-    {
-      std::lock_guard lock(mutex_);
-      if (!connected_) return;
-      connected_ = false;
-      last_error_ = "no word from the server for " + std::to_string(kServerSilence.count()) + " seconds";
-      changed_.notify_all();
-    }
-    stream_.close();
+    lost("no word from the server for " + std::to_string(kServerSilence.count()) + " seconds");
   });
 }
 
 void SessionClient::start_reading() {
   stream_.async_read_some(asio::buffer(read_buffer_), [this](std::error_code ec, size_t n) {
     if (ec) {
-      silence_timer_.cancel();
-      std::lock_guard lock(mutex_);
-      connected_ = false;
-      if (ec != asio::error::eof && ec != asio::error::operation_aborted) last_error_ = ec.message();
-      changed_.notify_all();
+      if (ec == asio::error::operation_aborted && stopping_) return;
+      lost(ec == asio::error::eof || ec == asio::error::operation_aborted ? "" : ec.message());
       return;
     }
     bytes_received_ += n;
@@ -100,11 +161,7 @@ void SessionClient::start_reading() {
       decoder_.feed(read_buffer_.data(), n);
       while (auto m = decoder_.next()) on_message(std::move(*m));
     } catch (const ProtocolError& e) {
-      std::lock_guard lock(mutex_);
-      last_error_ = std::string("malformed data from the server: ") + e.what();
-      connected_ = false;
-      changed_.notify_all();
-      stream_.close();
+      lost(std::string("malformed data from the server: ") + e.what());
       return;
     }
     start_reading();
@@ -170,6 +227,10 @@ void SessionClient::send(const Message& message) {
     std::lock_guard lock(mutex_);
     if (apply_state_change(state_, message)) ++updates_, changed_.notify_all();
   }
+  {
+    std::lock_guard lock(mutex_);
+    if (!connected_ && rejoin_) return;  // between connections: a rejoin says hello and join first
+  }
   auto frame = std::make_shared<Bytes>(encode(message));
   bytes_sent_ += frame->size();
   asio::post(io_, [this, frame] {
@@ -212,6 +273,10 @@ Message SessionClient::wait_for(std::function<bool(const Message&)> wanted, std:
 }
 
 Snapshot SessionClient::join(const std::string& session, const std::string& token) {
+  {
+    std::lock_guard lock(mutex_);
+    session_ = session, token_ = token;  // what a rejoin joins
+  }
   send(Join{.session = session, .token = token});
   const Message reply = wait_for([](const Message& m) { return std::holds_alternative<Snapshot>(m); }, kReplyTimeout);
   if (const auto* error = std::get_if<ErrorMessage>(&reply)) throw Error("cannot join '" + session + "': " + error->reason);

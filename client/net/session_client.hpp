@@ -50,6 +50,18 @@ class SessionClient {
   uint64_t wait_for_update(uint64_t seen, std::chrono::milliseconds timeout) const;
   bool connected() const;
   std::string last_error() const;
+
+  // Rejoining (SPEC F19): once joined, a lost connection (a dropped socket, a server silent for
+  // kServerSilence) is made again every kRejoinEvery for kRejoinFor, under the same name, and the
+  // session joined again; connected() is false meanwhile and what is sent then is dropped.
+  // `connections()` counts the connections made (1, then one more per rejoin): a publisher
+  // says again what it publishes when it changes.
+  static constexpr std::chrono::seconds kRejoinEvery{2}, kRejoinFor{60};
+  void set_rejoin(bool rejoin) { rejoin_ = rejoin; }
+  uint64_t connections() const { return connections_; }
+  bool rejoining() const { return rejoining_; }  // lost, and trying again
+  // Closes the socket under the client, as a dropped network would (tests).
+  void drop_connection();
   // The reason the server gave for the latest change it refused (SPEC W8: this member may not
   // make it), and how many it refused so far; the session's value replaced the change.
   std::string refusal() const;
@@ -92,6 +104,10 @@ class SessionClient {
   void stop();  // closes the socket and ends the I/O thread
   void start_reading();
   void watch_for_silence();  // on the I/O thread: a server silent for kServerSilence is taken as gone
+  // On the I/O thread: the connection is gone (the reason for last_error, empty for none).
+  void lost(const std::string& reason);
+  void rejoin_later();  // on the I/O thread: the next attempt, while kRejoinFor lasts
+  void rejoined();      // on the I/O thread: connected again: hello and join go first
   void on_message(protocol::Message message);
   void write_next();
   protocol::Message wait_for(std::function<bool(const protocol::Message&)> wanted, std::chrono::milliseconds timeout);
@@ -105,6 +121,12 @@ class SessionClient {
   std::deque<protocol::Bytes> outbox_;  // touched on the I/O thread only
   bool writing_ = false;
   asio::steady_timer silence_timer_{io_};
+  asio::steady_timer rejoin_timer_{io_};
+  asio::ip::tcp::resolver::results_type endpoints_;
+  std::string host_, client_name_, session_, token_;  // what a rejoin says again
+  std::chrono::steady_clock::time_point rejoin_until_{};  // I/O thread only
+  std::atomic<bool> rejoin_{false}, rejoining_{false}, stopping_{false};
+  std::atomic<uint64_t> connections_{1};
   std::chrono::steady_clock::time_point last_heard_ = std::chrono::steady_clock::now();  // I/O thread only
 
   mutable std::mutex mutex_;

@@ -107,7 +107,7 @@ int run_window(SessionClient& client, AssetCache& cache, const ViewerOptions& o)
   // A call's sound, when the session is one: opened once, fed what is due each frame.
   std::unique_ptr<Speaker> speaker;
   if (client.state().kind == protocol::SessionKind::Conference) speaker = std::make_unique<Speaker>();
-  while (!context->should_close() && client.connected()) {
+  while (!context->should_close() && (client.connected() || client.rejoining())) {
     const double now = glfwGetTime(), dt = std::min(now - last_time, 0.1);
     last_time = now;
     bool dirty = sync.poll();

@@ -134,3 +134,53 @@ TEST(FaceVideoE2ETest, HostileVideoIsDroppedWithItsReasonAndAKeyFrameAskedForWhi
   EXPECT_NE(named(listener.roster(), "Mallory"), nullptr);
   EXPECT_FALSE(log_events(server.process().output(), "call-video-dropped").empty()) << "the drops were not logged with their reason";
 }
+
+// SPEC F19 for the native client: its socket cut mid-call (as a dropped network would), it joins
+// again by itself within a few seconds, takes back its number and tile (one, not two), says
+// again what it publishes and its photo, and its face video starts again with a key frame.
+TEST(FaceVideoE2ETest, ANativeMemberWhoseSocketIsCutIsBackInOneTileWithinFiveSecondsAndItsFaceGoesOn) {
+  if (!fs::exists(kFaceModel) || !fs::exists(kDlibPhoto)) GTEST_SKIP() << "libdlib-data's model or libdlib-dev's example photo is missing";
+  const fs::path dir = output_dir("rejoin");
+  ServerUnderTest server(dir, {{"http", "127.0.0.1:0"}, {"sessions", {{{"name", "call"}, {"kind", "conference"}}}}});
+  const fs::path photo = fs::exists(kYale / "subject02_normal.png") ? kYale / "subject02_normal.png" : kDlibPhoto;
+  const fs::path clip = dir / "clip";
+  fs::create_directories(clip);
+  for (int i = 0; i < 400; ++i) {  // 16 s at 25 fps
+    char name[32];
+    std::snprintf(name, sizeof name, "%04d%s", i, photo.extension().c_str());
+    fs::create_symlink(photo, clip / name);
+  }
+  SessionClient ada(server.address(), "Ada"), listener(server.address(), "Listener");
+  ada.join("call", "");
+  listener.join("call", "");
+  ada.set_rejoin(true);
+  Publisher publisher(ada, PublisherOptions{.camera = clip.string()});
+  const auto ada_entry = [&] {  // a copy: the roster is the listener's newest, by value
+    const protocol::Roster roster = listener.roster();
+    const protocol::CallMember* m = named(roster, "Ada");
+    return m ? std::optional(*m) : std::nullopt;
+  };
+  ASSERT_TRUE(eventually([&] { return ada_entry() && ada_entry()->camera && ada_entry()->assets.size() == 2; }));
+  const uint16_t number = ada_entry()->member;
+  ASSERT_TRUE(eventually([&] { return listener.member_faces().count(number); }))
+      << "Ada's face never came";
+
+  ada.drop_connection();
+  ASSERT_TRUE(eventually([&] { return !ada.connected(); })) << "the cut was not noticed";
+  const auto cut = std::chrono::steady_clock::now();
+  ASSERT_TRUE(eventually([&] { return ada.connected() && ada.connections() == 2; })) << ada.last_error();
+  ASSERT_TRUE(eventually([&] { return ada_entry() && ada_entry()->camera && ada_entry()->assets.size() == 2; }));
+  const double back = std::chrono::duration<double>(std::chrono::steady_clock::now() - cut).count();
+  EXPECT_LT(back, 5.0) << "back in the roster after " << back << " s";
+  int adas = 0;
+  for (const auto& m : listener.roster().members) adas += m.name == "Ada";
+  EXPECT_EQ(adas, 1) << "a second tile for Ada";
+  EXPECT_EQ(ada_entry()->member, number) << "Ada came back under another number";
+  // Her face goes on: a camera face newer than the cut (its time is on her publisher's clock).
+  const uint32_t cut_ms = uint32_t(std::chrono::duration_cast<std::chrono::milliseconds>(cut - publisher.clock_start()).count());
+  EXPECT_TRUE(eventually([&] {
+    const auto faces = listener.member_faces();
+    return faces.count(number) && faces.at(number).time_ms > cut_ms;
+  })) << "no face from Ada's camera after she came back";
+  EXPECT_EQ(log_events(server.process().output(), "call-video-dropped").size(), 0u) << "her video restarted without a key frame";
+}
