@@ -11,6 +11,7 @@
 
 #include "common/error.hpp"
 #include "common/log.hpp"
+#include "server/products/product_export.hpp"
 #include "server/products/product_store.hpp"
 #include "server/self_signed.hpp"
 #include "server/server.hpp"
@@ -44,7 +45,28 @@ void say_join_links(const server::ServerConfig& config, uint16_t port, const ser
   std::cout << std::flush;
 }
 
-int add_product(const std::string& name, const server::ProductSource& source, const std::string& data, const std::string& editor_token) {
+// The product named `name` in the store's sessions; throws when there is none.
+protocol::Snapshot stored_product(const server::AssetStore& store, const std::string& name) {
+  for (const auto& s : store.sessions())
+    if (s.state.session == name && s.state.kind == protocol::SessionKind::Turntable) return s.state;
+  throw Error("no product named '" + name + "' in " + store.dir().string() + " (make it with add-product)");
+}
+
+// `inkwire-server export-product NAME DIR` (and add-product --export DIR): the product as static
+// files, and the snippet a shop pastes.
+void export_to(const server::AssetStore& store, const std::string& name, const std::filesystem::path& dir) {
+  const server::ExportSummary summary = server::export_product(store, stored_product(store, name), dir);
+  std::printf("exported product '%s' to %s: %zu files written (%llu bytes), %zu already there; a first view fetches %llu bytes of it\n"
+              "Put the folder on any static host or object store as it is (deploy/static-hosting.md says which headers each file "
+              "wants) and paste, with its address for PRODUCT-URL:\n"
+              "  <script type=\"module\" src=\"PRODUCT-URL/inkwire.js\"></script>\n"
+              "  <inkwire-turntable src=\"PRODUCT-URL/product.json\" style=\"width:600px;height:450px\"></inkwire-turntable>\n",
+              name.c_str(), dir.c_str(), summary.written, static_cast<unsigned long long>(summary.bytes_written), summary.kept,
+              static_cast<unsigned long long>(summary.first_view_bytes));
+}
+
+int add_product(const std::string& name, const server::ProductSource& source, const std::string& data, const std::string& editor_token,
+                const std::filesystem::path& export_dir) {
   if (name.empty() || name.size() > protocol::kMaxName ||
       name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_.") != std::string::npos)
     throw Error("product name '" + name + "' must be 1-64 letters, digits, - _ .");
@@ -82,6 +104,11 @@ int add_product(const std::string& name, const server::ProductSource& source, co
   std::printf("%s product '%s': %zu photos %dx%d, %u tween cells, %llu bytes%s; in %s\n", made ? "stored" : "already stored:",
               name.c_str(), samples, state.product.width, state.product.height, unsigned(state.product.cells),
               static_cast<unsigned long long>(first), zoom.c_str(), store.dir().c_str());
+  std::printf("Served by inkwire-server (--http HOST:PORT), paste:\n"
+              "  <script type=\"module\" src=\"http://HOST:PORT/inkwire.js\"></script>\n"
+              "  <inkwire-turntable server=\"ws://HOST:PORT/ws\" session=\"%s\" style=\"width:600px;height:450px\"></inkwire-turntable>\n",
+              name.c_str());
+  if (!export_dir.empty()) export_to(store, name, export_dir);
   return 0;
 }
 
@@ -131,16 +158,33 @@ int main(int argc, char** argv) {
   add->add_option("--editor-token", editor_token,
                   "who joins the product with this token may present it and change its style; visitors only turn their own view "
                   "(without it the product keeps the editor token it had; one never given has no editor)");
+  std::filesystem::path export_dir;
+  add->add_option("--export", export_dir, "also write the product as static files into this folder (as export-product does)");
+  CLI::App* exporting = app.add_subcommand("export-product", "write product NAME as static files for any static host or CDN: "
+                                                              "photos, mattes and tween cells under their hashes, product.json, the element");
+  exporting->add_option("name", product_name, "the product's session name")->required();
+  exporting->add_option("dir", export_dir, "the folder to write (an earlier export there is updated: only what changed is added)")->required();
+  exporting->add_option("--data", product_data, "data folder (default ./inkwire-data)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
+  if (exporting->parsed()) {
+    try {
+      if (quiet) set_log_level(LogLevel::Warn);
+      export_to(server::AssetStore(product_data.empty() ? "inkwire-data" : product_data), product_name, export_dir);
+      return 0;
+    } catch (const std::exception& e) {
+      std::cerr << "inkwire-server export-product: " << e.what() << "\n";
+      return 1;
+    }
+  }
   if (add->parsed()) {
     try {
       if (source.photos.empty() && source.mesh.empty()) throw Error("add-product needs --photos DIR or --mesh FILE");
       if (quiet) set_log_level(LogLevel::Warn);
-      return add_product(product_name, source, product_data, editor_token);
+      return add_product(product_name, source, product_data, editor_token, export_dir);
     } catch (const std::exception& e) {
       std::cerr << "inkwire-server add-product: " << e.what() << "\n";
       return 1;

@@ -19,12 +19,9 @@
 #include "server/server.hpp"
 #include "server/web/http_request.hpp"
 #include "server/web/metrics.hpp"
+#include "server/web/web_files.hpp"
 #include "server/web/websocket.hpp"
 
-namespace inkwire {
-const std::map<std::string, std::string_view>& web_client_files();    // generated from client/web/
-const std::map<std::string, std::string_view>& web_shader_files();    // client/shaders/tween/blend.*, as shaders/tween/...
-}
 
 namespace inkwire::server {
 namespace {
