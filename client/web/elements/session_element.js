@@ -110,9 +110,11 @@ export class SessionElement extends HTMLElement {
   // The token joining the session.
   joinToken() { return this.getAttribute('token') ?? ''; }
 
-  // A new session from the attributes, replacing any before it.
+  // A new session from the attributes, replacing any before it. `websocketsOpened` counts them
+  // (a product read from a static host opens none).
   openSession() {
     this.session?.close();
+    this.websocketsOpened = (this.websocketsOpened ?? 0) + 1;
     this.session = new Session(this.serverUrl(), this.getAttribute('session') ?? '', this.joinToken());
     this.session.addEventListener('error', (e) => this.fail(e.detail));
     this.session.addEventListener('refused', (e) => this.refused(e.detail));

@@ -1,10 +1,11 @@
-// <inkwire-turntable server="ws://HOST:PORT/ws" session="NAME">: a product a shop embeds with
-// one script tag (SPEC W2, CONTRACTS.md). It downloads the product progressively (each photo's
+// <inkwire-turntable server="ws://HOST:PORT/ws" session="NAME">, or <inkwire-turntable
+// src="https://CDN/PRODUCT/product.json"> for a product exported as static files (SPEC T20-T21):
+// a product a shop embeds with one script tag (SPEC W2, CONTRACTS.md). It downloads the product progressively (each photo's
 // matte and photo, nearest the view first; a first view after one photo; a progress bar), then
 // synthesises every view locally (render/tween/tween_view.js). Drag with mouse, touch or pen
 // (with inertia; up and down too on a product in rows), wheel or pinch to zoom, arrow keys step
 // one photo or one row, auto-spin until the first touch (not under prefers-reduced-motion),
-// fullscreen, sized by its container at the device pixel ratio. Turning it sends nothing. Attributes: server, session, token, azimuth,
+// fullscreen, sized by its container at the device pixel ratio. Turning it sends nothing. Attributes: src, server, session, token, azimuth,
 // auto-rotate ("off" to stop it), and presenter mode (off unless set): `present` sends this
 // view to the session as object poses, `follow` shows the newest view a presenter sent (a drag
 // turns it until the next); property azimuth (degrees); attribute `loaded` once every photo and
@@ -34,7 +35,7 @@ const template = `
   fill="none" stroke="#333" stroke-width="1.6"><path d="M1 5V1h4M11 1h4v4M15 11v4h-4M5 15H1v-4"/></svg></button>`;
 
 export class InkwireTurntable extends PresenterMixin(AutoSpinMixin(ControlsMixin(LoadingMixin(SessionElement)))) {
-  static observedAttributes = [...SessionElement.observedAttributes, 'azimuth'];
+  static observedAttributes = [...SessionElement.observedAttributes, 'azimuth', 'src'];
 
   constructor() {
     super(template);

@@ -9,7 +9,21 @@ const kRequestsAhead = 4;
 // with no word from it and the connection is taken as dead, as client/net/session_client.hpp.
 export const kServerSilenceMs = 15000;
 const kCacheName = 'inkwire-assets-v1';
-const toHex = (bytes) => Array.from(bytes, (b) => b.toString(16).padStart(2, '0')).join('');
+export const toHex = (bytes) => Array.from(bytes, (b) => b.toString(16).padStart(2, '0')).join('');
+
+// An asset's bytes ({hash, name}) from Cache Storage, or from `download()` checked against its
+// SHA-256 and then cached: one path for the session's chunks and a static host's files.
+export async function cachedOrFetched(asset, download) {
+  const key = `/__inkwire/assets/${toHex(asset.hash)}`;
+  const cache = globalThis.caches ? await caches.open(kCacheName).catch(() => null) : null;
+  const cached = cache && (await cache.match(key));
+  if (cached) return new Uint8Array(await cached.arrayBuffer());
+  const bytes = await download();
+  const digest = new Uint8Array(await crypto.subtle.digest('SHA-256', bytes));
+  if (toHex(digest) !== toHex(asset.hash)) throw new Error(`${asset.name} does not match its hash`);
+  if (cache) await cache.put(key, new Response(bytes)).catch(() => {});
+  return bytes;
+}
 
 export class Session extends EventTarget {
   // Events: 'snapshot' (detail: the snapshot), 'tween-data' (detail: {pair, data}), 'state' (a
@@ -94,17 +108,7 @@ export class Session extends EventTarget {
   }
 
   // The asset's bytes: from the cache, or downloaded, checked and cached.
-  async fetchAsset(asset) {
-    const key = `/__inkwire/assets/${toHex(asset.hash)}`;
-    const cache = globalThis.caches ? await caches.open(kCacheName).catch(() => null) : null;
-    const cached = cache && (await cache.match(key));
-    if (cached) return new Uint8Array(await cached.arrayBuffer());
-    const bytes = await this.download(asset);
-    const digest = new Uint8Array(await crypto.subtle.digest('SHA-256', bytes));
-    if (toHex(digest) !== toHex(asset.hash)) throw new Error(`${asset.name} does not match its hash`);
-    if (cache) await cache.put(key, new Response(bytes)).catch(() => {});
-    return bytes;
-  }
+  fetchAsset(asset) { return cachedOrFetched(asset, () => this.download(asset)); }
 
   download(asset) {
     const hex = toHex(asset.hash);

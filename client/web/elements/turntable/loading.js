@@ -1,10 +1,14 @@
-// <inkwire-turntable>'s loading (SPEC T12): the session's product, its photos one at a time
-// (each matte, then the photo, nearest the current view first, each drawn as it comes), its
-// tween cells whenever they arrive, a progress bar, and the attribute `loaded` once all are
-// there. A mixin over SessionElement (STYLE 13: one feature a file, as <model-viewer> does).
+// <inkwire-turntable>'s loading (SPEC T12, T21): the product, from the session's server or,
+// with `src`, from a static host's product.json (net/static_product.js; then only the live part,
+// a presenter and followers, goes through a server, and only when `session` is given too); its
+// photos one at a time (each matte, then the photo, nearest the current view first, each drawn
+// as it comes), its tween cells whenever they arrive, a progress bar, and the attribute `loaded`
+// once all are there. A mixin over SessionElement (STYLE 13: one feature a file, as
+// <model-viewer> does).
 import { nextPhotoFetch, wantedLevel } from '../../common/photo_fetch.js';
 import { decodeTweenCell } from '../../common/tween_data.js';
 import { AssetKind, bytesBy } from '../../net/session.js';
+import { StaticProduct } from '../../net/static_product.js';
 import { matteSample, objectOnMatte } from '../../render/tween/matte_sample.js';
 import { loadTweenShaders, TweenView } from '../../render/tween/tween_view.js';
 import { decodeImage } from '../session_element.js';
@@ -24,29 +28,50 @@ export const LoadingMixin = (Base) => class extends Base {
     this.firstViewPhotos = this.firstViewBytes = undefined;
     this.presented = null;  // a new session hears this view again
     this.presentRefused = false;
-    const session = this.openSession();
+    this.product?.close();
+    this.product = null;
+    const src = this.getAttribute('src');
+    if (src) {
+      this.session?.close();
+      this.session = null;
+      this.product = new StaticProduct(src);
+      this.product.addEventListener('error', (e) => this.fail(e.detail));
+    }
+    // The live part: a presenter's views and refusals (with `src`, only when a session is named).
+    const live = !src || this.hasAttribute('session') ? this.openSession() : null;
+    live?.addEventListener('refused', () => { this.presentRefused = true; });
+    live?.addEventListener('state', (e) => {
+      if (e.detail.type === 'object-pose') this.follow(e.detail);
+    });
+    if (src) live?.addEventListener('snapshot', (e) => this.follow(e.detail.object), { once: true });
+    const session = this.product ?? live;  // where the product's files come from
     const pendingCells = [];
     session.addEventListener('tween-data', (e) => {
       if (this.view) this.addCell(e.detail);
       else pendingCells.push(e.detail);
-    });
-    session.addEventListener('refused', () => { this.presentRefused = true; });
-    session.addEventListener('state', (e) => {
-      if (e.detail.type === 'object-pose') this.follow(e.detail);
     });
     session.addEventListener('snapshot', async (e) => {
       try {
         const snapshot = e.detail;
         if (!snapshot.product.directions.length) throw new Error(`session '${snapshot.session}' has no product to show`);
         this.snapshot = snapshot;
-        this.follow(snapshot.object);
+        if (snapshot.object) this.follow(snapshot.object);
         this.view = new TweenView(this.webgl(), snapshot.product, await loadTweenShaders());
         for (const cell of pendingCells.splice(0)) this.addCell(cell);
         await this.download(session);
       } catch (error) {
-        if (this.session === session) this.fail(error.message);
+        if (this.source() === session) this.fail(error.message);
       }
     });
+  }
+
+  // Where the product's files come from now: the static host's product, else the session.
+  source() { return this.product ?? this.session; }
+
+  disconnectedCallback() {
+    super.disconnectedCallback();
+    this.product?.close();
+    this.product = null;
   }
 
   addCell({ pair, data }) {
@@ -87,7 +112,7 @@ export const LoadingMixin = (Base) => class extends Base {
     const photos = nth(AssetKind.samples), mattes = nth(AssetKind.matte), zoom = nth(AssetKind.zoom);
     const n = product.directions.length;
     for (;;) {
-      if (this.session !== session) return;
+      if (this.source() !== session) return;
       const next = this.nextFetch();
       if (!next) {
         await new Promise((resolve) => { this.wake = resolve; });
@@ -103,7 +128,7 @@ export const LoadingMixin = (Base) => class extends Base {
       // server sends after that photo is for the views between photos).
       if (this.firstViewBytes === undefined) this.firstViewBytes = bytesBy(session, photo);
       const rgba = await pixels(photoBytes, size.width, size.height);
-      if (this.session !== session) return;
+      if (this.source() !== session) return;
       // A finer level is laid on white by its first-level matte scaled up (server/products/matte.cpp key_like).
       const object = objectOnMatte(rgba, matte, product.width, product.height, size.width, size.height);
       const texture = matteSample(object, size.width, size.height, size.height / product.height);
