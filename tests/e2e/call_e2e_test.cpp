@@ -16,15 +16,6 @@
 using namespace inkwire;
 using namespace inkwire::e2e;
 
-namespace {
-
-const fs::path kYale = fs::path(INKWIRE_SOURCE_DIR) / ".." / "shared" / "data" / "yalefaces";
-const fs::path kDlibPhoto = "/usr/share/doc/libdlib19.1/examples/faces/Tom_Cruise_avp_2014_4.jpg";
-const fs::path kFaceModel = "/usr/share/dlib/shape_predictor_68_face_landmarks.dat";
-
-
-}  // namespace
-
 TEST(CallE2ETest, MembersAreSeenAndHeardAsThemselvesAndBadInputIsDroppedAndCounted) {
   if (!fs::exists(kFaceModel) || !fs::exists(kDlibPhoto)) GTEST_SKIP() << "libdlib-data's model or libdlib-dev's example photo is missing";
   const bool yale = fs::exists(kYale / "subject02_normal.png");

@@ -17,7 +17,6 @@ namespace {
 
 // Packaged with libdlib-dev and libdlib-data (scripts/packages.txt).
 const fs::path kSpeakerPhoto = "/usr/share/doc/libdlib19.1/examples/faces/Tom_Cruise_avp_2014_4.jpg";
-const fs::path kFaceModel = "/usr/share/dlib/shape_predictor_68_face_landmarks.dat";
 constexpr int kFps = 15;
 constexpr glm::ivec2 kClientSize{240, 180};
 

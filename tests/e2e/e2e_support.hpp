@@ -24,6 +24,12 @@ namespace inkwire::e2e {
 
 namespace fs = std::filesystem;
 
+// Faces the call tests publish: the Yale development subjects from ../shared/data when they are
+// there (tests say so and check less without them), libdlib-dev's example photo, dlib's model.
+inline const fs::path kYale = fs::path(INKWIRE_SOURCE_DIR) / ".." / "shared" / "data" / "yalefaces";
+inline const fs::path kDlibPhoto = "/usr/share/doc/libdlib19.1/examples/faces/Tom_Cruise_avp_2014_4.jpg";
+inline const fs::path kFaceModel = "/usr/share/dlib/shape_predictor_68_face_landmarks.dat";
+
 inline fs::path output_dir(const std::string& test) {
   const fs::path dir = fs::path(INKWIRE_TEST_OUTPUT_DIR) / "e2e" / test;
   fs::remove_all(dir);
