@@ -94,7 +94,7 @@ ExportSummary export_product(const AssetStore& store, const protocol::Snapshot& 
   for (const auto* files : {&web_client_files(), &web_shader_files()})
     for (const auto& [path, bytes] : *files) write_file(dir / path, bytes, summary);
   // The manifest last: until it is renamed into place, visitors read the previous one.
-  const std::string text = manifest.dump(1) + "\n";
+  const std::string text = manifest.dump() + "\n";  // one line: the first view waits for it
   write_file(dir / "product.json", text, summary);
   summary.first_view_bytes = text.size() + manifest["photos"][0]["size"].get<uint64_t>() +
                              (manifest["mattes"].empty() ? 0 : manifest["mattes"][0]["size"].get<uint64_t>());

@@ -172,3 +172,52 @@ def engine(name, out, width, height, chromium_extra=()):
     if name == "firefox":
         return FirefoxDriver(out, width, height)
     return webkit(width, height)
+
+
+class Nginx:
+    """Debian's nginx serving `root` on a free 127.0.0.1 port with the project's own site config
+    (deploy/nginx/inkwire-products.conf, its listen and root lines replaced), as an unprivileged
+    foreground process with its logs in `prefix`. `requests_since(offset)` reads the access log
+    from a byte offset (`log_size()` now): [(path, status)]."""
+    CONF = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "deploy", "nginx", "inkwire-products.conf")
+
+    def __init__(self, root, prefix):
+        import re
+        import socket
+        binary = shutil.which("nginx") or "/usr/sbin/nginx"
+        if not os.path.exists(binary):
+            skip("nginx is missing (scripts/packages.txt: nginx-light)")
+        with socket.socket() as s:
+            s.bind(("127.0.0.1", 0))
+            self.port = s.getsockname()[1]
+        os.makedirs(os.path.join(prefix, "logs"), exist_ok=True)
+        site = open(self.CONF).read()
+        site = re.sub(r"listen [^;]*;", f"listen 127.0.0.1:{self.port};", site)
+        site = re.sub(r"root [^;]*;", f"root {root};", site)
+        open(os.path.join(prefix, "site.conf"), "w").write(site)
+        open(os.path.join(prefix, "nginx.conf"), "w").write(f"""daemon off; pid {prefix}/nginx.pid; error_log {prefix}/logs/error.log;
+events {{ worker_connections 256; }}
+http {{ access_log {prefix}/logs/access.log; client_body_temp_path {prefix}/tmp; proxy_temp_path {prefix}/tmp;
+        include {prefix}/site.conf; }}
+""")
+        self.access_log = os.path.join(prefix, "logs", "access.log")
+        self.process = subprocess.Popen([binary, "-p", prefix, "-c", os.path.join(prefix, "nginx.conf")],
+                                        stderr=open(os.path.join(prefix, "stderr.log"), "w"))
+        for _ in range(100):
+            if os.path.exists(self.access_log):
+                return
+            time.sleep(0.05)
+        raise SystemExit(f"nginx did not start: {open(os.path.join(prefix, 'stderr.log')).read()}")
+
+    def log_size(self):
+        return os.path.getsize(self.access_log)
+
+    def requests_since(self, start):
+        import re
+        with open(self.access_log) as f:
+            f.seek(start)
+            return [(m.group(1), int(m.group(2))) for m in re.finditer(r'"GET ([^ ]*) HTTP/[0-9.]*" (\d+)', f.read())]
+
+    def stop(self):
+        self.process.terminate()
+        self.process.wait(timeout=10)

@@ -18,22 +18,18 @@ Skips with a message when nginx or the browser tooling is missing."""
 import base64
 import json
 import os
-import re
 import shutil
-import socket
 import subprocess
 import sys
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from browser_support import ENGINES, Checks, Server, engine, engine_missing, psnr, read_image, skip
+from browser_support import ENGINES, Checks, Nginx, Server, engine, engine_missing, psnr, read_image, skip
 
 BIN, OUT = sys.argv[1], sys.argv[2]
 wanted = [a for a in sys.argv[3:] if a in ENGINES] or list(ENGINES)
 DUCK = "/usr/share/assimp/models/Collada/duck.dae"
-NGINX = shutil.which("nginx") or "/usr/sbin/nginx"
-CONF = os.path.join(os.path.dirname(__file__), "..", "..", "deploy", "nginx", "inkwire-products.conf")
-if not os.path.exists(NGINX):
+if not (shutil.which("nginx") or os.path.exists("/usr/sbin/nginx")):
     skip("nginx is missing (scripts/packages.txt: nginx-light)")
 if not os.path.exists(DUCK):
     skip(f"{DUCK} is missing (assimp-testmodels)")
@@ -48,12 +44,6 @@ checks = Checks()
 check = checks.check
 shutil.rmtree(OUT, ignore_errors=True)
 os.makedirs(OUT)
-
-
-def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
 
 
 def run(*args):
@@ -86,36 +76,13 @@ with open(os.path.join(root, "duck-changed", victim), "r+b") as f:
 os.remove(os.path.join(root, "duck-missing", victim))
 
 # nginx with the project's config, on 127.0.0.1, as an unprivileged process.
-port = free_port()
-prefix = os.path.join(OUT, "nginx")
-os.makedirs(os.path.join(prefix, "logs"))
-site = open(CONF).read()
-site = re.sub(r"listen [^;]*;", f"listen 127.0.0.1:{port};", site)
-site = re.sub(r"root [^;]*;", f"root {root};", site)
-open(os.path.join(prefix, "site.conf"), "w").write(site)
-open(os.path.join(prefix, "nginx.conf"), "w").write(f"""daemon off; pid {prefix}/nginx.pid; error_log {prefix}/logs/error.log;
-events {{ worker_connections 64; }}
-http {{ access_log {prefix}/logs/access.log; client_body_temp_path {prefix}/tmp; proxy_temp_path {prefix}/tmp;
-        include {prefix}/site.conf; }}
-""")
-nginx = subprocess.Popen([NGINX, "-p", prefix, "-c", os.path.join(prefix, "nginx.conf")], stderr=open(os.path.join(prefix, "stderr.log"), "w"))
+nginx = Nginx(root, os.path.join(OUT, "nginx"))
+port = nginx.port
 server = Server(BIN, OUT, data, {"sessions": [], "http": "127.0.0.1:0"})
 product = f"http://127.0.0.1:{port}/duck"
-access_log = os.path.join(prefix, "logs", "access.log")
-
-
-def requests_since(start):
-    """Paths nginx served since byte `start` of its access log, with their status."""
-    with open(access_log) as f:
-        f.seek(start)
-        return [(m.group(1), int(m.group(2))) for m in re.finditer(r'"GET ([^ ]*) HTTP/[0-9.]*" (\d+)', f.read())]
-
+requests_since = nginx.requests_since
 
 try:
-    for _ in range(50):
-        if os.path.exists(access_log):
-            break
-        time.sleep(0.1)
     for name in runnable:
         out = os.path.join(OUT, name)
         os.makedirs(out)
@@ -141,7 +108,7 @@ try:
                 open(path, "wb").write(base64.b64decode(png.split(",", 1)[1]))
                 return read_image(path, out)
 
-            log_start = os.path.getsize(access_log)
+            log_start = nginx.log_size()
             driver.execute_script(f"return import('{product}/inkwire.js').then(() => customElements.whenDefined('inkwire-turntable')).then(() => true)")
             static = element_for({"src": f"{product}/product.json"}, "static")
             message = driver.execute_script(f"return {static}.message.textContent")
@@ -166,7 +133,7 @@ try:
             # A second visit: the same page again; only the manifest goes to nginx.
             time.sleep(1)
             driver.get(f"http://127.0.0.1:{server.http}/")
-            log_start = os.path.getsize(access_log)
+            log_start = nginx.log_size()
             driver.execute_script(f"return import('{product}/inkwire.js').then(() => customElements.whenDefined('inkwire-turntable')).then(() => true)")
             again = element_for({"src": f"{product}/product.json"}, "again")
             check(driver.execute_script(f"return {again}.hasAttribute('loaded')"), f"{name}: the second visit shows the product")
@@ -175,7 +142,7 @@ try:
             # Whether this browser keeps anything between visits at all: the same immutable file
             # fetched twice from the page must reach nginx once.
             probe = f"{product}/{manifest['photos'][5]['file']}"
-            log_start = os.path.getsize(access_log)
+            log_start = nginx.log_size()
             driver.execute_script(f"return fetch('{probe}').then((r) => r.arrayBuffer()).then(() => fetch('{probe}')).then((r) => r.arrayBuffer()).then(() => true)")
             caching = len(requests_since(log_start)) <= 1
             if caching:
@@ -216,6 +183,5 @@ try:
     check(len(new_files) == sum(len(v) for v in changed.values()), f"... and adds no other file ({len(new_files)} new)")
 finally:
     server.stop()
-    nginx.terminate()
-    nginx.wait(timeout=10)
+    nginx.stop()
 checks.finish()

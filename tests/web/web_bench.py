@@ -7,7 +7,10 @@ view and to the whole product, frames per second while dragging at 512x512 and 1
 mean PSNR over 36 true views (10 degrees apart, between both viewers' photos, rendered by
 inkwire-render). The 1024x1024 row is a second visit: its photos come from the browser's cache.
 The `zoomed-turn` rows: the truck photographed at 1024 pixels, zoomed in and turned: how many
-frames show a photo before its finer level is there, fetching ahead of the turn and not.
+frames show a photo before its finer level is there, fetching ahead of the turn and not. The
+`static` row: the same truck exported as static files (export-product) and served by nginx with
+deploy/nginx/, the page on another origin: first view, whole product, a repeat visit's bytes (as
+resource timing counts them on the wire) and frames per second while dragging.
   web_bench.py BIN_DIR OUT_DIR JSON_OUT"""
 import base64
 import functools
@@ -21,7 +24,7 @@ import threading
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from browser_support import Server, chromium, psnr, read_image, skip  # skips without the browser
+from browser_support import Nginx, Server, chromium, psnr, read_image, skip  # skips without the browser
 
 BIN, OUT, JSON_OUT = sys.argv[1], sys.argv[2], sys.argv[3]
 TRUCK = "/usr/share/assimp/models/glTF/CesiumMilkTruck/CesiumMilkTruck.gltf"
@@ -90,7 +93,31 @@ for a in [10 * k + 3.5 for k in range(36)]:
     truth[a] = read_image(path, OUT)
 
 server = Server(BIN, OUT, data, {"sessions": [], "http": "127.0.0.1:0"})
+# The truck as static files on nginx (SPEC T20-T23).
+www = os.path.join(OUT, "www")
+shutil.rmtree(www, ignore_errors=True)
+subprocess.run([f"{BIN}/inkwire-server", "export-product", "truck", os.path.join(www, "truck"), "--data", data], check=True, stdout=subprocess.DEVNULL)
+nginx = Nginx(www, os.path.join(OUT, "nginx"))
 driver = chromium(OUT, 1100, 1100)
+
+
+def drag_fps(element):
+    """While dragging: the azimuth changes every animation frame, as a pointer moves it, and the
+    element redraws as it does for a pointer (once per frame at most); frames drawn per second,
+    the median of five 2-second runs (this machine is shared and noisy)."""
+    return sorted(driver.execute_async_script(f"""const done = arguments[0], e = {element};
+      const draw = e.draw; let draws = 0; e.draw = function () {{ ++draws; return draw.call(this); }};
+      const t0 = performance.now();
+      const step = () => {{ e.azimuth = e.azimuth - 1.3;
+        if (performance.now() - t0 < 2000) requestAnimationFrame(step);
+        else {{ e.draw = draw; done(draws * 1000 / (performance.now() - t0)); }} }};
+      requestAnimationFrame(step);""") for _ in range(5))[2]
+
+
+def wait_loaded(element):
+    start = time.time()
+    while time.time() - start < 60 and not driver.execute_script(f"return {element}.hasAttribute('loaded')"):
+        time.sleep(0.05)
 rows, renderer = [], ""
 try:
     driver.get(f"http://127.0.0.1:{server.http}/")
@@ -106,17 +133,7 @@ try:
         while time.time() - start < 60 and not driver.execute_script(f"return {element}.hasAttribute('loaded')"):
             time.sleep(0.05)
         first_bytes, first_ms, total = driver.execute_script(f"const e = {element}; return [e.firstViewBytes, e.firstViewMs, e.session.bytesReceived];")
-        # While dragging: the azimuth changes every animation frame, as a pointer moves it, and
-        # the element redraws as it does for a pointer (once per frame at most); frames drawn
-        # per second, the median of five 2-second runs (this machine is shared and noisy).
-        runs = sorted(driver.execute_async_script(f"""const done = arguments[0], e = {element};
-          const draw = e.draw; let draws = 0; e.draw = function () {{ ++draws; return draw.call(this); }};
-          const t0 = performance.now();
-          const step = () => {{ e.azimuth = e.azimuth - 1.3;
-            if (performance.now() - t0 < 2000) requestAnimationFrame(step);
-            else {{ e.draw = draw; done(draws * 1000 / (performance.now() - t0)); }} }};
-          requestAnimationFrame(step);""") for _ in range(5))
-        fps = runs[2]
+        fps = drag_fps(element)
         if size == 512:  # quality: the element's views against the truth
             scores = []
             for a, t in truth.items():
@@ -130,6 +147,37 @@ try:
                                                                      "bytes_total": total, **({"psnr_mean": psnr_mean} if size == 512 else {})}})
         print(f"web: element {size}: {fps:.1f} fps while dragging, first view {first_bytes} bytes in {first_ms:.0f} ms, {total} bytes in all",
               file=sys.stderr)
+
+    # The static product, page on the server's origin, product on nginx's: a first visit, then a
+    # second (the page again), whose bytes are what resource timing says went over the wire.
+    static = f"http://127.0.0.1:{nginx.port}/truck"
+    on_wire = f"""return performance.getEntriesByType('resource').filter((r) => r.name.startsWith('{static}'))
+      .reduce((s, r) => s + r.transferSize, 0)"""
+    visits = []
+    for visit in (1, 2):
+        driver.get(f"http://127.0.0.1:{server.http}/")
+        if visit == 1:  # the element rows above left the same photos, by hash, in Cache Storage
+            driver.execute_async_script("const done = arguments[0]; caches.keys().then((k) => Promise.all(k.map((n) => caches.delete(n)))).then(done);")
+        driver.execute_script(f"""document.body.style.margin = '0';
+          document.body.innerHTML = '<inkwire-turntable src="{static}/product.json" auto-rotate="off" style="width:512px;height:512px"></inkwire-turntable>';
+          import('{static}/inkwire.js');""")
+        wait_loaded(element)
+        visits.append(driver.execute_script(f"const e = {element}; return [e.firstViewBytes, e.firstViewMs, e.product.bytesReceived, e.websocketsOpened ?? 0]")
+                      + [driver.execute_script(on_wire)])
+        if visit == 1:  # the product's files on the wire (compressed where nginx compresses) before the first view
+            first_wire, first_files = driver.execute_script(f"""const e = {element}, due = e.startedAt + e.firstViewMs;
+              const files = performance.getEntriesByType('resource').filter((r) => r.name.startsWith('{static}')
+                && (r.name.includes('/files/') || r.name.endsWith('product.json')) && r.responseEnd <= due);
+              return [files.reduce((s, r) => s + r.transferSize, 0), files.map((r) => r.name.split('/').pop() + ' ' + r.transferSize)];""")
+    (first_bytes, first_ms, total, sockets, _), (_, repeat_ms, _, _, repeat_wire) = visits
+    fps = drag_fps(element)
+    rows.append({"variant": "static,size=512", "counters": {"fps": fps, "bytes_first_view": first_bytes, "bytes_first_view_wire": first_wire,
+                                                             "ms_first_view": first_ms, "bytes_total": total,
+                                                             "bytes_repeat_visit": repeat_wire, "ms_first_view_repeat": repeat_ms,
+                                                             "websockets": sockets}})
+    print(f"web: static on nginx: {fps:.1f} fps while dragging, first view {first_bytes} bytes ({first_wire} on the wire: {first_files}) "
+          f"in {first_ms:.0f} ms, {total} bytes in all, "
+          f"a repeat visit {repeat_wire} bytes on the wire ({repeat_ms:.0f} ms to its first view), {sockets} WebSockets", file=sys.stderr)
 
     # Zoomed in and turning (SPEC T18): a 256-pixel element zoomed in four times shows the photos
     # at 1024 pixels, their finer level. Turned 75 degrees at 30 degrees a second once its fetching
@@ -208,6 +256,7 @@ try:
 finally:
     driver.quit()
     server.stop()
+    nginx.stop()
     httpd.shutdown()
 with open(JSON_OUT, "w") as f:
     json.dump({"browser_gl_renderer": renderer, "rows": rows}, f, indent=1)

@@ -79,6 +79,7 @@ export class InkwireTurntable extends PresenterMixin(AutoSpinMixin(ControlsMixin
       // What the first view waited for, for measuring: photos, milliseconds since start.
       this.firstViewPhotos = this.view.samplesLoaded;
       this.firstViewMs = performance.now() - this.startedAt;
+      this.product?.startCells();  // a static product's tween cells: after the first view, not before it
     }
   }
 

@@ -2,9 +2,9 @@
 // afresh each visit) and its files over plain HTTP(S) with fetch(), each checked against its
 // hash, kept by the browser's HTTP cache (their names never change) and Cache Storage, as the
 // session's own assets are. No WebSocket: it gives <inkwire-turntable>'s loading what a Session
-// gives it ('snapshot', 'tween-data', 'error' events, fetchAsset, byte counts), the tween cells
-// after the first photo so nothing comes before the first view but the manifest, a photo and its
-// matte.
+// gives it ('snapshot', 'tween-data', 'error' events, fetchAsset, byte counts); the tween cells
+// when the element has drawn its first view (startCells), so nothing comes before it but the
+// manifest, a photo and its matte.
 import { AssetKind } from '../protocol/messages.js';
 import { parseManifest } from './product_manifest.js';
 import { cachedOrFetched, toHex } from './session.js';
@@ -56,16 +56,18 @@ export class StaticProduct extends EventTarget {
     this.dispatchEvent(new CustomEvent('snapshot', { detail: { session: manifest.name, product: manifest.product, assets, object: null } }));
   }
 
-  // The asset's bytes: from Cache Storage or the host, checked against its hash. The first photo
-  // in starts the tween cells.
+  // The asset's bytes: from Cache Storage or the host, checked against its hash.
   async fetchAsset(asset) {
     const bytes = await cachedOrFetched(asset, () => this.get(new URL(asset.file, this.src), asset.name));
     this.receivedBy.set(toHex(asset.hash), this.bytesReceived);
-    if (asset.kind === AssetKind.samples && !this.cellsAsked) {
-      this.cellsAsked = true;
-      this.fetchCells().catch((error) => this.fail(error.message));
-    }
     return bytes;
+  }
+
+  // The tween cells, one after another, each as a 'tween-data' event; once.
+  startCells() {
+    if (this.cellsAsked || !this.manifest) return;
+    this.cellsAsked = true;
+    this.fetchCells().catch((error) => this.fail(error.message));
   }
 
   async fetchCells() {

@@ -134,6 +134,9 @@ export const LoadingMixin = (Base) => class extends Base {
       const texture = matteSample(object, size.width, size.height, size.height / product.height);
       if (level === 0) this.view.setSample(sample, texture);
       else this.view.setFiner(sample, level, texture);
+      // A static product's cells follow the first view (draw()); an element not drawn (hidden)
+      // still gets them, a second after its first photo.
+      if (this.product) setTimeout(() => this.product?.startCells(), 1000);
       this.progress();
       this.redraw();
     }
