@@ -214,7 +214,18 @@ try:
             nat_rate, nat_samples = read_wav(nat_wav)
             follows = speech_follows(played_env[-50 * STALL_SECONDS:], envelope(nat_samples, nat_rate))
             print(f"{name}: it played {len(played_env) / 50:.1f} s; over the stalls its envelope follows Nat's speech at r = {follows:.2f}")
-            checks.check(follows >= 0.6, f"{name}: what it played while stalling is Nat's speech (envelope correlation {follows:.2f} >= 0.6)")
+            # An engine that held packets back past the rule plays a gap at each stall, which costs
+            # the envelope's correlation (0.58-0.65 in WebKit since its camera also encodes VP8).
+            # There what it played must follow Nat's speech clearly better than another sentence
+            # (the browser's own; two espeak sentences correlate at 0.54, a tone at 0.03).
+            other_rate, other_samples = read_wav(speaker_wav)
+            other = speech_follows(played_env[-50 * STALL_SECONDS:], envelope(other_samples, other_rate))
+            if after["voiceGapMs"] <= MAX_DELAY_MS:
+                checks.check(follows >= 0.6, f"{name}: what it played while stalling is Nat's speech (envelope correlation {follows:.2f} >= 0.6)")
+            else:
+                checks.check(follows >= 0.5 and follows >= other + 0.1,
+                             f"{name}: what it played while stalling is Nat's speech (envelope correlation {follows:.2f} >= 0.5, "
+                             f"{follows - other:+.2f} over another sentence's {other:.2f})")
             # The camera's uplink: VP8 video where the engine encodes it, every frame read by the
             # server: it finds no face in the fake camera's pattern and says so in the roster.
             face_format, pictures, picture_bytes, skipped, face_found = driver.execute_script(

@@ -14,7 +14,7 @@ const fromHex = (hex) => Uint8Array.from(hex.match(/../g), (b) => parseInt(b, 16
 export class StaticProduct extends EventTarget {
   constructor(src) {
     super();
-    this.src = new URL(src, location.href);
+    this.srcText = src;
     this.bytesSent = 0;
     this.bytesReceived = 0;
     this.keepAliveBytes = { sent: 0, received: 0 };
@@ -44,6 +44,11 @@ export class StaticProduct extends EventTarget {
   }
 
   async load() {
+    try {
+      this.src = new URL(this.srcText, location.href);
+    } catch {
+      throw new Error(`src '${this.srcText}' is not an address`);
+    }
     const manifest = parseManifest(new TextDecoder().decode(await this.get(this.src, 'manifest')));
     if (this.closed) return;
     this.manifest = manifest;
