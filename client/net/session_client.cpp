@@ -85,8 +85,7 @@ void SessionClient::lost(const std::string& reason) {
     if (!reason.empty()) last_error_ = reason;
     changed_.notify_all();
   }
-  stream_.close();
-  outbox_.clear();
+  stream_.close();  // a write in flight ends with an error and empties the outbox
   if (!again) return;
   rejoin_until_ = std::chrono::steady_clock::now() + kRejoinFor;
   std::fprintf(stderr, "inkwire-client: the connection was lost%s: joining again\n", reason.empty() ? "" : (" (" + reason + ")").c_str());
@@ -149,7 +148,8 @@ void SessionClient::watch_for_silence() {
 }
 
 void SessionClient::start_reading() {
-  stream_.async_read_some(asio::buffer(read_buffer_), [this](std::error_code ec, size_t n) {
+  stream_.async_read_some(asio::buffer(read_buffer_), [this, connection = connections_.load()](std::error_code ec, size_t n) {
+    if (connection != connections_) return;  // a read of an earlier connection (rejoin)
     if (ec) {
       if (ec == asio::error::operation_aborted && stopping_) return;
       lost(ec == asio::error::eof || ec == asio::error::operation_aborted ? "" : ec.message());
@@ -245,13 +245,15 @@ void SessionClient::write_next() {
     return;
   }
   writing_ = true;
-  asio::async_write(stream_, asio::buffer(outbox_.front()), [this](std::error_code ec, size_t) {
-    outbox_.pop_front();
+  // A write of an earlier connection (rejoin) that ends late owns nothing of this one's outbox.
+  asio::async_write(stream_, asio::buffer(outbox_.front()), [this, connection = connections_.load()](std::error_code ec, size_t) {
+    if (connection != connections_) return;
     if (ec) {
-      outbox_.clear();
+      outbox_.clear();  // the connection is gone: lost() says so, a rejoin starts a new outbox
       writing_ = false;
       return;
     }
+    outbox_.pop_front();
     write_next();
   });
 }
