@@ -182,13 +182,18 @@ void Publisher::run_camera(Image frame) {
   announce();
 }
 
+// The server's latest region of the face when it found one that lies in `frame`.
+std::optional<protocol::FaceRegion> Publisher::usable_region(const Image& frame) const {
+  const auto r = client_.face_region();
+  if (r && r->found && r->width >= 8 && r->height >= 8 && r->x + r->width <= frame.width && r->y + r->height <= frame.height) return r;
+  return std::nullopt;
+}
+
 void Publisher::send_crop(const Image& frame) {
   protocol::FaceCrop crop{.time_ms = now_ms(), .frame_width = uint16_t(frame.width), .frame_height = uint16_t(frame.height),
                           .x = 0, .y = 0, .width = uint16_t(frame.width), .height = uint16_t(frame.height), .jpeg = {}};
-  const auto region = client_.face_region();
   Image picture;
-  if (region && region->found && region->x + region->width <= frame.width && region->y + region->height <= frame.height && region->width >= 8 &&
-      region->height >= 8) {
+  if (const auto region = usable_region(frame)) {
     crop.x = region->x, crop.y = region->y, crop.width = region->width, crop.height = region->height;
     picture = fit_within(cropped(frame, crop.x, crop.y, crop.width, crop.height), kCropSide, kCropSide);
   } else {
@@ -200,18 +205,12 @@ void Publisher::send_crop(const Image& frame) {
   client_.send(std::move(crop));
 }
 
-}  // namespace inkwire
-
-namespace inkwire {
-
 // The face video's next frame: the crop follows the server's region (face_crop.hpp), scaled to
 // 160 x 160; until the face is found, the whole frame scaled to 320 wide. A new picture size, a
 // jump of the crop or the server's asking starts the video again with a key frame.
 void Publisher::send_video(const Image& frame) {
-  const auto reported = client_.face_region();
   bool key = client_.take_key_frame_request() || video_restart_.exchange(false);
-  if (reported && reported->found && reported->width >= 8 && reported->height >= 8 && reported->x + reported->width <= frame.width &&
-      reported->y + reported->height <= frame.height) {
+  if (const auto reported = usable_region(frame)) {
     const FaceCropChoice choice = follow_face(video_crop_, *reported, frame.width, frame.height);
     video_crop_ = choice.region;
     key = key || choice.jumped;

@@ -9,6 +9,7 @@
 // camera off no crops. Camera pictures stay in memory.
 #include <atomic>
 #include <chrono>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -62,6 +63,7 @@ class Publisher {
   void announce();
   void run_camera(Image first);
   void run_microphone();
+  std::optional<protocol::FaceRegion> usable_region(const Image& frame) const;
   void send_crop(const Image& frame);
   void send_video(const Image& frame);
   // After the client rejoined (a new connection): the photo and what is published said again, and
