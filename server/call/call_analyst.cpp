@@ -150,12 +150,12 @@ void CallAnalyst::run() {
         lock.unlock();
         result = analyse_photo(who, std::move(jpeg));
       } else {
-        // Members take turns, the one after the last served first: a member whose pictures
-        // keep coming while another's is analysed must not keep the others waiting.
-        // A member's place in the turn: those after the last served in key order, then the rest.
+        // Members take turns, the one after the last served first (then from the first again): a
+        // member whose pictures keep coming while another's is analysed must not keep the others waiting.
         const auto turn = [&](const MemberKey& k) { return std::pair(!(last_served_ < k), k); };
-        const auto next = [&](const auto& waiting) {
-          return std::min_element(waiting.begin(), waiting.end(), [&](const auto& a, const auto& b) { return turn(a.first) < turn(b.first); });
+        const auto next = [&](auto& waiting) {
+          const auto after = waiting.upper_bound(last_served_);
+          return after != waiting.end() ? after : waiting.begin();
         };
         const auto crop = next(crops_);
         const auto video = next(videos_);
