@@ -42,9 +42,9 @@ bool write_file(const fs::path& path, std::string_view bytes, ExportSummary& sum
 
 std::string_view as_text(const protocol::Bytes& b) { return {reinterpret_cast<const char*>(b.data()), b.size()}; }
 
-// One file of the product under its content hash: {"file", "sha256", "size"}.
-nlohmann::json put(const fs::path& dir, const protocol::Bytes& bytes, const std::string& extension, ExportSummary& summary) {
-  const std::string hex = to_hex(content_hash(bytes.data(), bytes.size()));
+// One file of the product under its content hash `hash` (of `bytes`): {"file", "sha256", "size"}.
+nlohmann::json put(const fs::path& dir, const protocol::Bytes& bytes, const ContentHash& hash, const std::string& extension, ExportSummary& summary) {
+  const std::string hex = to_hex(hash);
   const std::string name = "files/" + hex + extension;
   write_file(dir / name, as_text(bytes), summary);
   return {{"file", name}, {"sha256", hex}, {"size", bytes.size()}};
@@ -78,15 +78,15 @@ ExportSummary export_product(const AssetStore& store, const protocol::Snapshot& 
   size_t zoom_seen = 0;
   for (const auto& asset : state.assets) {
     if (asset.kind == protocol::AssetKind::Tween) continue;  // as cells, below
-    const protocol::Bytes bytes = store.read_verified(asset.hash);
-    nlohmann::json entry = put(dir, bytes, extension_of(asset), summary);
+    const protocol::Bytes bytes = store.read_verified(asset.hash);  // checked against the hash it is named by
+    nlohmann::json entry = put(dir, bytes, asset.hash, extension_of(asset), summary);
     if (asset.kind == protocol::AssetKind::Samples) manifest["photos"].push_back(entry);
     else if (asset.kind == protocol::AssetKind::Matte) manifest["mattes"].push_back(entry);
     else if (asset.kind == protocol::AssetKind::Zoom) manifest["zoom"][zoom_seen++ / p.directions.size()].push_back(entry);
   }
   manifest["cells"] = nlohmann::json::array();
   for (const protocol::TweenData& cell : cells) {
-    nlohmann::json entry = put(dir, cell.data, ".cell", summary);
+    nlohmann::json entry = put(dir, cell.data, content_hash(cell.data.data(), cell.data.size()), ".cell", summary);
     entry["pair"] = cell.pair;
     manifest["cells"].push_back(entry);
   }
