@@ -15,9 +15,7 @@ export class StaticProduct extends EventTarget {
   constructor(src) {
     super();
     this.srcText = src;
-    this.bytesSent = 0;
-    this.bytesReceived = 0;
-    this.keepAliveBytes = { sent: 0, received: 0 };
+    this.bytesReceived = 0;  // and receivedBy: what the first view waited for (bytesBy)
     this.receivedBy = new Map();
     this.closed = false;
     this.cellsAsked = false;
