@@ -27,6 +27,7 @@ void Session::set_face_assets(const protocol::AssetAnnounce& photo, const protoc
 void Session::set_product(std::vector<protocol::TweenData> cells) {
   tween_frames_.clear();
   for (const protocol::TweenData& cell : cells) tween_frames_.push_back(std::make_shared<const protocol::Bytes>(protocol::encode(cell)));
+  listing_ = std::make_shared<const ProductListing>(product_listing(state(), cells));
   unavailable_.clear();
 }
 

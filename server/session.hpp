@@ -10,6 +10,7 @@
 #include "server/asset_store.hpp"
 #include "server/authority.hpp"
 #include "server/call/call.hpp"
+#include "server/products/product_listing.hpp"
 #include "server/session_token.hpp"
 
 namespace inkwire::server {
@@ -45,11 +46,13 @@ class Session {
   void set_face_assets(const protocol::AssetAnnounce& photo, const protocol::AssetAnnounce& landmarks);
 
   // A turntable's tween data, encoded once, one message per cell (a member gets them after its
-  // first photo), or why the product cannot be served (then joining is refused with that reason).
+  // first photo), and its files as a static host serves them (the HTTP listener's /products/),
+  // or why the product cannot be served (then joining is refused with that reason).
   void set_product(std::vector<protocol::TweenData> cells);
   void set_unavailable(std::string reason) { unavailable_ = std::move(reason); }
   const std::string& unavailable() const { return unavailable_; }
   const std::vector<std::shared_ptr<const protocol::Bytes>>& tween_frames() const { return tween_frames_; }
+  std::shared_ptr<const ProductListing> listing() const { return unavailable_.empty() ? listing_ : nullptr; }
 
   // A conference session's call (its members' own faces and voices); null in other sessions.
   Call* call() { return call_.get(); }
@@ -64,6 +67,7 @@ class Session {
   StoredSession stored_;
   std::vector<std::weak_ptr<Connection>> members_;
   std::vector<std::shared_ptr<const protocol::Bytes>> tween_frames_;
+  std::shared_ptr<const ProductListing> listing_;
   std::string unavailable_;
   std::unique_ptr<Call> call_;
 };

@@ -13,8 +13,6 @@
 
 namespace inkwire::server {
 
-inline constexpr int kProductManifestVersion = 1;
-
 struct ExportSummary {
   size_t written = 0, kept = 0;  // files written now, and already there with the same bytes
   uint64_t bytes_written = 0;

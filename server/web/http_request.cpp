@@ -54,4 +54,26 @@ Request parse_head(const std::string& head) {
   return r;
 }
 
+std::string query_value(const std::string& target, const std::string& name) {
+  const size_t query = target.find('?');
+  if (query == std::string::npos) return "";
+  std::istringstream parts(target.substr(query + 1));
+  for (std::string part; std::getline(parts, part, '&');) {
+    if (part.rfind(name + "=", 0) != 0) continue;
+    std::string value;
+    for (size_t i = name.size() + 1; i < part.size(); ++i) {
+      if (part[i] == '+') value += ' ';
+      else if (part[i] != '%') value += part[i];
+      else if (i + 2 < part.size() && std::isxdigit(static_cast<unsigned char>(part[i + 1])) && std::isxdigit(static_cast<unsigned char>(part[i + 2]))) {
+        value += char(std::stoi(part.substr(i + 1, 2), nullptr, 16));
+        i += 2;
+      } else {
+        return "";
+      }
+    }
+    return value;
+  }
+  return "";
+}
+
 }  // namespace inkwire::server

@@ -19,6 +19,9 @@ struct Request {
 // Throws inkwire::Error for a head that is not HTTP/1.x, a header name that is no token, a
 // control character in a value, or a header given twice.
 Request parse_head(const std::string& head);
+// The value of `name` in the target's query (`/path?a=1&name=value`), percent-decoded; empty when
+// absent or malformed.
+std::string query_value(const std::string& target, const std::string& name);
 // ASCII lower case, as header names and upgrade tokens compare.
 std::string lower(std::string s);
 

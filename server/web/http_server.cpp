@@ -13,10 +13,13 @@
 
 #include <asio/experimental/as_tuple.hpp>
 
+#include "common/content_hash.hpp"
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "server/relay/relay.hpp"
 #include "server/server.hpp"
+#include "server/products/product_listing.hpp"
+#include "server/web/gzip.hpp"
 #include "server/web/http_request.hpp"
 #include "server/web/metrics.hpp"
 #include "server/web/web_files.hpp"
@@ -40,6 +43,8 @@ std::string response(int status, const char* reason, const std::string& type, co
 // (SPEC F15). The scripts say they may be embedded so, by any page (a worker's own script must
 // carry COEP itself, in Chromium).
 const std::string kIsolatedPage = "Cross-Origin-Opener-Policy: same-origin\r\nCross-Origin-Embedder-Policy: require-corp\r\n";
+// A product's files may be read by pages of any origin (a shop's page, the server's products).
+const std::string kAnyOrigin = "Access-Control-Allow-Origin: *\r\n";
 const std::string kEmbeddableScript = "Cross-Origin-Embedder-Policy: require-corp\r\nCross-Origin-Resource-Policy: cross-origin\r\n";
 
 // The browser's renderer (client/web/module), which the build leaves beside this binary in web/,
@@ -274,6 +279,10 @@ asio::awaitable<void> HttpServer::serve(ByteStream accepted) {
                    "\r\n" + body);
     co_return;
   }
+  if (path.rfind("/products/", 0) == 0) {
+    co_await reply(product_reply(request, path));
+    co_return;
+  }
   if (path.rfind("/scene/", 0) == 0) {
     const auto session = server_.find_session(path.substr(7));
     if (!session || session->state().kind != protocol::SessionKind::Scene || !session->state().product.directions.empty()) {
@@ -332,6 +341,47 @@ asio::awaitable<void> HttpServer::serve(ByteStream accepted) {
     co_return;
   }
   co_await reply(response(404, "Not Found", "text/plain", "no page " + path + "\n"));
+}
+
+// A product's files as a static host serves its export (protocol/PRODUCT.md, deploy/nginx/): the
+// manifest revalidated each visit (an ETag answers a repeat visit with 304), the files under
+// their hashes kept forever, every reply readable by pages of any origin. The manifest of a
+// product with a token is given for the token only (?token=); its files are named by hashes
+// nobody can guess without it.
+std::string HttpServer::product_reply(const Request& request, const std::string& path) {
+  const std::string rest = path.substr(std::string("/products/").size());
+  const size_t slash = rest.find('/');
+  const auto session = slash == std::string::npos ? nullptr : server_.find_session(rest.substr(0, slash));
+  if (!session || session->state().product.directions.empty())
+    return response(404, "Not Found", "text/plain", "no product " + rest.substr(0, slash) + "\n", kAnyOrigin);
+  const std::shared_ptr<const ProductListing> listing = session->listing();
+  if (!listing) return response(503, "Service Unavailable", "text/plain", session->unavailable() + "\n", kAnyOrigin);
+  const std::string file = rest.substr(slash + 1);
+  const auto served = [&](const std::string& type, const std::string& cache, const std::string& body, const std::string& headers = "") {
+    return "HTTP/1.1 200 OK\r\nContent-Type: " + type + "\r\nContent-Length: " + std::to_string(body.size()) + "\r\nCache-Control: " + cache +
+           "\r\nConnection: close\r\n" + kAnyOrigin + headers + "\r\n" + body;
+  };
+  if (file == "product.json") {
+    if (!session->role_of(query_value(request.path, "token")))
+      return response(403, "Forbidden", "text/plain", "product " + session->name() + " needs its token (?token=)\n", kAnyOrigin);
+    const ContentHash tag_hash = content_hash(listing->manifest.data(), listing->manifest.size());
+    const std::string tag = "\"" + to_hex(tag_hash).substr(0, 32) + "\"";
+    if (request.header("if-none-match") == tag)
+      return "HTTP/1.1 304 Not Modified\r\nETag: " + tag + "\r\nCache-Control: no-cache\r\nConnection: close\r\n" + kAnyOrigin + "\r\n";
+    if (request.header("accept-encoding").find("gzip") == std::string::npos)
+      return served("application/json", "no-cache", listing->manifest, "ETag: " + tag + "\r\n");
+    auto& [gzipped_from, gzipped_text] = gzipped_manifests_[session->name()];
+    if (gzipped_from != listing) {
+      gzipped_text = gzipped(listing->manifest);
+      gzipped_from = listing;
+    }
+    return served("application/json", "no-cache", gzipped_text, "ETag: " + tag + "\r\nContent-Encoding: gzip\r\nVary: Accept-Encoding\r\n");
+  }
+  const auto found = listing->files.find(file);
+  if (found == listing->files.end()) return response(404, "Not Found", "text/plain", "product " + session->name() + " has no file " + file + "\n", kAnyOrigin);
+  const ProductFile& f = found->second;
+  const protocol::Bytes bytes = f.cell ? *f.cell : server_.store().read(f.hash, 0, uint32_t(f.size));
+  return served(f.content_type, "public, max-age=31536000, immutable", std::string(bytes.begin(), bytes.end()));
 }
 
 }  // namespace inkwire::server

@@ -1,10 +1,12 @@
 #pragma once
 // The server's HTTP listener (`--http HOST:PORT`, SPEC W1): the WebSocket upgrade at /ws that
 // carries protocol frames into the same connections as TCP, /healthz, Prometheus text at
-// /metrics, and an index of the sessions at /. One request per connection; a request head must
+// /metrics, an index of the sessions at /, the pages of sessions, and every product as a static
+// host serves its export at /products/NAME/ (protocol/PRODUCT.md). One request per connection; a request head must
 // arrive whole within the head timeout and 8 KiB, so a slow or endless client is cut off while
 // everyone else is served. WebSockets are refused (403) to pages of origins not allowed: by
 // default the server's own pages only.
+#include <map>
 #include <memory>
 #include <string>
 
@@ -15,6 +17,8 @@
 namespace inkwire::server {
 
 class Server;
+struct ProductListing;
+struct Request;
 
 class HttpServer {
  public:
@@ -26,11 +30,15 @@ class HttpServer {
 
  private:
   asio::awaitable<void> serve(ByteStream stream);
+  // The reply to GET /products/NAME/product.json or /products/NAME/files/HEX.ext.
+  std::string product_reply(const Request& request, const std::string& path);
 
   asio::io_context& io_;
   Server& server_;
   asio::ip::tcp::acceptor acceptor_;
   bool stopping_ = false;
+  // Each product's manifest gzipped once, beside the listing it was made from.
+  std::map<std::string, std::pair<std::shared_ptr<const ProductListing>, std::string>> gzipped_manifests_;
 };
 
 // Whether a page of `origin` may open a WebSocket to a server reached as `host` (the Host

@@ -16,12 +16,15 @@ each browser engine the machine has that can run here (Chromium; Firefox and Web
   static_product_browser_test.py BIN_DIR OUT_DIR [ENGINE ...]
 Skips with a message when nginx or the browser tooling is missing."""
 import base64
+import gzip
 import json
 import os
 import shutil
 import subprocess
 import sys
 import time
+import urllib.error
+import urllib.request
 
 sys.path.insert(0, os.path.dirname(__file__))
 from browser_support import ENGINES, Checks, Nginx, Server, engine, engine_missing, psnr, read_image, skip
@@ -81,6 +84,32 @@ port = nginx.port
 server = Server(BIN, OUT, data, {"sessions": [], "http": "127.0.0.1:0"})
 product = f"http://127.0.0.1:{port}/duck"
 requests_since = nginx.requests_since
+
+# The server serves each product as the export has it (/products/NAME/: one way to load either):
+# the same manifest and files, the headers a static host sends, a repeat visit answered 304.
+served_by_server = f"http://127.0.0.1:{server.http}/products/duck"
+exported = open(os.path.join(root, "duck", "product.json"), "rb").read()
+with urllib.request.urlopen(f"{served_by_server}/product.json") as reply:
+    check(reply.read() == exported and reply.headers["Access-Control-Allow-Origin"] == "*" and reply.headers["Cache-Control"] == "no-cache",
+          "the server's /products/duck/product.json is the exported manifest, readable from any origin, revalidated each visit")
+    etag = reply.headers["ETag"]
+gzipped = urllib.request.urlopen(urllib.request.Request(f"{served_by_server}/product.json", headers={"Accept-Encoding": "gzip"}))
+check(gzipped.headers["Content-Encoding"] == "gzip" and gzip.decompress(gzipped.read()) == exported, "... gzipped for a browser that takes it")
+try:
+    urllib.request.urlopen(urllib.request.Request(f"{served_by_server}/product.json", headers={"If-None-Match": etag}))
+    check(False, "a repeat visit's manifest request is answered 304")
+except urllib.error.HTTPError as e:
+    check(e.code == 304, f"a repeat visit's manifest request is answered 304 ({e.code})")
+for f in (manifest["photos"][3], manifest["mattes"][3], manifest["zoom"][0][3], manifest["cells"][3]):
+    with urllib.request.urlopen(f"{served_by_server}/{f['file']}") as reply:
+        same = reply.read() == open(os.path.join(root, "duck", f["file"]), "rb").read()
+        check(same and "immutable" in reply.headers["Cache-Control"], f"the server serves {f['file']} as exported, immutable")
+for wrong, code in (("files/" + "0" * 64 + ".jpg", 404), ("../duck/product.json", 404)):
+    try:
+        urllib.request.urlopen(f"{served_by_server}/{wrong}")
+        check(False, f"a file the manifest does not name ({wrong}) is refused")
+    except urllib.error.HTTPError as e:
+        check(e.code == code, f"a file the manifest does not name ({wrong}) is refused ({e.code})")
 
 try:
     for name in runnable:

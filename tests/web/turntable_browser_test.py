@@ -85,7 +85,7 @@ def against_client(element, session, name, view, setup=""):
 try:
     driver = chromium(OUT, 400, 400)
     driver.get(f"http://127.0.0.1:{http}/")
-    driver.execute_script(f"""
+    driver.execute_script(f"""performance.setResourceTimingBufferSize(100000);
       document.body.innerHTML = '<inkwire-turntable session="duck" token="sh0p-0wner" auto-rotate="off" style="width:{SIZE}px;height:{SIZE}px"></inkwire-turntable>';
       import('/inkwire.js');""")
     start = time.time()
@@ -102,18 +102,18 @@ try:
         db = against_client(element, "duck", str(azimuth), str(azimuth), f"e.azimuth = {azimuth};")
         check(db >= 35.0, f"azimuth {azimuth}: the browser's view matches the C++ client's at {db:.2f} dB (>= 35)")
 
-    # A drag turns the view and sends nothing.
-    # The heartbeat (a ping every few seconds) flows whatever the person does: it is not the drag's.
-    traffic = f"const s = {element}.session; return [s.bytesSent - s.keepAliveBytes.sent, s.bytesReceived - s.keepAliveBytes.received];"
-    sent, received = driver.execute_script(traffic)
+    # A visitor's element reads the product as static files from the server (/products/duck/):
+    # no WebSocket; and a drag turns the view and fetches nothing.
+    check((driver.execute_script(f"return {element}.websocketsOpened") or 0) == 0, "a visitor's element opens no WebSocket")
+    traffic = f"return [{element}.product.bytesReceived, performance.getEntriesByType('resource').length];"
+    fetched = driver.execute_script(traffic)
     before = driver.execute_script(f"return {element}.azimuth")
     canvas = driver.execute_script(f"return {element}.canvas")
     ActionChains(driver).move_to_element(canvas).click_and_hold().move_by_offset(60, 0).move_by_offset(40, 0).release().perform()
     time.sleep(0.3)
     after = driver.execute_script(f"return {element}.azimuth")
     check(abs(after - before) >= 30, f"a drag of 100 pixels turns the view ({before:.1f} -> {after:.1f} degrees, with inertia)")
-    check(driver.execute_script(traffic) == [sent, received],
-          "the drag sent and received nothing")
+    check(driver.execute_script(traffic) == fetched, "the drag fetched nothing")
 
     # One ring of photos: up and down there is nothing to turn to.
     ActionChains(driver).move_to_element(canvas).click_and_hold().move_by_offset(0, 50).release().perform()
@@ -143,7 +143,7 @@ try:
     zoomed = loaded_element("zoom", "zoom")
     check(driver.execute_script(f"return {zoomed}.hasAttribute('loaded')"), "the element loads a product with a zoom level")
     fetched_zoom = f"""const e = {zoomed}, hex = (h) => Array.from(h, (b) => b.toString(16).padStart(2, '0')).join('');
-      return e.snapshot.assets.filter((a) => a.kind === 7 && e.session.receivedBy.has(hex(a.hash))).length;"""
+      return e.snapshot.assets.filter((a) => a.kind === 7 && e.product.receivedBy.has(hex(a.hash))).length;"""
     time.sleep(0.5)
     check(driver.execute_script(fetched_zoom) == 0, "not zoomed in, no finer photo is fetched")
     driver.execute_script(f"{zoomed}.setZoom(4)")

@@ -118,6 +118,17 @@ def wait_loaded(element):
     start = time.time()
     while time.time() - start < 60 and not driver.execute_script(f"return {element}.hasAttribute('loaded')"):
         time.sleep(0.05)
+
+
+def first_view_on_wire(product):
+    """The bytes of the product's files at `product` (a URL prefix) on the wire (compressed where
+    the host compresses) before the element's first view, and the files by name."""
+    return driver.execute_script(f"""const e = document.querySelector('inkwire-turntable'), due = e.startedAt + e.firstViewMs;
+      const files = performance.getEntriesByType('resource').filter((r) => r.name.startsWith('{product}')
+        && (r.name.includes('/files/') || r.name.split('?')[0].endsWith('product.json')) && r.responseEnd <= due);
+      return [files.reduce((s, r) => s + r.transferSize, 0), files.map((r) => r.name.split('/').pop() + ' ' + r.transferSize)];""")
+
+
 rows, renderer = [], ""
 try:
     driver.get(f"http://127.0.0.1:{server.http}/")
@@ -126,13 +137,14 @@ try:
     element = "document.querySelector('inkwire-turntable')"
     psnr_mean = None
     for size in (512, 1024):
-        driver.execute_script(f"""document.body.style.margin = '0';
+        driver.execute_script(f"""document.body.style.margin = '0'; performance.setResourceTimingBufferSize(100000);
           document.body.innerHTML = '<inkwire-turntable session="truck" auto-rotate="off" style="width:{size}px;height:{size}px"></inkwire-turntable>';
           import('/inkwire.js');""")
         start = time.time()
         while time.time() - start < 60 and not driver.execute_script(f"return {element}.hasAttribute('loaded')"):
             time.sleep(0.05)
-        first_bytes, first_ms, total = driver.execute_script(f"const e = {element}; return [e.firstViewBytes, e.firstViewMs, e.session.bytesReceived];")
+        first_bytes, first_ms, total = driver.execute_script(f"const e = {element}; return [e.firstViewBytes, e.firstViewMs, e.product.bytesReceived];")
+        first_wire, first_files = first_view_on_wire(f"http://127.0.0.1:{server.http}/products/truck/")
         fps = drag_fps(element)
         if size == 512:  # quality: the element's views against the truth
             scores = []
@@ -143,9 +155,11 @@ try:
                     f.write(base64.b64decode(png.split(",", 1)[1]))
                 scores.append(psnr(read_image(path, OUT), t))
             psnr_mean = sum(scores) / len(scores)
-        rows.append({"variant": f"element,size={size}", "counters": {"fps": fps, "bytes_first_view": first_bytes, "ms_first_view": first_ms,
+        rows.append({"variant": f"element,size={size}", "counters": {"fps": fps, "bytes_first_view": first_bytes, "bytes_first_view_wire": first_wire,
+                                                                     "ms_first_view": first_ms,
                                                                      "bytes_total": total, **({"psnr_mean": psnr_mean} if size == 512 else {})}})
-        print(f"web: element {size}: {fps:.1f} fps while dragging, first view {first_bytes} bytes in {first_ms:.0f} ms, {total} bytes in all",
+        print(f"web: element {size}: {fps:.1f} fps while dragging, first view {first_bytes} bytes ({first_wire} on the wire: {first_files}) "
+              f"in {first_ms:.0f} ms, {total} bytes in all",
               file=sys.stderr)
 
     # The static product, page on the server's origin, product on nginx's: a first visit, then a
@@ -158,17 +172,14 @@ try:
         driver.get(f"http://127.0.0.1:{server.http}/")
         if visit == 1:  # the element rows above left the same photos, by hash, in Cache Storage
             driver.execute_async_script("const done = arguments[0]; caches.keys().then((k) => Promise.all(k.map((n) => caches.delete(n)))).then(done);")
-        driver.execute_script(f"""document.body.style.margin = '0';
+        driver.execute_script(f"""document.body.style.margin = '0'; performance.setResourceTimingBufferSize(100000);
           document.body.innerHTML = '<inkwire-turntable src="{static}/product.json" auto-rotate="off" style="width:512px;height:512px"></inkwire-turntable>';
           import('{static}/inkwire.js');""")
         wait_loaded(element)
         visits.append(driver.execute_script(f"const e = {element}; return [e.firstViewBytes, e.firstViewMs, e.product.bytesReceived, e.websocketsOpened ?? 0]")
                       + [driver.execute_script(on_wire)])
         if visit == 1:  # the product's files on the wire (compressed where nginx compresses) before the first view
-            first_wire, first_files = driver.execute_script(f"""const e = {element}, due = e.startedAt + e.firstViewMs;
-              const files = performance.getEntriesByType('resource').filter((r) => r.name.startsWith('{static}')
-                && (r.name.includes('/files/') || r.name.endsWith('product.json')) && r.responseEnd <= due);
-              return [files.reduce((s, r) => s + r.transferSize, 0), files.map((r) => r.name.split('/').pop() + ' ' + r.transferSize)];""")
+            first_wire, first_files = first_view_on_wire(static)
     (first_bytes, first_ms, total, sockets, _), (_, repeat_ms, _, _, repeat_wire) = visits
     fps = drag_fps(element)
     rows.append({"variant": "static,size=512", "counters": {"fps": fps, "bytes_first_view": first_bytes, "bytes_first_view_wire": first_wire,
@@ -197,13 +208,13 @@ try:
             driver.execute_script(f"""const e = {element}, ahead = e.nextFetch;
               e.nextFetch = function () {{ const n = ahead.call(this);
                 return n && n.level > 0 && !this.view.viewSamples(this.direction()).includes(n.sample) ? null : n; }};""")
-        received = driver.execute_script(f"return {element}.session.bytesReceived")
+        received = driver.execute_script(f"return {element}.product.bytesReceived")
         driver.execute_script(f"{element}.setZoom(4)")
         start = time.time()
         while time.time() - start < 30 and driver.execute_script(f"return {element}.view.finerInView") < 2:
             time.sleep(0.1)
         time.sleep(3.0)  # the photos ahead, where fetched
-        finer_bytes = driver.execute_script(f"return {element}.session.bytesReceived") - received
+        finer_bytes = driver.execute_script(f"return {element}.product.bytesReceived") - received
         held = driver.execute_script(f"return {element}.view.finer.size")
         frames = driver.execute_async_script(f"""const done = arguments[0], e = {element}, out = [], t0 = performance.now();
           const step = () => {{ const t = (performance.now() - t0) / 1000; e.azimuth = -Math.min(75, 30 * t); e.draw();

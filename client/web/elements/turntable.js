@@ -1,6 +1,7 @@
 // <inkwire-turntable server="ws://HOST:PORT/ws" session="NAME">, or <inkwire-turntable
-// src="https://CDN/PRODUCT/product.json"> for a product exported as static files (SPEC T20-T21):
-// a product a shop embeds with one script tag (SPEC W2, CONTRACTS.md). It downloads the product progressively (each photo's
+// src="https://CDN/PRODUCT/product.json"> for a product exported as static files (SPEC T20-T21;
+// the server serves each of its products so too): a product a shop embeds with one script tag
+// (SPEC W2, CONTRACTS.md). It downloads the product progressively (each photo's
 // matte and photo, nearest the view first; a first view after one photo; a progress bar), then
 // synthesises every view locally (render/tween/tween_view.js). Drag with mouse, touch or pen
 // (with inertia; up and down too on a product in rows), wheel or pinch to zoom, arrow keys step
@@ -35,7 +36,7 @@ const template = `
   fill="none" stroke="#333" stroke-width="1.6"><path d="M1 5V1h4M11 1h4v4M15 11v4h-4M5 15H1v-4"/></svg></button>`;
 
 export class InkwireTurntable extends PresenterMixin(AutoSpinMixin(ControlsMixin(LoadingMixin(SessionElement)))) {
-  static observedAttributes = [...SessionElement.observedAttributes, 'azimuth', 'src'];
+  static observedAttributes = [...SessionElement.observedAttributes, 'azimuth', 'src', 'present', 'follow'];
 
   constructor() {
     super(template);
@@ -64,6 +65,7 @@ export class InkwireTurntable extends PresenterMixin(AutoSpinMixin(ControlsMixin
 
   attributeChangedCallback(name, before, after) {
     if (name === 'azimuth') this.azimuth = after;
+    else if (name === 'present' || name === 'follow') this.goLive();
     else super.attributeChangedCallback(name, before, after);
   }
 
@@ -79,7 +81,7 @@ export class InkwireTurntable extends PresenterMixin(AutoSpinMixin(ControlsMixin
       // What the first view waited for, for measuring: photos, milliseconds since start.
       this.firstViewPhotos = this.view.samplesLoaded;
       this.firstViewMs = performance.now() - this.startedAt;
-      this.product?.startCells();  // a static product's tween cells: after the first view, not before it
+      this.product?.startCells();  // the tween cells: after the first view, not before it
     }
   }
 

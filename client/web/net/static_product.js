@@ -35,7 +35,11 @@ export class StaticProduct extends EventTarget {
     } catch (error) {
       throw new Error(`the product's ${what} cannot be fetched from ${url.href}: ${error.message}`);
     }
-    if (!response.ok) throw new Error(`the product's ${what} at ${url.href} answered ${response.status}`);
+    if (!response.ok) {
+      // A server's plain-text reason (inkwire-server says why: no such product, a token needed).
+      const why = response.headers.get('content-type')?.startsWith('text/plain') ? (await response.text()).split('\n')[0].slice(0, 200) : '';
+      throw new Error(`the product's ${what} at ${url.href} answered ${response.status}${why ? `: ${why}` : ''}`);
+    }
     const bytes = new Uint8Array(await response.arrayBuffer());
     this.bytesReceived += bytes.length;
     return bytes;

@@ -1,10 +1,10 @@
-// <inkwire-turntable>'s loading (SPEC T12, T21): the product, from the session's server or,
-// with `src`, from a static host's product.json (net/static_product.js; then only the live part,
-// a presenter and followers, goes through a server, and only when `session` is given too); its
-// photos one at a time (each matte, then the photo, nearest the current view first, each drawn
-// as it comes), its tween cells whenever they arrive, a progress bar, and the attribute `loaded`
-// once all are there. A mixin over SessionElement (STYLE 13: one feature a file, as
-// <model-viewer> does).
+// <inkwire-turntable>'s loading (SPEC T12, T21): the product as static files (product.json and
+// the files it names, net/static_product.js) from `src`, a static host or CDN, or else from the
+// session's server, which serves them the same way; its photos one at a time (each matte, then
+// the photo, nearest the current view first, each drawn as it comes), its tween cells after the
+// first view, a progress bar, and the attribute `loaded` once all are there. Only the live part,
+// a presenter and followers, goes through a WebSocket. A mixin over SessionElement (STYLE 13: one
+// feature a file, as <model-viewer> does).
 import { nextPhotoFetch, wantedLevel } from '../../common/photo_fetch.js';
 import { decodeTweenCell } from '../../common/tween_data.js';
 import { AssetKind, bytesBy } from '../../net/session.js';
@@ -30,43 +30,39 @@ export const LoadingMixin = (Base) => class extends Base {
     this.presentRefused = false;
     this.product?.close();
     this.product = null;
-    const src = this.getAttribute('src');
-    if (src) {
-      this.session?.close();
-      this.session = null;
-      this.product = new StaticProduct(src);
-      this.product.addEventListener('error', (e) => this.fail(e.detail));
-    }
-    // The live part: a presenter's views and refusals (with `src`, only when a session is named).
-    const live = !src || this.hasAttribute('session') ? this.openSession() : null;
-    live?.addEventListener('refused', () => { this.presentRefused = true; });
-    live?.addEventListener('state', (e) => {
-      if (e.detail.type === 'object-pose') this.follow(e.detail);
-    });
-    if (src) live?.addEventListener('snapshot', (e) => this.follow(e.detail.object), { once: true });
-    const session = this.product ?? live;  // where the product's files come from
+    this.session?.close();
+    this.session = null;
+    this.product = new StaticProduct(this.productUrl());
+    this.product.addEventListener('error', (e) => this.fail(e.detail));
+    this.goLive();
+    const product = this.product;
     const pendingCells = [];
-    session.addEventListener('tween-data', (e) => {
+    product.addEventListener('tween-data', (e) => {
       if (this.view) this.addCell(e.detail);
       else pendingCells.push(e.detail);
     });
-    session.addEventListener('snapshot', async (e) => {
+    product.addEventListener('snapshot', async (e) => {
       try {
-        const snapshot = e.detail;
-        if (!snapshot.product.directions.length) throw new Error(`session '${snapshot.session}' has no product to show`);
-        this.snapshot = snapshot;
-        if (snapshot.object) this.follow(snapshot.object);
-        this.view = new TweenView(this.webgl(), snapshot.product, await loadTweenShaders());
+        this.snapshot = e.detail;
+        this.view = new TweenView(this.webgl(), this.snapshot.product, await loadTweenShaders());
         for (const cell of pendingCells.splice(0)) this.addCell(cell);
-        await this.download(session);
+        await this.download(product);
       } catch (error) {
-        if (this.source() === session) this.fail(error.message);
+        if (this.product === product) this.fail(error.message);
       }
     });
   }
 
-  // Where the product's files come from now: the static host's product, else the session.
-  source() { return this.product ?? this.session; }
+  // Where the product's files are: `src`, else the session's server, which serves every product
+  // as a static host serves its export (/products/NAME/product.json): one way to load either.
+  productUrl() {
+    const src = this.getAttribute('src');
+    if (src) return src;
+    const server = new URL(this.serverUrl());
+    const url = new URL(`/products/${encodeURIComponent(this.getAttribute('session') ?? '')}/product.json`, `${server.protocol === 'wss:' ? 'https' : 'http'}://${server.host}`);
+    if (this.joinToken()) url.searchParams.set('token', this.joinToken());
+    return url.href;
+  }
 
   disconnectedCallback() {
     super.disconnectedCallback();
@@ -106,13 +102,13 @@ export const LoadingMixin = (Base) => class extends Base {
 
   // Photos one at a time, as nextFetch() says; each drawn as it comes. With nothing to fetch it
   // waits for the next frame drawn (a turn, a zoom, a resize may need more).
-  async download(session) {
+  async download(source) {
     const { product, assets } = this.snapshot;
     const nth = (kind) => assets.filter((a) => a.kind === kind);
     const photos = nth(AssetKind.samples), mattes = nth(AssetKind.matte), zoom = nth(AssetKind.zoom);
     const n = product.directions.length;
     for (;;) {
-      if (this.source() !== session) return;
+      if (this.product !== source) return;
       const next = this.nextFetch();
       if (!next) {
         await new Promise((resolve) => { this.wake = resolve; });
@@ -122,21 +118,21 @@ export const LoadingMixin = (Base) => class extends Base {
       const size = level === 0 ? product : product.levels[level - 1];
       const photo = level === 0 ? photos[sample] : zoom[(level - 1) * n + sample];
       if (!photo) throw new Error(`the product lists no photo for sample ${sample}${level ? ` at zoom level ${level}` : ''}`);
-      const matte = mattes[sample] ? await pixels(await session.fetchAsset(mattes[sample]), product.width, product.height) : null;
-      const photoBytes = await session.fetchAsset(photo);
+      const matte = mattes[sample] ? await pixels(await source.fetchAsset(mattes[sample]), product.width, product.height) : null;
+      const photoBytes = await source.fetchAsset(photo);
       // What the first view waits for: the snapshot, one matte and one photo (the tween data the
       // server sends after that photo is for the views between photos).
-      if (this.firstViewBytes === undefined) this.firstViewBytes = bytesBy(session, photo);
+      if (this.firstViewBytes === undefined) this.firstViewBytes = bytesBy(source, photo);
       const rgba = await pixels(photoBytes, size.width, size.height);
-      if (this.source() !== session) return;
+      if (this.product !== source) return;
       // A finer level is laid on white by its first-level matte scaled up (server/products/matte.cpp key_like).
       const object = objectOnMatte(rgba, matte, product.width, product.height, size.width, size.height);
       const texture = matteSample(object, size.width, size.height, size.height / product.height);
       if (level === 0) this.view.setSample(sample, texture);
       else this.view.setFiner(sample, level, texture);
-      // A static product's cells follow the first view (draw()); an element not drawn (hidden)
-      // still gets them, a second after its first photo.
-      if (this.product) setTimeout(() => this.product?.startCells(), 1000);
+      // The tween cells follow the first view (draw()); an element not drawn (hidden) still gets
+      // them, a second after its first photo.
+      setTimeout(() => source.startCells(), 1000);
       this.progress();
       this.redraw();
     }

@@ -1,10 +1,24 @@
 // <inkwire-turntable>'s presenter mode (SPEC T13), off unless asked for: with the attribute
 // `present` the view goes to the session as object poses whenever it changes (only the
 // product's editor may: a refused presenter stops), with `follow` the newest view a presenter
-// sent replaces this one (a drag turns it until the next).
+// sent replaces this one (a drag turns it until the next). Either opens the live part, a WebSocket
+// to the session's server, when it is set (the product's files come over plain HTTP either way).
 import { poseOfView, viewOfPose } from '../../common/turntable_pose.js';
 
 export const PresenterMixin = (Base) => class extends Base {
+  // The live part, opened once the element presents or follows and kept while it lives: a
+  // presenter's views, and the refusal of a visitor who tries to present. A visitor who only
+  // turns the product opens none.
+  goLive() {
+    if (this.session || !this.hasAttribute('session') || !(this.hasAttribute('present') || this.hasAttribute('follow'))) return;
+    const live = this.openSession();
+    live.addEventListener('refused', () => { this.presentRefused = true; });
+    live.addEventListener('state', (e) => {
+      if (e.detail.type === 'object-pose') this.follow(e.detail);
+    });
+    live.addEventListener('snapshot', (e) => this.follow(e.detail.object), { once: true });
+  }
+
   // Following: the presenter's view replaces this one.
   follow(pose) {
     if (!this.hasAttribute('follow')) return;
