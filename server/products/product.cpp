@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <deque>
-#include <set>
 
 #include <glm/geometric.hpp>
 
@@ -90,21 +89,20 @@ TweenCell cell_from_tracks(const std::vector<Track>& tracks, const std::vector<u
   return cell;
 }
 
-// Per photo, the gain that evens it with its neighbours, each row on its own: light differs
-// between camera heights (the top row sees the lit top), which is the product's look.
-std::vector<glm::vec3> row_gains(const std::vector<PairExposure>& exposures, const PhotoFolder& photos) {
+// Per photo, the camera's gain (exposure.hpp), each row on its own: light differs between camera
+// heights (the top row sees the lit top), which is the product's look. Empty `backdrops` (no
+// mattes): nothing is evened.
+CameraGains row_gains(const std::vector<glm::vec3>& backdrops, const PhotoFolder& photos) {
+  CameraGains all{std::vector<glm::vec3>(photos.photos.size(), glm::vec3(1.0f)), ""};
+  if (backdrops.size() != photos.photos.size()) return all.unmeasured = "no mattes, so no backdrop to read the camera on", all;
   const int columns = photos.columns();
-  std::vector<glm::vec3> gains;
   for (int r = 0; r < photos.rows; ++r) {
-    std::vector<PairExposure> in_row;
-    for (PairExposure e : exposures)
-      if (e.a / columns == r && e.b / columns == r) {
-        e.a -= r * columns, e.b -= r * columns;
-        in_row.push_back(e);
-      }
-    for (const glm::vec3& g : exposure_gains(in_row, columns, photos.closed)) gains.push_back(g);
+    const auto first = backdrops.begin() + long(r * columns);
+    const CameraGains row = camera_gains({first, first + columns}, photos.closed);
+    if (!row.unmeasured.empty()) all.unmeasured = row.unmeasured;
+    std::copy(row.gains.begin(), row.gains.end(), all.gains.begin() + long(r * columns));
   }
-  return gains;
+  return all;
 }
 
 // "4.1 9.8 10.2 ..." degrees, one decimal.
@@ -170,6 +168,20 @@ void find_turn_from_matches(PhotoFolder& photos, const PairProgress& progress) {
                "spaced (give --step or --arc if they are not)");
     return;
   }
+  const bool backwards = steps.direction_known && steps.field_of_view < 0;
+  if (!steps.uneven()) {
+    if (backwards) set_turn_steps(photos, std::vector<float>(size_t(photos.columns()), -360.0f / float(photos.columns())));
+    if (progress) {
+      char line[400];
+      std::snprintf(line, sizeof line,
+                    "the photos are evenly spaced, %s (%d of %d photos tracked: a turn with a free angle per photo fits them within "
+                    "%.2f pixels, even steps within %.2f, not clearly worse)",
+                    backwards ? "turned the other way" : steps.direction_known ? "turned forward" : "taken as turned forward (--step -N if not)",
+                    steps.fitted, photos.columns(), steps.residual, steps.even_residual);
+      progress(0, int(photos.cells.size()), line);
+    }
+    return;
+  }
   set_turn_steps(photos, steps.degrees);
   photos.even_turn_assumed = false;
   if (!progress) return;
@@ -181,9 +193,9 @@ void find_turn_from_matches(PhotoFolder& photos, const PairProgress& progress) {
                                             : "forward";
   char line[400];
   std::snprintf(line, sizeof line,
-                "turn from the matches (%d of %d photos tracked, within %.2f pixels; perspective %.2f +- %.2f), %s: steps %.1f to %.1f "
-                "degrees, %.1f if even: ",
-                steps.fitted, photos.columns(), steps.residual, steps.field_of_view, steps.field_of_view_error, way, *low, *high,
+                "turn from the matches (%d of %d photos tracked, within %.2f pixels, %.2f if even; perspective %.2f +- %.2f), %s: steps "
+                "%.1f to %.1f degrees, %.1f if even: ",
+                steps.fitted, photos.columns(), steps.residual, steps.even_residual, steps.field_of_view, steps.field_of_view_error, way, *low, *high,
                 360.0 / photos.columns());
   progress(0, int(photos.cells.size()), line + degrees_list(steps.degrees));
 }
@@ -228,14 +240,12 @@ Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions&
   // Per cell, verified dense matches (SPEC T15) from its first photo to the others, and from them:
   // control points (the outline where there are mattes, what a view between two photos shows
   // first when it is wrong, then points wherever the warp through the points so far would
-  // double detail); how much brighter a photo is than its row neighbour (T19).
+  // double detail).
   DistilOptions distil;
   distil.max_points = o.control_points;
   DenseMatchOptions match_options;
   match_options.use_mattes = product.matted;
   MatchCache matches(photos.photos, match_options);
-  std::vector<PairExposure> exposures;
-  std::set<std::pair<int, int>> exposed;
   std::vector<std::vector<Track>> tracks;  // per cell, in the order chosen (outline first)
   std::vector<size_t> outline_points;      // per cell
   const int total = int(photos.cells.size());
@@ -246,9 +256,6 @@ Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions&
     std::vector<const DenseMatches*> flow_pointers;
     for (size_t k = 1; k < cell.size(); ++k) flows.push_back(matches.get(cell[0], cell[k]));
     for (const DenseMatches& f : flows) flow_pointers.push_back(&f);
-    // A cell's first two photos are neighbours in one row.
-    if (exposed.insert(std::minmax(int(cell[0]), int(cell[1]))).second)
-      exposures.push_back(pair_exposure(flows[0], a, photos.photos[cell[1]], cell[0], cell[1]));
     std::vector<Track> outline;
     if (product.matted) outline = outline_tracks(a, photos.photos[cell[1]], flows);
     const size_t on_outline = outline.size();
@@ -262,13 +269,17 @@ Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions&
                                  (product.matted ? ", " + std::to_string(on_outline) + " outline points" : ""));
     }
   }
-  const std::vector<glm::vec3> gains = row_gains(exposures, photos);
+  const CameraGains camera = row_gains(backdrops, photos);
+  const std::vector<glm::vec3>& gains = camera.gains;
   float largest_change = 0;
   for (size_t i = 0; i < gains.size(); ++i) {
     apply_gain(photos.photos[i], gains[i]);
     for (int c = 0; c < 3; ++c) largest_change = std::max(largest_change, std::abs(gains[i][c] - 1.0f));
   }
-  if (progress) progress(0, total, "exposure evened: the largest change " + std::to_string(int(std::lround(largest_change * 100))) + "%");
+  if (progress)
+    progress(0, total, !camera.unmeasured.empty()
+                           ? "exposure left as it was: " + camera.unmeasured
+                           : "the camera's exposure evened on the backdrop: the largest change " + std::to_string(int(std::lround(largest_change * 100))) + "%");
   // The tween data's share of the first view (the photos' bytes as they will be stored, after
   // the exposure is evened): tween <= share x (photos + mattes + tween).
   size_t photo_bytes = 0;

@@ -150,8 +150,10 @@ double off_curve(const TrackPath& t, const Observation& o, const TurnFit& fit) {
 // every track's (u, w) by Levenberg-Marquardt on the tracks' x, the tracks' unknowns
 // eliminated per step (a Schur complement, as bundle adjustment does: a few thousand tracks,
 // a few dozen shared unknowns). Twice along the way, observations far off their track's curve
-// (a corner where edges at two depths cross, a reflection) are left out.
-TurnFit fit_turn(std::vector<TrackPath>& tracks, int n, int rows) {
+// (a corner where edges at two depths cross, a reflection) are left out. With `even`, the
+// azimuths stay evenly spaced (only the rows and tracks are fitted) and the observations left
+// out are those the tracks came with: the same observations, for comparing the two fits.
+TurnFit fit_turn(std::vector<TrackPath>& tracks, int n, int rows, bool even = false) {
   const int shared = n - 1 + 2 * rows;
   TurnFit fit;
   fit.azimuth.assign(size_t(n), 0.0);
@@ -184,7 +186,7 @@ TurnFit fit_turn(std::vector<TrackPath>& tracks, int n, int rows) {
     const double c = std::cos(a), s = std::sin(a), q2 = v.shrink * v.shrink;
     Derivatives d;
     d.own = {c / v.shrink + v.across * g * s / q2, -s / v.shrink + v.across * g * c / q2};
-    d.at[0] = o.column - 1, d.by[0] = (-v.toward * v.shrink + g * v.across * v.across) / q2;
+    d.at[0] = even ? -1 : o.column - 1, d.by[0] = (-v.toward * v.shrink + g * v.across * v.across) / q2;
     d.at[1] = n - 1 + 2 * t.row, d.by[1] = 1;
     d.at[2] = n - 1 + 2 * t.row + 1, d.by[2] = v.across * v.toward / q2;
     return d;
@@ -238,7 +240,7 @@ TurnFit fit_turn(std::vector<TrackPath>& tracks, int n, int rows) {
         const double e = residual(t, o);
         v += d.own * d.own.t(), b += d.own * e;
         for (int i = 0; i < 3; ++i) {
-          if (d.at[i] < 0) continue;  // the first photo's azimuth is fixed
+          if (d.at[i] < 0) continue;  // the first photo's azimuth is fixed (every one, when even)
           rhs.at<double>(d.at[i]) += d.by[i] * e;
           cross(d.at[i], d.own * d.by[i]);
           for (int j = 0; j < 3; ++j)
@@ -283,7 +285,9 @@ TurnFit fit_turn(std::vector<TrackPath>& tracks, int n, int rows) {
       damping *= 5;
     }
     // Converged (no step lowers the cost) or long enough: leave the outliers out, twice, then stop.
-    if (damping > 1e6 || iteration == kOutliersAt[outlier_passes]) {
+    if (even) {
+      if (damping > 1e6) break;
+    } else if (damping > 1e6 || iteration == kOutliersAt[outlier_passes]) {
       if (outlier_passes == 2) break;
       ++outlier_passes, damping = 1e-3;
       int count = 0;
@@ -330,12 +334,20 @@ TurnSteps turn_steps_from_photos(const PhotoFolder& photos) {
   std::vector<double> azimuth = fit.azimuth;
   TurnSteps out;
   out.tracked.assign(size_t(n), 0);
-  double squares = 0;
-  int count = 0;
+  const auto rms = [](const std::vector<TrackPath>& tracks, const TurnFit& fit) {
+    double squares = 0;
+    int count = 0;
+    for (const TrackPath& t : tracks)
+      for (const Observation& o : t.seen)
+        if (o.inlier) squares += std::pow(off_curve(t, o, fit), 2), ++count;
+    return float(std::sqrt(squares / std::max(count, 1)));
+  };
   for (const TrackPath& t : tracks)
-    for (const Observation& o : t.seen)
-      if (o.inlier) squares += std::pow(off_curve(t, o, fit), 2), ++count, ++out.tracked[size_t(o.column)];
-  out.residual = float(std::sqrt(squares / std::max(count, 1)));
+    for (const Observation& o : t.seen) out.tracked[size_t(o.column)] += o.inlier;
+  out.residual = rms(tracks, fit);
+  // The same observations about an evenly spaced turn: what the uneven one must clearly beat.
+  std::vector<TrackPath> even_tracks = tracks;
+  out.even_residual = rms(even_tracks, fit_turn(even_tracks, n, rows, true));
 
   // Photos with too few tracks are spaced evenly between the nearest fitted ones either side.
   std::vector<int> fitted;

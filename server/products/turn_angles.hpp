@@ -33,6 +33,7 @@
 namespace inkwire {
 
 inline constexpr int kTurnSide = 1024;
+inline constexpr float kClearlyBetterFit = 0.8f;  // the uneven fit's residual against the even one's
 
 struct TurnSteps {
   std::vector<float> degrees;  // per column, the turn from it to the next (the last closes the ring); 360 in all, or -360
@@ -42,6 +43,11 @@ struct TurnSteps {
   std::vector<int> tracked;    // per column, the tracked points through its photos (all rows)
   int fitted = 0;              // columns with enough of them to fit; the others are spaced evenly between fitted ones
   float residual = 0;          // pixels, root mean square of the tracks about their sinusoids
+  float even_residual = 0;     // the same, the same observations fitted with evenly spaced azimuths
+  // Whether the uneven turn explains the tracks clearly better than even steps: a turntable
+  // that stepped evenly (a stepper motor, a rendered product) keeps its even steps, whatever
+  // noise the fit with a free angle per photo soaks up.
+  bool uneven() const { return residual < kClearlyBetterFit * even_residual; }
 };
 
 // The steps of a folder whose rows go all the way round, from its photos read again at up to

@@ -136,37 +136,29 @@ TEST(DenseMatchesTest, FlowInterpolationPutsTheObjectHalfWay) {
   EXPECT_THROW(flow_interpolation(a, Image(10, 10), 0.5f), Error);
 }
 
-TEST(ExposureTest, APairsRatioIsReadFromItsMatchedPixels) {
-  const Image a = textured_disc();
-  Image b = a;
-  apply_gain(b, glm::vec3(1.1f, 1.0f, 0.9f));
-  const DenseMatches m = dense_matches(a, b);
-  const PairExposure e = pair_exposure(m, a, b, 0, 1);
-  ASSERT_GT(e.count, 0);
-  EXPECT_NEAR(e.log_ratio.r, std::log(1.1f), 0.01);
-  EXPECT_NEAR(e.log_ratio.g, 0.0f, 0.01);
-  EXPECT_NEAR(e.log_ratio.b, std::log(0.9f), 0.01);
+TEST(ExposureTest, APhotoWhoseBackdropJumpsIsEvenedAndSlowDriftIsKept) {
+  // 24 photos round a ring over a grey backdrop: daylight that drifts slowly (+-5%), and photo 3
+  // shot 20% brighter and bluer by the camera.
+  const int n = 24;
+  std::vector<glm::vec3> backdrops;
+  for (int i = 0; i < n; ++i) {
+    const float light = 180.0f * std::exp(0.05f * std::sin(2.0f * float(M_PI) * float(i) / float(n)));
+    backdrops.push_back(i == 3 ? glm::vec3(1.2f, 1.2f, 1.3f) * light : glm::vec3(light));
+  }
+  const CameraGains camera = camera_gains(backdrops, true);
+  ASSERT_EQ(camera.gains.size(), size_t(n));
+  EXPECT_TRUE(camera.unmeasured.empty());
+  EXPECT_NEAR(camera.gains[3].g, 1.0 / 1.2, 0.02);
+  EXPECT_NEAR(camera.gains[3].b, 1.0 / 1.3, 0.02);
+  for (int i = 0; i < n; ++i)
+    if (i != 3) EXPECT_NEAR(camera.gains[size_t(i)].g, 1.0, 0.01) << "photo " << i << " keeps its light";
 }
 
-TEST(ExposureTest, APhotoBrighterThanItsNeighboursIsEvenedAndSlowLightIsKept) {
-  // 24 photos round a ring: light that changes slowly as the product turns (+-5%), and photo
-  // 3 shot 20% brighter.
-  const int n = 24;
-  std::vector<double> level(n);
-  for (int i = 0; i < n; ++i) level[size_t(i)] = 0.05 * std::sin(2 * M_PI * i / n) + (i == 3 ? std::log(1.2) : 0.0);
-  std::vector<PairExposure> pairs;
-  for (int i = 0; i < n; ++i) {
-    const int j = (i + 1) % n;
-    pairs.push_back({.a = i, .b = j, .log_ratio = glm::vec3(float(level[size_t(j)] - level[size_t(i)])), .count = 1000});
-  }
-  const std::vector<glm::vec3> gains = exposure_gains(pairs, n, true);
-  ASSERT_EQ(gains.size(), size_t(n));
-  EXPECT_NEAR(gains[3].g, 1.0 / 1.2, 0.02);
-  for (int i = 0; i < n; ++i) {
-    if (i != 3) {
-      EXPECT_NEAR(gains[size_t(i)].g, 1.0, 0.03) << "photo " << i << " keeps its light";
-    }
-  }
-  // A pair without usable matches says nothing; a lone photo keeps its gain.
-  EXPECT_EQ(exposure_gains({}, 3, false), std::vector<glm::vec3>(3, glm::vec3(1.0f)));
+TEST(ExposureTest, ABackdropWhiteToTheClipEvensNothingAndSaysWhy) {
+  // A rendered product over white: the backdrop shows no exposure, so nothing is touched, even
+  // where the object's own shading changes from photo to photo.
+  const CameraGains camera = camera_gains(std::vector<glm::vec3>(12, glm::vec3(255.0f)), true);
+  EXPECT_EQ(camera.gains, std::vector<glm::vec3>(12, glm::vec3(1.0f)));
+  EXPECT_NE(camera.unmeasured.find("white to the clip"), std::string::npos) << camera.unmeasured;
+  EXPECT_FALSE(camera_gains({glm::vec3(100.0f), glm::vec3(120.0f)}, false).unmeasured.empty()) << "two photos show no trend";
 }
