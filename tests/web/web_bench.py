@@ -24,7 +24,7 @@ import threading
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from browser_support import Nginx, Server, chromium, psnr, read_image, skip  # skips without the browser
+from browser_support import PROTOCOL_VERSION, Nginx, Server, chromium, psnr, read_image, skip  # skips without the browser
 
 BIN, OUT, JSON_OUT = sys.argv[1], sys.argv[2], sys.argv[3]
 TRUCK = "/usr/share/assimp/models/glTF/CesiumMilkTruck/CesiumMilkTruck.gltf"
@@ -137,7 +137,7 @@ try:
     element = "document.querySelector('inkwire-turntable')"
     psnr_mean = None
     for size in (512, 1024):
-        driver.execute_script(f"""document.body.style.margin = '0'; performance.setResourceTimingBufferSize(100000);
+        driver.execute_script(f"""document.body.style.margin = '0'; performance.clearResourceTimings(); performance.setResourceTimingBufferSize(100000);
           document.body.innerHTML = '<inkwire-turntable session="truck" auto-rotate="off" style="width:{size}px;height:{size}px"></inkwire-turntable>';
           import('/inkwire.js');""")
         start = time.time()
@@ -264,8 +264,31 @@ try:
     rows.append({"variant": "spin,n=72", "counters": {"fps": fps, "bytes_first_view": first_bytes, "ms_first_view": first_ms, "bytes_total": total,
                                                       "psnr_mean": sum(scores) / len(scores)}})
     print(f"web: spin page: {fps:.1f} fps while dragging, first view {first_bytes} bytes in {first_ms:.0f} ms, {total} bytes in all", file=sys.stderr)
-finally:
+
+    # The load rows: 1000 first views at once-ish (32 at a time) from nginx, from the server's
+    # /products/ and over the server's WebSocket as the element read products before
+    # (first_view_load.py), the browser closed first so the serving processes have the CPU.
     driver.quit()
+    driver = None
+    from first_view_load import static_visit, visit_all, websocket_visit
+    manifest = json.load(open(os.path.join(www, "truck", "product.json")))
+    first = [manifest["photos"][0], manifest["mattes"][0]]
+    nginx_pids = [nginx.process.pid] + [int(p) for p in open(f"/proc/{nginx.process.pid}/task/{nginx.process.pid}/children").read().split()]
+    visits = {
+        "nginx": (lambda: static_visit(nginx.port, "/truck", [f["file"] for f in first]), nginx_pids),
+        "inkwire-server-http": (lambda: static_visit(server.http, "/products/truck", [f["file"] for f in first]), [server.process.pid]),
+        "inkwire-server-websocket": (lambda: websocket_visit(server.http, "truck", [(f["sha256"], f["size"]) for f in first], PROTOCOL_VERSION),
+                                     [server.process.pid]),
+    }
+    for host, (visit, pids) in visits.items():
+        load = visit_all(visit, 1000, 32, pids)
+        rows.append({"variant": f"load,host={host}", "counters": {k: v for k, v in load.items() if isinstance(v, (int, float)) and v is not None}})
+        print(f"web: 1000 first views from {host}: {load['visitors_per_second']:.0f} a second, p50 {load['ms_first_view_p50']:.1f} ms, "
+              f"p99 {load['ms_first_view_p99']:.1f} ms, {load['cpu_ms_per_visitor']:.2f} CPU ms a visitor "
+              f"({load['bytes_per_visitor']:.0f} bytes), {load['failed']} failed {load['first_failure']}", file=sys.stderr)
+finally:
+    if driver:
+        driver.quit()
     server.stop()
     nginx.stop()
     httpd.shutdown()
