@@ -1,5 +1,7 @@
 #include "server/asset_store.hpp"
 
+#include <utility>
+
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -135,6 +137,7 @@ AssetStore::AssetStore(const fs::path& dir) : dir_(dir) {
   bool has_editor_token = false;
   for (Statement q(db_, "PRAGMA table_info(sessions)"); q.step();) has_editor_token |= q.text(1) == "editor_token";
   if (!has_editor_token) exec("ALTER TABLE sessions ADD COLUMN editor_token TEXT NOT NULL DEFAULT ''");
+  changed_elsewhere();  // from here on, what other processes write is noticed
 }
 
 AssetStore::~AssetStore() { sqlite3_close(db_); }
@@ -235,6 +238,13 @@ protocol::Bytes AssetStore::read(const protocol::Hash& hash, uint64_t offset, ui
   in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(bytes.size()));
   if (size_t(in.gcount()) != bytes.size()) throw Error("asset file of " + announce->name + " is shorter than catalogued");
   return bytes;
+}
+
+bool AssetStore::changed_elsewhere() {
+  Statement q(db_, "PRAGMA data_version");
+  const int64_t version = q.step() ? q.integer(0) : data_version_;
+  const int64_t before = std::exchange(data_version_, version);
+  return before >= 0 && before != version;
 }
 
 std::vector<StoredSession> AssetStore::sessions() const {

@@ -53,6 +53,10 @@ class AssetStore {
   void save_product(const std::string& key, const protocol::Snapshot& state);
   std::optional<protocol::Snapshot> find_product(const std::string& key) const;
 
+  // Whether another process (add-product, while the server runs) wrote the catalogue since the
+  // last call: SQLite's data_version, which this connection's own writes leave alone.
+  bool changed_elsewhere();
+
   const std::filesystem::path& dir() const { return dir_; }
 
  private:
@@ -60,6 +64,7 @@ class AssetStore {
   void exec(const char* sql) const;
   std::filesystem::path dir_;
   sqlite3* db_ = nullptr;
+  int64_t data_version_ = -1;
   mutable std::map<protocol::Hash, std::filesystem::file_time_type> verified_;  // and when its file was written
 };
 

@@ -164,6 +164,15 @@ std::shared_ptr<Session> Server::add_session(StoredSession stored) {
   return session;
 }
 
+// A product added while the server runs (`inkwire-server add-product` is a process of its own,
+// writing the same catalogue): served from the next tick of the persist loop, under its name.
+// A name the server already serves keeps its session until a restart.
+void Server::adopt_sessions_stored_elsewhere() {
+  if (!store_->changed_elsewhere()) return;
+  for (StoredSession& stored : store_->sessions())
+    if (!sessions_.count(stored.state.session)) add_session(std::move(stored));
+}
+
 void Server::deliver(Session& session, const protocol::Message& change, uint64_t sender, std::optional<uint32_t> revision) {
   if (!session.apply(change, sender)) return;
   if (revision) session.set_revision(*revision);
@@ -240,6 +249,7 @@ asio::awaitable<void> Server::persist_loop() {
     co_await persist_timer_.async_wait(no_throw);
     for (auto& [name, session] : sessions_)
       if (session->dirty) persist(*session);
+    adopt_sessions_stored_elsewhere();
     // After a burst of connections (an attack, a crowd leaving) glibc keeps the freed memory in
     // its arenas: hand it back, so the server's size follows what it serves (SPEC D6).
     if (connections_.size() < peak_connections_ / 2) {

@@ -96,6 +96,7 @@ class Server {
   void ready_product(Session& session);
   void start_face_feeds();
   asio::awaitable<void> persist_loop();
+  void adopt_sessions_stored_elsewhere();
   asio::awaitable<void> call_loop();  // calls' speakers fall silent on time
 
   asio::io_context& io_;

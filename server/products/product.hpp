@@ -70,8 +70,7 @@ struct MeshProductOptions {
   UpAxis up = UpAxis::Auto;  // which way is up in the mesh file
 };
 
-// Renders a mesh into samples with their render's alpha as mattes and exact control points.
-// Makes its own off-screen GL context. Throws inkwire::Error.
-Product product_from_mesh(const std::filesystem::path& mesh, const MeshProductOptions& options, const PairProgress& progress = {});
+// (A mesh is made into a product by products/mesh_product.hpp, in a process of its own: the
+// serving process loads no GL.)
 
 }  // namespace inkwire

@@ -12,6 +12,7 @@
 #include "common/error.hpp"
 #include "common/image_metrics.hpp"
 #include "common/log.hpp"
+#include "server/products/mesh_product_process.hpp"
 
 namespace inkwire::server {
 namespace fs = std::filesystem;
@@ -107,21 +108,31 @@ protocol::Snapshot store_product(AssetStore& store, const Product& product, cons
 }
 
 protocol::Snapshot find_or_make_product(AssetStore& store, const ProductSource& source, const std::string& session,
-                                        const PairProgress& progress, bool* made) {
+                                        const PairProgress& progress, bool* made, const MeshRenderer& render_mesh) {
   const std::string key = source.key();
-  if (auto stored = store.find_product(key)) {
-    // The same product under another name is the same assets under another session.
-    bool whole = true;
-    for (const auto& a : stored->assets) whole = whole && store.find(a.hash).has_value();
-    if (whole) {
-      if (made) *made = false;
-      stored->session = session;
-      return *stored;
-    }
+  // The same product under another name is the same assets under another session.
+  const auto found = [&]() -> std::optional<protocol::Snapshot> {
+    auto stored = store.find_product(key);
+    if (!stored) return std::nullopt;
+    for (const auto& a : stored->assets)
+      if (!store.find(a.hash)) return std::nullopt;
+    stored->session = session;
+    return stored;
+  };
+  if (auto stored = found()) {
+    if (made) *made = false;
+    return *stored;
+  }
+  if (!source.mesh.empty() && !render_mesh) {
+    make_mesh_product_in_helper(store.dir(), source, progress);
+    auto stored = found();
+    if (!stored) throw Error("the mesh helper stored no product for " + source.mesh.string());
+    if (made) *made = true;
+    return *stored;
   }
   const auto start = std::chrono::steady_clock::now();
   const Product product = source.mesh.empty() ? product_from_photos(source.photos, source.photo_options, progress)
-                                              : product_from_mesh(source.mesh, source.mesh_options, progress);
+                                              : render_mesh(source.mesh, source.mesh_options, progress);
   protocol::Snapshot state = store_product(store, product, session);
   store.save_product(key, state);
   if (made) *made = true;

@@ -4,6 +4,7 @@
 // the product's key (a hash of its inputs and settings) to them, so a product is made once and
 // never again on restart or when added a second time.
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -29,11 +30,16 @@ struct ProductSource {
 // turntable session named `session` that shows it.
 protocol::Snapshot store_product(AssetStore& store, const Product& product, const std::string& session);
 
+// How a mesh becomes a product in this process: products/mesh_product.hpp's product_from_mesh,
+// in the helper that links GL. Without one, a mesh product is made by that helper as a process
+// of its own (mesh_product_process.hpp), so the caller never loads GL.
+using MeshRenderer = std::function<Product(const std::filesystem::path&, const MeshProductOptions&, const PairProgress&)>;
+
 // The product of `source` for a turntable session named `session`: found by its key in the
 // catalogue, or made (landmarks and all, with `progress` per pair) and stored. `made` says
 // which. Throws inkwire::Error with a one-line reason.
 protocol::Snapshot find_or_make_product(AssetStore& store, const ProductSource& source, const std::string& session,
-                                        const PairProgress& progress, bool* made = nullptr);
+                                        const PairProgress& progress, bool* made = nullptr, const MeshRenderer& render_mesh = {});
 
 // The bytes of each of a product's zoom levels (all its photos at that level), coarsest first.
 std::vector<uint64_t> zoom_level_bytes(const protocol::Snapshot& state);

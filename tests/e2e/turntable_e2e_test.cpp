@@ -5,6 +5,9 @@
 // cross-fade; once the product is there a full turn costs no bytes; a restarted server makes
 // nothing again; a corrupted stored file is refused, not served; bad folders are refused with
 // the file named.
+#include <fstream>
+#include <set>
+
 #include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -152,6 +155,48 @@ TEST_F(TurntableE2ETest, AShopOwnersPhotosBecomeAProductACustomerTurnsWithoutABy
   std::printf("bytes received: first visit %llu, with the photos cached %llu\n", (unsigned long long)first_visit,
               (unsigned long long)second_visit);
   EXPECT_LT(second_visit, first_visit / 10);
+}
+
+// The GL libraries and drivers a process has mapped (/proc/PID/maps): the off-screen and EGL
+// front ends, the GL library itself and Mesa's drivers. (GLVND's dispatch stubs, libGLX.so.0 and
+// libGLdispatch.so.0, are mapped by any process that links Debian's OpenCV core, which names them
+// for its OpenGL interop; they load no driver until a context is made, and none is.)
+std::vector<std::string> gl_mapped(pid_t pid) {
+  std::ifstream maps("/proc/" + std::to_string(pid) + "/maps");
+  std::set<std::string> found;
+  for (std::string line; std::getline(maps, line);) {
+    const std::string file = line.substr(line.find_last_of(' ') + 1);
+    const std::string name = fs::path(file).filename().string();
+    for (const char* gl : {"libOSMesa", "libEGL", "libGL.so", "libGLX_mesa", "_dri.so", "libgallium", "libglapi"})
+      if (name.find(gl) != std::string::npos) found.insert(name);
+  }
+  return {found.begin(), found.end()};
+}
+
+// Issue "the house and its edges": a product made from a mesh is rendered by inkwire-mesh-product,
+// a process of its own, never by the serving process, which maps no GL library after it served
+// one: the product of its config at start, and one added with add-product while it runs, which is
+// served under its name without a restart.
+TEST_F(TurntableE2ETest, MeshProductsAreMadeOutsideTheServingProcessWhichMapsNoGLAndOneAddedWhileItRunsIsServed) {
+  const fs::path dir = output_dir("turntable-no-gl");
+  ServerUnderTest server(dir, {{"sessions", {{{"name", "duck"}, {"kind", "turntable"},
+                                              {"product", {{"mesh", kDuck.string()}, {"samples", 8}, {"size", 128}}}}}}});
+  EXPECT_NE(server.process().output().find("\"product-pair\""), std::string::npos) << "no pair of the helper reached the server's log";
+  auto seen = product_client(server, "duck", dir, "config", 1, "0", true);
+  ASSERT_EQ(seen->wait(), 0) << seen->output();
+  EXPECT_EQ(frame_log(dir / "config.jsonl").at(0)["product"]["samples_loaded"], 8);
+  EXPECT_EQ(gl_mapped(server.process().pid()), std::vector<std::string>{}) << "the serving process mapped GL";
+
+  Process add("inkwire-server", {"add-product", "cow", "--mesh", kDuck.string(), "--samples", "6", "--size", "96", "--data", (dir / "data").string()},
+              dir / "add.log");
+  ASSERT_EQ(add.wait(), 0) << add.output();
+  EXPECT_EQ(count_lines_starting(add.output(), "pair "), 6) << add.output();
+  EXPECT_TRUE(eventually([&] { return server.process().output().find("\"session\":\"cow\"") != std::string::npos; }))
+      << "the running server did not take up the product added beside it";
+  auto cow = product_client(server, "cow", dir, "added", 1, "0", true);
+  ASSERT_EQ(cow->wait(), 0) << cow->output();
+  EXPECT_EQ(frame_log(dir / "added.jsonl").at(0)["product"]["samples_loaded"], 6);
+  EXPECT_EQ(gl_mapped(server.process().pid()), std::vector<std::string>{}) << "the serving process mapped GL";
 }
 
 TEST_F(TurntableE2ETest, RowsOfPhotosTurnUpAndDownAClientTurnedUpSeesTheUpperRow) {
