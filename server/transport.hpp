@@ -11,7 +11,7 @@
 
 #include <asio.hpp>
 
-#include "common/byte_stream.hpp"
+#include "protocol/net/byte_stream.hpp"
 #include "protocol/messages.hpp"
 #include "server/send_queue.hpp"
 

@@ -10,7 +10,7 @@
 #include "client/gl/context.hpp"
 #include "client/viewer/session_view.hpp"
 #include "client/viewer/viewer.hpp"
-#include "common/byte_stream.hpp"
+#include "protocol/net/byte_stream.hpp"
 #include "common/error.hpp"
 
 using namespace inkwire;

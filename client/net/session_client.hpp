@@ -18,7 +18,7 @@
 #include <asio.hpp>
 
 #include "client/net/asset_cache.hpp"
-#include "common/byte_stream.hpp"
+#include "protocol/net/byte_stream.hpp"
 #include "protocol/framing.hpp"
 
 namespace inkwire {

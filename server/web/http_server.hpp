@@ -12,7 +12,7 @@
 
 #include <asio.hpp>
 
-#include "common/byte_stream.hpp"
+#include "protocol/net/byte_stream.hpp"
 
 namespace inkwire::server {
 

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "client/net/session_client.hpp"
-#include "common/byte_stream.hpp"
+#include "protocol/net/byte_stream.hpp"
 #include "e2e_support.hpp"
 #include "../unit/test_data.hpp"
 

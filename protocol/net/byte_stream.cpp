@@ -1,4 +1,4 @@
-#include "common/byte_stream.hpp"
+#include "protocol/net/byte_stream.hpp"
 
 #include <filesystem>
 
