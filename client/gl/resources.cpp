@@ -247,10 +247,7 @@ const std::string& shader_header() {
   // Shader files carry no #version line: the target's is put first. Both say what GL 3.3 core
   // and WebGL2 (GLSL ES 3.00) share, so one file serves both (SPEC W5); ES wants precisions.
 #ifdef __EMSCRIPTEN__
-  static const std::string header =
-      "#version 300 es\n"
-      "precision highp float;\nprecision highp int;\n"
-      "precision highp sampler2D;\nprecision highp sampler2DArray;\nprecision highp sampler3D;\n";
+  static const std::string header = kWebGlShaderHeader;
 #else
   static const std::string header = "#version 330 core\n";
 #endif

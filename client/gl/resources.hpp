@@ -142,7 +142,13 @@ class Texture : public Handle<delete_texture> {
 const std::string& shader_source(const std::string& path);
 
 // What every shader is compiled after: the target's #version line (GLSL 3.30 core natively,
-// GLSL ES 3.00 for WebGL2) and, for ES, default precisions.
+// GLSL ES 3.00 for WebGL2) and, for ES, default precisions. The ES one is also the header of the
+// browser element's own tween shaders (client/web/render/tween/tween_view.js, pinned by
+// warp-vectors.json "shader_header").
+inline constexpr const char* kWebGlShaderHeader =
+    "#version 300 es\n"
+    "precision highp float;\nprecision highp int;\n"
+    "precision highp sampler2D;\nprecision highp sampler2DArray;\nprecision highp sampler3D;\n";
 const std::string& shader_header();
 
 class Program : public Handle<delete_program> {

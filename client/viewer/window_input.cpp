@@ -18,16 +18,23 @@ void Orbit::from(const protocol::CameraPose& pose) {
   azimuth = o.azimuth, elevation = o.elevation, distance = o.distance;
 }
 
+float dragged_velocity(float velocity, float degrees, double seconds) {
+  return std::clamp(0.7f * velocity + 0.3f * float(degrees / seconds), -kMaxTurnSpeed, kMaxTurnSpeed);
+}
+
+Coasted coast(float velocity, double seconds) {
+  if (std::abs(velocity) <= kInertiaStop) return {0.0f, 0.0f};
+  return {velocity * float(seconds), velocity * float(std::exp(-seconds / kInertiaSeconds))};
+}
+
 void Inertia::follow(Orbit& orbit, double dt) {
   if (dt <= 0.0) return;
   if (orbit.dragging) {
-    const float v = float((orbit.azimuth - last_azimuth) / dt);
-    velocity = was_dragging ? 0.7f * velocity + 0.3f * v : 0.0f;
-  } else if (std::abs(velocity) > 2.0f) {
-    orbit.azimuth += velocity * float(dt);
-    velocity *= float(std::exp(-dt / 0.4));
+    velocity = was_dragging ? dragged_velocity(velocity, orbit.azimuth - last_azimuth, dt) : 0.0f;
   } else {
-    velocity = 0.0f;
+    const Coasted c = coast(velocity, dt);
+    orbit.azimuth += c.turn;
+    velocity = c.velocity;
   }
   was_dragging = orbit.dragging;
   last_azimuth = orbit.azimuth;

@@ -21,7 +21,21 @@ struct Orbit {
   void from(const protocol::CameraPose& pose);
 };
 
-// A let-go drag keeps turning and slows down, as a physical turntable does.
+// A let-go drag keeps turning and slows down, as a physical turntable does. The browser's element
+// keeps the same rule (client/web/common/inertia.js, pinned by warp-vectors.json "inertia").
+inline constexpr float kMaxTurnSpeed = 360.0f;   // degrees a second a fling may keep: a turn a second
+inline constexpr float kInertiaSeconds = 0.4f;   // the speed falls by a factor e in this long
+inline constexpr float kInertiaStop = 2.0f;      // degrees a second below which it stops
+
+// The speed a drag leaves: the last moments of the drag smoothed, a drag of `degrees` in
+// `seconds` the newest, at most kMaxTurnSpeed either way.
+float dragged_velocity(float velocity, float degrees, double seconds);
+// `seconds` of coasting at `velocity`: how far it turns, and the speed left (0 once too slow).
+struct Coasted {
+  float turn, velocity;
+};
+Coasted coast(float velocity, double seconds);
+
 struct Inertia {
   float velocity = 0.0f;  // degrees per second
   float last_azimuth = 0.0f;

@@ -18,10 +18,12 @@
 #include <nlohmann/json.hpp>
 
 #include "client/call/face_crop.hpp"
+#include "client/gl/resources.hpp"
 #include "client/call/playout_delay.hpp"
 #include "client/render/tween/matte_sample.hpp"
 #include "client/viewer/photo_fetch.hpp"
 #include "client/viewer/turntable_view.hpp"
+#include "client/viewer/window_input.hpp"
 #include "common/distance_field.hpp"
 #include "common/tween/view_sphere.hpp"
 #include "common/tween/warp_mesh.hpp"
@@ -276,11 +278,43 @@ TEST(WarpVectorsTest, AFaceThatStaysKeepsItsCropOneThatDriftsMovesItAndOneThatJu
   }
 }
 
+// A drag's speed and the coasting after it (the turntable's inertia), step by step: a drag of
+// uneven moves, one too fast (held to a turn a second), then coasting frames at 60 Hz and a
+// long frame, down to a stop.
+nlohmann::json inertia_cases() {
+  nlohmann::json drags = nlohmann::json::array(), coasts = nlohmann::json::array();
+  float velocity = 0.0f;
+  for (const auto& [degrees, seconds] : std::vector<std::pair<float, double>>{{2.0f, 0.016}, {3.5f, 0.017}, {-1.0f, 0.02}, {40.0f, 0.016}, {6.0f, 0.033}}) {
+    const float next = dragged_velocity(velocity, degrees, seconds);
+    drags.push_back({{"velocity", velocity}, {"degrees", degrees}, {"seconds", seconds}, {"next", next}});
+    velocity = next;
+  }
+  for (int frame = 0; frame < 200 && velocity != 0.0f; ++frame) {
+    const double seconds = frame == 5 ? 0.1 : 1.0 / 60;
+    const Coasted c = coast(velocity, seconds);
+    coasts.push_back({{"velocity", velocity}, {"seconds", seconds}, {"turn", c.turn}, {"next", c.velocity}});
+    velocity = c.velocity;
+  }
+  return {{"limits", {kMaxTurnSpeed, kInertiaSeconds, kInertiaStop}}, {"drags", drags}, {"coasts", coasts}};
+}
+
+TEST(WarpVectorsTest, AFlingIsHeldToATurnASecondAndCoastsToAStop) {
+  const nlohmann::json c = inertia_cases();
+  EXPECT_EQ(c["drags"][3]["next"].get<float>(), kMaxTurnSpeed) << "a fast drag is held to a turn a second";
+  ASSERT_FALSE(c["coasts"].empty());
+  EXPECT_EQ(c["coasts"].back()["next"].get<float>(), 0.0f) << "it comes to a stop";
+  double turned = 0;
+  for (const auto& step : c["coasts"]) turned += step["turn"].get<double>();
+  const double start = c["coasts"][0]["velocity"].get<double>();
+  EXPECT_NEAR(turned, start * kInertiaSeconds, 0.1 * start * kInertiaSeconds) << "about its speed times the time constant";
+}
+
 TEST(WarpVectorsTest, GoldenVectorsForTheWebClientAreTheseNumbers) {
   const nlohmann::json golden = {{"delaunay", delaunay_cases()}, {"warp_meshes", warp_mesh_cases()}, {"distance_field", distance_case()},
                                  {"matte_samples", matte_cases()}, {"locate_view", locate_cases()}, {"photo_fetch", photo_fetch_cases()},
                                  {"turntable", turntable_cases()}, {"playout", playout_cases()},
-                                 {"face_crop", face_crop_cases()}};
+                                 {"face_crop", face_crop_cases()}, {"inertia", inertia_cases()},
+                                 {"shader_header", gl::kWebGlShaderHeader}};
   const std::filesystem::path file = std::filesystem::path(INKWIRE_GOLDEN_DIR) / "warp-vectors.json";
   if (const char* approve = std::getenv("INKWIRE_APPROVE_GOLDEN"); approve && std::string(approve) == "1") {
     std::ofstream(file) << golden.dump() << "\n";

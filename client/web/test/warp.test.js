@@ -73,3 +73,8 @@ test('photos are fetched in the C++ client\'s order as a visitor looks, turns an
     assert.deepEqual(dropped, s.dropped, `finer levels given way at ${s.direction}`);
   }
 });
+
+test('the element compiles its shaders after the header the C++ renderer uses for WebGL2', async () => {
+  const { kShaderHeader } = await import('../render/tween/tween_view.js');
+  assert.equal(kShaderHeader, JSON.parse(readFileSync(new URL('../../../tests/golden/warp-vectors.json', import.meta.url))).shader_header);
+});

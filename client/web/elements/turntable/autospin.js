@@ -1,6 +1,7 @@
 // <inkwire-turntable>'s motion between touches: auto-spin until the first touch (never under
 // prefers-reduced-motion, nor with auto-rotate="off"), inertia after a drag. One animation loop
 // while the element is in the page, whatever its attributes do.
+import { coast } from '../../common/inertia.js';
 
 const kAutoSpin = 20;  // degrees per second until the first touch
 
@@ -20,9 +21,10 @@ export const AutoSpinMixin = (Base) => class extends Base {
       last = now;
       if (signal.aborted) return;
       if (!this.touched && !reduced && this.getAttribute('auto-rotate') !== 'off' && this.hasAttribute('loaded')) this.azimuth = this._azimuth + kAutoSpin * dt;
-      else if (Math.abs(this.velocity) > 2 && this.pointers.size === 0) {
-        this.azimuth = this._azimuth + this.velocity * dt;
-        this.velocity *= Math.exp(-dt / 0.4);
+      else if (this.velocity !== 0 && this.pointers.size === 0) {
+        const { turn, velocity } = coast(this.velocity, dt);
+        this.velocity = velocity;
+        if (turn !== 0) this.azimuth = this._azimuth + turn;
       }
       requestAnimationFrame(step);
     };

@@ -4,6 +4,7 @@
 // AbortSignal and go when the element leaves the page (STYLE 17), so an element moved in the
 // page turns once as far, never twice.
 
+import { draggedVelocity } from '../../common/inertia.js';
 import { kMaxZoom, kMinZoom } from '../../common/turntable_pose.js';
 
 const kDegreesPerPixel = 0.4;  // as the C++ window turns
@@ -44,8 +45,7 @@ export const ControlsMixin = (Base) => class extends Base {
       const dx = e.clientX - p.x, dy = e.clientY - p.y, dt = Math.max((e.timeStamp - p.t) / 1000, 1e-3);
       this.elevation = this.withinRows(this.elevation + dy * kDegreesPerPixel);
       this.azimuth = this._azimuth - dx * kDegreesPerPixel;
-      // Inertia follows the last moments of the drag, at most a turn a second.
-      this.velocity = Math.min(Math.max(0.7 * this.velocity + 0.3 * ((-dx * kDegreesPerPixel) / dt), -360), 360);
+      this.velocity = draggedVelocity(this.velocity, -dx * kDegreesPerPixel, dt);
       Object.assign(p, { x: e.clientX, y: e.clientY, t: e.timeStamp });
     }, options);
     const up = (e) => {

@@ -18,8 +18,10 @@ function compile(gl, type, source) {
 }
 
 // What client/gl/resources.cpp shader_header() puts before every shader in the WebAssembly
-// build: the shader files carry no #version, so the C++ client's files serve the browser too.
-const kShaderHeader = '#version 300 es\nprecision highp float;\nprecision highp int;\nprecision highp sampler2D;\n';
+// build (kWebGlShaderHeader; warp-vectors.json "shader_header" pins the two): the shader files
+// carry no #version, so the C++ client's files serve the browser too.
+export const kShaderHeader = '#version 300 es\nprecision highp float;\nprecision highp int;\n' +
+  'precision highp sampler2D;\nprecision highp sampler2DArray;\nprecision highp sampler3D;\n';
 
 export function program(gl, vertex, fragment, defines) {
   const withHeader = (src) => `${kShaderHeader}${defines.map((d) => `#define ${d}\n`).join('')}${src}`;
