@@ -72,6 +72,7 @@ for bad in ("version", "changed", "missing"):
     shutil.copytree(os.path.join(root, "duck"), os.path.join(root, f"duck-{bad}"))
 bad_manifest = dict(manifest, version=2)
 json.dump(bad_manifest, open(os.path.join(root, "duck-version", "product.json"), "w"))
+os.remove(os.path.join(root, "duck-version", "product.json.gz"))  # or nginx sends the good one, gzipped ahead
 victim = manifest["photos"][6]["file"]
 with open(os.path.join(root, "duck-changed", victim), "r+b") as f:
     f.seek(2000)

@@ -32,6 +32,7 @@ export const LoadingMixin = (Base) => class extends Base {
     this.product = null;
     this.session?.close();
     this.session = null;
+    this.liveJoined = false;
     this.product = new StaticProduct(this.productUrl());
     this.product.addEventListener('error', (e) => this.fail(e.detail));
     this.goLive();

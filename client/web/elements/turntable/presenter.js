@@ -12,11 +12,16 @@ export const PresenterMixin = (Base) => class extends Base {
   goLive() {
     if (this.session || !this.hasAttribute('session') || !(this.hasAttribute('present') || this.hasAttribute('follow'))) return;
     const live = this.openSession();
+    this.liveJoined = false;
     live.addEventListener('refused', () => { this.presentRefused = true; });
     live.addEventListener('state', (e) => {
       if (e.detail.type === 'object-pose') this.follow(e.detail);
     });
-    live.addEventListener('snapshot', (e) => this.follow(e.detail.object), { once: true });
+    live.addEventListener('snapshot', (e) => {
+      this.liveJoined = true;  // a presenter's view goes out from here on (nothing is sent before the join)
+      this.follow(e.detail.object);
+      this.redraw();
+    }, { once: true });
   }
 
   // Following: the presenter's view replaces this one.
@@ -33,7 +38,7 @@ export const PresenterMixin = (Base) => class extends Base {
   // Presenting: the view goes to the session whenever it changes, at most once a frame; a
   // presenter the server refused (only the product's editor presents) stops sending.
   present() {
-    if (!this.hasAttribute('present') || this.presentRefused || !this.session || !this.snapshot) return;
+    if (!this.hasAttribute('present') || this.presentRefused || !this.liveJoined || !this.snapshot) return;
     const view = [this._azimuth, this.elevation, this.zoom];
     if (this.presented && view.every((v, i) => v === this.presented[i])) return;
     this.presented = view;
