@@ -1,5 +1,6 @@
 #include "server/asset_store.hpp"
 
+#include <set>
 #include <utility>
 
 #include <fcntl.h>
@@ -238,6 +239,48 @@ protocol::Bytes AssetStore::read(const protocol::Hash& hash, uint64_t offset, ui
   in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(bytes.size()));
   if (size_t(in.gcount()) != bytes.size()) throw Error("asset file of " + announce->name + " is shorter than catalogued");
   return bytes;
+}
+
+AssetStore::Swept AssetStore::sweep_unnamed(std::chrono::seconds grace) {
+  Swept out;
+  std::set<std::string> named;
+  for (const char* table : {"sessions", "products"})
+    for (Statement q(db_, (std::string("SELECT state FROM ") + table).c_str()); q.step();) {
+      try {
+        for (const auto& a : decode_state(q.blob(0)).assets) named.insert(to_hex(a.hash));
+      } catch (const Error& e) {
+        out.skipped = std::string("a stored ") + (table[0] == 's' ? "session" : "product") + " state is unreadable (" + e.what() + ")";
+        return out;
+      }
+    }
+  const std::string cutoff = "-" + std::to_string(grace.count()) + " seconds";
+  std::vector<std::pair<std::string, uint64_t>> unnamed;
+  std::set<std::string> catalogued;
+  Statement q(db_, "SELECT hash, size, added < datetime('now', ?) FROM assets");
+  q.bind(1, cutoff);
+  while (q.step()) {
+    catalogued.insert(q.text(0));
+    if (q.integer(2) && !named.count(q.text(0))) unnamed.push_back({q.text(0), uint64_t(q.integer(1))});
+  }
+  for (const auto& [hex, size] : unnamed) {
+    Statement(db_, "DELETE FROM assets WHERE hash = ?").bind(1, hex).step();
+    std::error_code ec;
+    if (fs::remove(dir_ / "assets" / hex, ec)) ++out.files;
+    ++out.assets, out.bytes += size;
+  }
+  // Files the catalogue does not name, as old: never renamed into place, or never catalogued.
+  const auto too_old = fs::file_time_type::clock::now() - grace;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(dir_ / "assets", ec)) {
+    const std::string name = entry.path().filename().string();
+    const std::string hex = name.substr(0, name.find('.'));
+    std::error_code file_ec;
+    if (catalogued.count(hex) && !name.ends_with(".partial")) continue;
+    if (entry.last_write_time(file_ec) > too_old || file_ec) continue;
+    const uint64_t size = entry.file_size(file_ec);
+    if (fs::remove(entry.path(), file_ec)) ++out.files, out.bytes += size;
+  }
+  return out;
 }
 
 bool AssetStore::changed_elsewhere() {

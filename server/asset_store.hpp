@@ -4,6 +4,7 @@
 // Created on first use; survives a killed server (files are renamed into place before the
 // catalogue names them, flushed to disk first; SQLite runs in WAL mode). Not thread-safe: the server uses it from its
 // one I/O thread.
+#include <chrono>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -52,6 +53,18 @@ class AssetStore {
   // Products by key (product_store.hpp): the state of a session that shows the product.
   void save_product(const std::string& key, const protocol::Snapshot& state);
   std::optional<protocol::Snapshot> find_product(const std::string& key) const;
+
+  // Assets no session and no product names, stored more than `grace` ago: what an add-product
+  // killed half-way leaves (its files are written before the product that names them). Their
+  // rows and files go, and so do files of the same age the catalogue never named (a crash between
+  // the rename and the row, an unfinished .partial). A catalogue holding a state this version
+  // cannot read sweeps nothing (what it names is unknown), and says so in `skipped`.
+  struct Swept {
+    size_t assets = 0, files = 0;
+    uint64_t bytes = 0;
+    std::string skipped;
+  };
+  Swept sweep_unnamed(std::chrono::seconds grace);
 
   // Whether another process (add-product, while the server runs) wrote the catalogue since the
   // last call: SQLite's data_version, which this connection's own writes leave alone.

@@ -126,6 +126,7 @@ ServerConfig ServerConfig::parse(const std::string& text, const std::string& ori
     if (j.contains("http_head_timeout_seconds")) c.http_head_timeout_seconds = j.at("http_head_timeout_seconds").get<double>();
     if (j.contains("idle_timeout_seconds")) c.idle_timeout_seconds = j.at("idle_timeout_seconds").get<double>();
     if (j.contains("heartbeat_seconds")) c.heartbeat_seconds = j.at("heartbeat_seconds").get<double>();
+    if (j.contains("asset_sweep_grace_seconds")) c.asset_sweep_grace_seconds = j.at("asset_sweep_grace_seconds").get<double>();
     if (j.contains("sessions")) {
       c.sessions.clear();
       for (const auto& s : j.at("sessions")) {
@@ -149,6 +150,8 @@ ServerConfig ServerConfig::parse(const std::string& text, const std::string& ori
     throw Error("config '" + origin + "': " + e.what());
   }
   if (!(c.http_head_timeout_seconds > 0.05 && c.http_head_timeout_seconds <= 300)) throw Error("config: http_head_timeout_seconds must be 0.05..300");
+  if (!(c.asset_sweep_grace_seconds >= 0 && c.asset_sweep_grace_seconds <= 365 * 86400.0))
+    throw Error("config: asset_sweep_grace_seconds must be 0..31536000");
   if (!(c.heartbeat_seconds >= 0.1 && c.heartbeat_seconds <= 5)) throw Error("config: heartbeat_seconds must be 0.1..5 (clients take 15 s of silence as a dead server)");
   if (!(c.idle_timeout_seconds >= 2 * c.heartbeat_seconds && c.idle_timeout_seconds <= 3600))
     throw Error("config: idle_timeout_seconds must be at least twice heartbeat_seconds and at most 3600");

@@ -64,6 +64,9 @@ struct ServerConfig {
   double idle_timeout_seconds = 15;
   double heartbeat_seconds = 5;
   double persist_seconds = 1;        // how often changed session state is written to the catalogue
+  // On start, assets no session or product names that were stored longer ago than this are
+  // swept (what a killed add-product left); younger ones may belong to one still running.
+  double asset_sweep_grace_seconds = 3600;
   size_t max_connections = 4096;             // clients at once, over every transport
   size_t max_connections_per_address = 64;   // clients at once from one IP address
   int join_failures_allowed = 3;             // wrong tokens from one address before its joins are slowed

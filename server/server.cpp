@@ -120,6 +120,7 @@ void Server::create_sessions() {
     log_info("session-created", {{"session", c.name}, {"kind", protocol::to_string(c.kind)}, {"assets", stored.state.assets.size()}});
     sessions_[c.name] = std::make_shared<Session>(std::move(stored));
   }
+  sweep_unnamed_assets();
   for (auto& [name, session] : sessions_) ready_product(*session);
   // Every conference session is a call its members may publish in; their pictures are analysed
   // on one thread, whose results come back to this I/O thread.
@@ -162,6 +163,13 @@ std::shared_ptr<Session> Server::add_session(StoredSession stored) {
   sessions_[name] = session;
   log_info("session-added", {{"session", name}, {"kind", protocol::to_string(session->state().kind)}, {"assets", session->state().assets.size()}});
   return session;
+}
+
+void Server::sweep_unnamed_assets() {
+  const AssetStore::Swept swept = store_->sweep_unnamed(std::chrono::seconds(int64_t(config_.asset_sweep_grace_seconds)));
+  if (!swept.skipped.empty()) log_warn("asset-sweep-skipped", {{"reason", swept.skipped}});
+  else log_info("assets-swept", {{"assets", swept.assets}, {"files", swept.files}, {"bytes", swept.bytes},
+                                 {"grace_seconds", config_.asset_sweep_grace_seconds}});
 }
 
 // A product added while the server runs (`inkwire-server add-product` is a process of its own,

@@ -97,6 +97,8 @@ class Server {
   void start_face_feeds();
   asio::awaitable<void> persist_loop();
   void adopt_sessions_stored_elsewhere();
+  // On start: what a killed add-product left (AssetStore::sweep_unnamed), counted in the log.
+  void sweep_unnamed_assets();
   asio::awaitable<void> call_loop();  // calls' speakers fall silent on time
 
   asio::io_context& io_;

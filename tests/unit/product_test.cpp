@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <thread>
 
 #include <OpenImageIO/imageio.h>
 #include <sqlite3.h>
@@ -459,4 +460,37 @@ TEST(ProductTest, TheTweenDataKeepsToItsShareOfTheFirstViewByCuttingEachCellsLas
   size_t outline_points = 0;
   for (const TweenCell& c : outlines.data.cells) outline_points += c.points.size();
   EXPECT_LT(outline_points, budgeted_points);
+}
+
+// Issue "the house and its edges": what a killed add-product leaves (assets stored, no product
+// naming them yet, a half-written file) is swept once older than the grace period; a product's
+// and a session's assets never are.
+TEST(ProductTest, AssetsNothingNamesAreSweptAfterTheGracePeriodAndNamedOnesNever) {
+  const fs::path data = fresh_dir("sweep");
+  server::AssetStore store(data);
+  server::ProductSource source;
+  source.photos = photo_folder("swept", 4, 96, 64);
+  const protocol::Snapshot product = server::find_or_make_product(store, source, "kept", {});
+  protocol::Snapshot scene;
+  scene.session = "scene";
+  scene.kind = protocol::SessionKind::Scene;
+  scene.assets.push_back(store.add_bytes({1, 2, 3, 4}, protocol::AssetKind::Mesh, "scene.glb"));
+  store.save_session({.token = "", .editor_token = "", .state = scene});
+  const protocol::AssetAnnounce orphan = store.add_bytes({9, 9, 9, 9, 9}, protocol::AssetKind::Samples, "sample-000.jpg");
+  std::ofstream(data / "assets" / "abcd.partial") << "half a photo";
+  // Younger than the grace period: an add-product may still be running. Nothing goes.
+  EXPECT_EQ(store.sweep_unnamed(std::chrono::hours(1)).assets, 0u);
+  EXPECT_TRUE(store.find(orphan.hash));
+  // Older: the orphan and the partial file go; the product's and the session's assets stay.
+  std::this_thread::sleep_for(std::chrono::milliseconds(1100));  // the catalogue counts whole seconds
+  const server::AssetStore::Swept swept = store.sweep_unnamed(std::chrono::seconds(0));
+  EXPECT_TRUE(swept.skipped.empty()) << swept.skipped;
+  EXPECT_EQ(swept.assets, 1u);
+  EXPECT_EQ(swept.files, 2u);
+  EXPECT_FALSE(store.find(orphan.hash));
+  EXPECT_FALSE(fs::exists(data / "assets" / to_hex(orphan.hash)));
+  EXPECT_FALSE(fs::exists(data / "assets" / "abcd.partial"));
+  for (const auto& a : product.assets) EXPECT_TRUE(store.find(a.hash) && fs::exists(data / "assets" / to_hex(a.hash))) << a.name;
+  EXPECT_NO_THROW(server::product_tween_messages(store, product));
+  EXPECT_TRUE(store.find(scene.assets[0].hash));
 }
