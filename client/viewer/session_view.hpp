@@ -1,21 +1,17 @@
 #pragma once
-// Draws a session's state locally (SPEC N5): the object from the cached mesh asset, in the
-// session's style, from the session's camera and object pose. Objects are centred and scaled to
-// kSceneDiagonal, the scene space in which camera and object poses travel. A conference session
-// shows the speaker's face instead (ConferenceView). Needs a current GL context; draws into
-// whatever framebuffer is bound.
+// Draws a session's state locally (SPEC N5): the content its kind names (session_content.hpp: a
+// scene's object in the session's style from the session's camera and object pose, a
+// conference's faces, a product turned by this visitor's own view) over the style's backdrop.
+// Objects are centred and scaled to kSceneDiagonal, the scene space in which camera and object
+// poses travel. Needs a current GL context; draws into whatever framebuffer is bound.
 #include <filesystem>
-#include <memory>
+#include <map>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
-#include "client/call/call_grid.hpp"
-#include "client/render/backdrop.hpp"
-#include "client/render/renderer.hpp"
-#include "client/render/scene_object.hpp"
-#include "client/render/face/conference_view.hpp"
-#include "client/viewer/turntable_view.hpp"
+#include "client/viewer/session_content.hpp"
 #include "protocol/messages.hpp"
 
 namespace inkwire {
@@ -30,55 +26,45 @@ glm::mat4 model_matrix(const protocol::ObjectPose& pose);
 
 class SessionView {
  public:
-  // Takes the latest state and the cached files of its assets (same order). Loads a new mesh
-  // when the mesh asset changes and remakes the renderer when the style changes. A style this
-  // client cannot make (unknown name, bad setting) is reported by error() and the previous one
-  // is kept, so one bad change never blanks the picture.
-  void update(const protocol::Snapshot& state, const std::vector<std::filesystem::path>& asset_files);
+  // Takes the latest state and the cached files of its assets (same order). Loads new content
+  // when its assets change and remakes the renderer when the style changes. A style this client
+  // cannot make (unknown name, bad setting) is reported by error() and the previous one is kept,
+  // so one bad change never blanks the picture.
+  void update(const protocol::Snapshot& state, const AssetFiles& asset_files);
   void draw(glm::ivec2 viewport, double time_seconds, long frame);
 
   // Why the mesh, the speaker or the style could not be shown; empty when all is well.
-  const std::string& error() const { return content_error_.empty() ? style_error_ : content_error_; }
+  const std::string& error() const { return content_error().empty() ? style_error_ : content_error(); }
   // Why the session's content (mesh, speaker, product) is not shown; empty when it is.
-  const std::string& content_error() const { return content_error_; }
-  uint32_t revision() const { return revision_; }
+  const std::string& content_error() const;
+  uint32_t revision() const { return state_.revision; }
   const std::string& style() const { return style_key_; }
   // The expression shown, in conference sessions.
   std::optional<ExpressionState> expression() const;
   // A conference's painted face: frames painted since its style was set (ConferenceView).
-  int painted_frames() const { return face_ ? face_->painted_frames() : 0; }
+  int painted_frames() const;
 
   // A call (a conference whose members publish themselves): the roster with its members'
   // cached photo and landmarks files, and each member's face as it is due.
-  void update_call(const protocol::Roster& roster, const std::map<uint16_t, std::vector<std::filesystem::path>>& files);
-  void set_member_face(const protocol::MemberFace& face) { call_.set_face(face); }
-  const CallGrid& call() const { return call_; }
+  void update_call(const protocol::Roster& roster, const std::map<uint16_t, AssetFiles>& files);
+  void set_member_face(const protocol::MemberFace& face) { conference().call().set_face(face); }
+  const CallGrid& call() const;
 
-  // A turntable session's product and this visitor's own view of it (null in other sessions).
-  TurntableView* turntable() { return turntable_ ? &*turntable_ : nullptr; }
+  // A turntable session's product (null in other sessions), and this visitor's own view of it
+  // (kept whatever the session shows, so it may be set before the product arrives).
+  TurntableView* turntable();
   TurntableOrbit& orbit() { return orbit_; }
 
  private:
-  // Each returns true when what it draws was replaced.
-  bool update_object(const protocol::Snapshot& state, const std::vector<std::filesystem::path>& asset_files);
-  bool update_face(const protocol::Snapshot& state, const std::vector<std::filesystem::path>& asset_files);
-  bool update_product(const protocol::Snapshot& state);
+  // The conference content, made when a roster comes before the session's state.
+  ConferenceContent& conference();
   void update_style(const protocol::Snapshot& state, bool new_content);
 
-  std::optional<SceneObject> object_;
-  std::filesystem::path mesh_file_;
-  std::optional<ConferenceView> face_;
-  CallGrid call_;
-  std::optional<TurntableView> turntable_;
-  protocol::Product product_;
-  std::vector<protocol::AssetAnnounce> product_assets_;
+  std::variant<std::monostate, SceneContent, ConferenceContent, ProductContent> content_;
   TurntableOrbit orbit_;
-  std::filesystem::path face_files_[2];  // photo, landmarks
-  std::unique_ptr<Renderer> renderer_;
   std::optional<Backdrop> backdrop_;
-  std::string style_key_, content_error_, style_error_;
+  std::string style_key_, style_error_;
   protocol::Snapshot state_;
-  uint32_t revision_ = 0;
 };
 
 }  // namespace inkwire
