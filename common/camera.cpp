@@ -66,4 +66,8 @@ glm::vec3 default_light_direction(const Camera& camera) {
   return glm::normalize(glm::vec3(view_to_world * glm::vec4(-0.4f, 0.6f, 0.7f, 0.0f)));
 }
 
+glm::mat4 pose_matrix(const glm::vec3& translation, const glm::quat& rotation, float scale) {
+  return glm::translate(glm::mat4(1.0f), translation) * glm::mat4_cast(rotation) * glm::scale(glm::mat4(1.0f), glm::vec3(scale));
+}
+
 }  // namespace inkwire

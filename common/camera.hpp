@@ -1,5 +1,6 @@
 #pragma once
 // Cameras: the study's benchmark pose (SPEC G4) and an orbit around an object.
+#include <glm/gtc/quaternion.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
@@ -50,5 +51,9 @@ Camera scene_camera(const glm::vec3& position, const glm::vec3& target, const gl
 // A directional light for a camera: from above-left of the viewer, as a unit vector pointing
 // from the surface toward the light, in world space.
 glm::vec3 default_light_direction(const Camera& camera);
+
+// A session's object pose (translation, rotation, uniform scale) as the model matrix: the one
+// rule for the native client and the browser's module alike.
+glm::mat4 pose_matrix(const glm::vec3& translation, const glm::quat& rotation, float scale);
 
 }  // namespace inkwire

@@ -48,6 +48,22 @@ struct FrameState {
   }
 };
 
+// The frame a session's scene is drawn in: its camera, its object's pose, the camera's default
+// light, the animation time and frame, and the backdrop laid under it. The native client and the
+// browser's module both draw scenes in this frame.
+inline FrameState scene_frame(glm::ivec2 viewport, const Camera& camera, const glm::mat4& model, double time_seconds, long frame,
+                              const Backdrop* backdrop) {
+  FrameState f;
+  f.viewport = viewport;
+  f.camera = camera;
+  f.model = model;
+  f.light_direction = default_light_direction(camera);
+  f.time_seconds = time_seconds;
+  f.frame = frame;
+  f.backdrop = backdrop;
+  return f;
+}
+
 class Renderer {
  public:
   virtual ~Renderer() = default;

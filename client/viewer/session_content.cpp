@@ -1,10 +1,26 @@
 #include "client/viewer/session_content.hpp"
 
+#include <glm/gtc/quaternion.hpp>
+
 #include "client/render/styles.hpp"
-#include "client/viewer/session_view.hpp"
 #include "common/error.hpp"
 
 namespace inkwire {
+
+protocol::CameraPose camera_pose(const Camera& camera, uint32_t sequence) {
+  return {.sequence = sequence, .position = camera.position, .target = camera.target, .up = camera.up, .fov_y_degrees = camera.fov_y_degrees};
+}
+
+Camera camera_from(const protocol::CameraPose& pose) { return scene_camera(pose.position, pose.target, pose.up, pose.fov_y_degrees); }
+
+protocol::CameraPose orbit_pose(float azimuth_degrees, float elevation_degrees, float distance_diagonals, uint32_t sequence) {
+  return camera_pose(scene_orbit_camera(azimuth_degrees, elevation_degrees, distance_diagonals), sequence);
+}
+
+glm::mat4 model_matrix(const protocol::ObjectPose& pose) {
+  return pose_matrix(pose.translation, glm::quat(pose.rotation.w, pose.rotation.x, pose.rotation.y, pose.rotation.z), pose.scale);
+}
+
 namespace {
 
 // The cached file of the first asset of `kind`, or an empty path.
@@ -49,15 +65,7 @@ std::string SceneContent::backdrop(const protocol::StyleChange& style) const { r
 
 void SceneContent::draw(glm::ivec2 viewport, double time_seconds, long frame, const protocol::Snapshot& state, const Backdrop& backdrop) {
   if (!object_ || !renderer_) return;
-  FrameState f;
-  f.viewport = viewport;
-  f.camera = camera_from(state.camera);
-  f.model = model_matrix(state.object);
-  f.light_direction = default_light_direction(f.camera);
-  f.time_seconds = time_seconds;
-  f.frame = frame;
-  f.backdrop = &backdrop;
-  renderer_->draw(f);
+  renderer_->draw(scene_frame(viewport, camera_from(state.camera), model_matrix(state.object), time_seconds, frame, &backdrop));
 }
 
 bool ConferenceContent::update(const protocol::Snapshot& state, const AssetFiles& files) {

@@ -21,6 +21,14 @@
 
 namespace inkwire {
 
+// Camera poses on the wire and cameras for renderers. Near and far planes follow from the
+// distance to the target in a scene of kSceneDiagonal.
+protocol::CameraPose camera_pose(const Camera& camera, uint32_t sequence = 0);
+Camera camera_from(const protocol::CameraPose& pose);
+// A camera orbiting the scene's centre (azimuth about +Y from +Z, distance in scene diagonals).
+protocol::CameraPose orbit_pose(float azimuth_degrees, float elevation_degrees, float distance_diagonals, uint32_t sequence = 0);
+glm::mat4 model_matrix(const protocol::ObjectPose& pose);
+
 using AssetFiles = std::vector<std::filesystem::path>;  // the cached file of each of a state's assets, in order
 
 // A shared scene: the first mesh asset, centred and scaled to kSceneDiagonal, drawn by the

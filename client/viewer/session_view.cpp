@@ -1,31 +1,11 @@
 #include "client/viewer/session_view.hpp"
 
-#include <algorithm>
 #include <cstdio>
-
-#include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/quaternion.hpp>
 
 #include "client/render/styles.hpp"
 #include "common/error.hpp"
 
 namespace inkwire {
-
-protocol::CameraPose camera_pose(const Camera& camera, uint32_t sequence) {
-  return {.sequence = sequence, .position = camera.position, .target = camera.target, .up = camera.up, .fov_y_degrees = camera.fov_y_degrees};
-}
-
-Camera camera_from(const protocol::CameraPose& pose) { return scene_camera(pose.position, pose.target, pose.up, pose.fov_y_degrees); }
-
-protocol::CameraPose orbit_pose(float azimuth_degrees, float elevation_degrees, float distance_diagonals, uint32_t sequence) {
-  return camera_pose(scene_orbit_camera(azimuth_degrees, elevation_degrees, distance_diagonals), sequence);
-}
-
-glm::mat4 model_matrix(const protocol::ObjectPose& pose) {
-  const glm::quat q(pose.rotation.w, pose.rotation.x, pose.rotation.y, pose.rotation.z);
-  return glm::translate(glm::mat4(1.0f), pose.translation) * glm::mat4_cast(q) * glm::scale(glm::mat4(1.0f), glm::vec3(pose.scale));
-}
-
 namespace {
 
 template <class... F>

@@ -16,14 +16,6 @@
 
 namespace inkwire {
 
-// Camera poses on the wire and cameras for renderers. Near and far planes follow from the
-// distance to the target in a scene of kSceneDiagonal.
-protocol::CameraPose camera_pose(const Camera& camera, uint32_t sequence = 0);
-Camera camera_from(const protocol::CameraPose& pose);
-// A camera orbiting the scene's centre (azimuth about +Y from +Z, distance in scene diagonals).
-protocol::CameraPose orbit_pose(float azimuth_degrees, float elevation_degrees, float distance_diagonals, uint32_t sequence = 0);
-glm::mat4 model_matrix(const protocol::ObjectPose& pose);
-
 class SessionView {
  public:
   // Takes the latest state and the cached files of its assets (same order). Loads new content

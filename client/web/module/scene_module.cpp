@@ -11,7 +11,6 @@
 #include <string>
 #include <vector>
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
 
@@ -76,8 +75,7 @@ class SceneView {
     camera_ = scene_camera({px, py, pz}, {tx, ty, tz}, {ux, uy, uz}, fov);
   }
   void set_object_pose(float qx, float qy, float qz, float qw, float tx, float ty, float tz, float scale) {
-    model_ = glm::translate(glm::mat4(1.0f), glm::vec3(tx, ty, tz)) * glm::mat4_cast(glm::quat(qw, qx, qy, qz)) *
-             glm::scale(glm::mat4(1.0f), glm::vec3(scale));
+    model_ = pose_matrix({tx, ty, tz}, glm::quat(qw, qx, qy, qz), scale);
   }
 
   // One frame at `time_seconds` of animation time into the canvas's drawing buffer.
@@ -87,15 +85,7 @@ class SceneView {
       if (!backdrop_) backdrop_.emplace(BackdropSpec::parse("paper"));
       backdrop_->draw();
       if (!object_ || !renderer_) return;
-      FrameState f;
-      f.viewport = size;
-      f.camera = camera_;
-      f.model = model_;
-      f.light_direction = default_light_direction(f.camera);
-      f.time_seconds = time_seconds;
-      f.frame = frame_++;
-      f.backdrop = &*backdrop_;
-      renderer_->draw(f);
+      renderer_->draw(scene_frame(size, camera_, model_, time_seconds, frame_++, &*backdrop_));
     });
   }
   double redraw_hz() const { return redraw_hz_; }
