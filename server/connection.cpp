@@ -122,7 +122,7 @@ asio::awaitable<void> Connection::read_loop() {
       // An address that guessed tokens waits before each join is looked at (this connection
       // reads nothing meanwhile; the others are served as usual).
       if (h.type == MessageType::Join)
-        if (const auto delay = server_.join_delay(address_); delay.count() > 0) {
+        if (const auto delay = server_.admission().join_delay(address_); delay.count() > 0) {
           asio::steady_timer pause(transport_->executor(), delay);
           co_await pause.async_wait(no_throw);
           if (closing_) break;
@@ -214,7 +214,7 @@ void Connection::join(const Join& join) {
   }
   const std::optional<Role> role = session->role_of(join.token);
   if (!role) {
-    server_.join_failed(address_);
+    server_.admission().join_failed(address_);
     log_warn("bad-token", {{"client", id_}, {"peer", peer_}, {"session", join.session}});
     send(ErrorMessage{.code = ErrorCode::BadToken, .reason = "wrong token for session '" + join.session + "'"});
     return;
@@ -223,7 +223,7 @@ void Connection::join(const Join& join) {
     send(ErrorMessage{.code = ErrorCode::NoAsset, .reason = "session '" + join.session + "' cannot be shown: " + session->unavailable()});
     return;
   }
-  if (!join.token.empty()) server_.join_succeeded(address_);
+  if (!join.token.empty()) server_.admission().join_succeeded(address_);
   leave_session();
   session_ = session;
   role_ = *role;

@@ -284,7 +284,7 @@ std::shared_ptr<Session> Server::find_session(const std::string& name) const {
 
 void Server::forget(const Connection* connection) {
   const std::string address = connection->address();  // erasing may end the connection
-  if (connections_.erase(connection)) give_place(address);
+  if (connections_.erase(connection)) admission_.give_place(address);
 }
 
 void Server::adopt(std::unique_ptr<Transport> transport) {
@@ -293,55 +293,11 @@ void Server::adopt(std::unique_ptr<Transport> transport) {
     return;
   }
   auto connection = std::make_shared<Connection>(std::move(transport), *this, next_id_++);
-  const std::string refusal = take_place(connection->address());
+  const std::string refusal = admission_.take_place(connection->address());
   connections_[connection.get()] = connection;
   connection->start();
   // Past a cap the newcomer is told why and let go; everyone already connected carries on.
   if (!refusal.empty()) connection->close_with(protocol::ErrorCode::Refused, refusal);
-}
-
-std::string Server::take_place(const std::string& address) {
-  ++places_;
-  const size_t from_address = ++places_per_address_[address];
-  std::string refusal;
-  if (places_ > config_.max_connections)
-    refusal = "the server is full (" + std::to_string(config_.max_connections) + " connections)";
-  else if (limited(address) && from_address > config_.max_connections_per_address)
-    refusal = "too many connections from " + address + " (" + std::to_string(config_.max_connections_per_address) + ")";
-  if (!refusal.empty()) ++counters_.connections_refused;
-  return refusal;
-}
-
-void Server::give_place(const std::string& address) {
-  --places_;
-  if (--places_per_address_[address] == 0) places_per_address_.erase(address);
-}
-
-bool Server::limited(const std::string& address) const {
-  std::error_code ec;
-  const auto ip = asio::ip::make_address(address, ec);
-  return config_.limit_loopback || ec || !ip.is_loopback();
-}
-
-std::chrono::milliseconds Server::join_delay(const std::string& address) {
-  const auto it = join_failures_.find(address);
-  if (it == join_failures_.end()) return {};
-  // Forgiven after a quiet while; the map never outgrows the addresses that guessed lately.
-  if (std::chrono::steady_clock::now() - it->second.last > std::chrono::minutes(10)) {
-    join_failures_.erase(it);
-    return {};
-  }
-  const int over = it->second.count - config_.join_failures_allowed;  // 0: the first join to slow down
-  if (over < 0) return {};
-  return std::chrono::milliseconds(std::min<int64_t>(int64_t(250) << std::min(over, 10), 8000));
-}
-
-void Server::join_failed(const std::string& address) {
-  ++counters_.joins_refused;
-  if (!limited(address)) return;
-  JoinFailures& f = join_failures_[address];
-  ++f.count;
-  f.last = std::chrono::steady_clock::now();
 }
 
 void Server::stop() {

@@ -11,6 +11,7 @@
 #include <asio.hpp>
 #include <asio/ssl.hpp>
 
+#include "server/admission.hpp"
 #include "server/asset_store.hpp"
 #include "server/config.hpp"
 #include "server/session.hpp"
@@ -30,8 +31,6 @@ struct ServerCounters {
   uint64_t replaced = 0;             // state messages overtaken in a queue before they went out (latest wins)
   uint64_t too_slow = 0;             // clients closed because their queue overflowed
   uint64_t idle_closed = 0;          // clients closed past their deadline: silent, or not taking writes (SPEC D7)
-  uint64_t connections_refused = 0;  // past a connection cap
-  uint64_t joins_refused = 0;        // wrong token
   uint64_t changes_refused = 0;      // changes a member had no authority to make (authority.hpp)
   Call::Counters call;               // calls' crops analysed and their time, voice relayed, drops by reason
 };
@@ -58,21 +57,8 @@ class Server {
   // A client arrived over another transport (a WebSocket upgraded on the HTTP listener).
   // Refused, with the reason, past the connection caps (overall and per address).
   void adopt(std::unique_ptr<Transport> transport);
-  // Every client holds a place while it is served: a connection, or an HTTP request being
-  // read. Past a cap (max_connections, or max_connections_per_address) the place is still taken,
-  // and the reason to refuse the newcomer returned; empty when it may be served. Each place
-  // taken is given back once.
-  std::string take_place(const std::string& address);
-  void give_place(const std::string& address);
-
-  // Wrong tokens from one address slow that address's joins down (SPEC D3): none for the first
-  // few, then doubling up to a cap; a right token clears the count.
-  std::chrono::milliseconds join_delay(const std::string& address);
-  void join_failed(const std::string& address);
-  void join_succeeded(const std::string& address) { join_failures_.erase(address); }
-  // Whether the per-address limits apply to `address`: not to this machine's own (a local
-  // proxy speaks for many people) unless the config says so.
-  bool limited(const std::string& address) const;
+  // Who is taken on: places within the connection caps, joins slowed after wrong tokens.
+  Admission& admission() { return admission_; }
   size_t connection_count() const { return connections_.size(); }
   // Open connections by transport ("tcp", "tls", "websocket") and whether they are in a session.
   std::map<std::pair<std::string, bool>, size_t> connections_by_kind() const;
@@ -112,13 +98,7 @@ class Server {
   std::unique_ptr<CallAnalyst> call_analyst_;
   std::map<std::string, std::shared_ptr<Session>> sessions_;
   std::map<const Connection*, std::shared_ptr<Connection>> connections_;
-  size_t places_ = 0;
-  std::map<std::string, size_t> places_per_address_;
-  struct JoinFailures {
-    int count = 0;
-    std::chrono::steady_clock::time_point last;
-  };
-  std::map<std::string, JoinFailures> join_failures_;
+  Admission admission_{config_};
   std::vector<std::unique_ptr<FaceFeed>> face_feeds_;
   std::unique_ptr<HttpServer> http_;
   std::unique_ptr<Relay> relay_;

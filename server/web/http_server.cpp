@@ -150,17 +150,17 @@ void HttpServer::stop() {
 
 namespace {
 
-// An HTTP request's place among the server's clients (Server::take_place) while it is read and
+// An HTTP request's place among the server's clients (Admission::take_place) while it is read and
 // answered; a WebSocket gives it up to become a connection, which takes its own.
 class Place {
  public:
-  Place(Server& server, std::string address) : server_(server), address_(std::move(address)), refusal_(server.take_place(address_)) {}
+  Place(Server& server, std::string address) : server_(server), address_(std::move(address)), refusal_(server.admission().take_place(address_)) {}
   ~Place() { release(); }
   Place(const Place&) = delete;
   Place& operator=(const Place&) = delete;
   const std::string& refusal() const { return refusal_; }
   void release() {
-    if (std::exchange(held_, false)) server_.give_place(address_);
+    if (std::exchange(held_, false)) server_.admission().give_place(address_);
   }
 
  private:

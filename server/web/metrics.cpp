@@ -80,8 +80,8 @@ std::string metrics_text(Server& server) {
   m.one("inkwire_queue_replaced_total", "counter", "State messages overtaken by a newer one in a client's queue (latest wins).", c.replaced);
   m.one("inkwire_queue_overflow_total", "counter", "Clients closed because they did not read their queue.", c.too_slow);
   m.one("inkwire_deadline_closed_total", "counter", "Clients closed past their deadline: nothing heard, or no write taken, for idle_timeout_seconds.", c.idle_closed);
-  m.one("inkwire_connections_refused_total", "counter", "Connections refused past a connection cap.", c.connections_refused);
-  m.one("inkwire_joins_refused_total", "counter", "Joins refused for a wrong token.", c.joins_refused);
+  m.one("inkwire_connections_refused_total", "counter", "Connections refused past a connection cap.", server.admission().connections_refused());
+  m.one("inkwire_joins_refused_total", "counter", "Joins refused for a wrong token.", server.admission().joins_refused());
   m.one("inkwire_changes_refused_total", "counter", "Changes refused: the member had no authority to make them.", c.changes_refused);
   m.metric("inkwire_call_dropped_total", "counter", "Call messages dropped (too frequent, too large, not JPEG, not Opus, video that does not decode), by reason.");
   for (const auto& [reason, count] : c.call.drops) m.sample("inkwire_call_dropped_total", count, "reason=\"" + metric_label(reason) + "\"");
