@@ -7,6 +7,7 @@
 // product. A helper that crashes or fails costs that one product, with its reason.
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "server/products/product.hpp"
 
@@ -21,7 +22,7 @@ std::filesystem::path mesh_product_helper();
 // to `progress`. Throws inkwire::Error with the helper's own reason when it fails.
 void make_mesh_product_in_helper(const std::filesystem::path& data, const ProductSource& source, const PairProgress& progress);
 
-// The helper's arguments for `source` and back (one place for both ends of the command line).
+// The helper's arguments for `source` (its options: server/apps/inkwire_mesh_product.cpp).
 std::vector<std::string> mesh_product_arguments(const std::filesystem::path& data, const ProductSource& source);
 
 }  // namespace inkwire::server

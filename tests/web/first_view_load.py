@@ -8,7 +8,8 @@ time to its first view (p50, p99), and the CPU seconds the serving processes spe
 /proc), hence visitors per CPU second. The visitors run in this one Python process, apart from
 the processes measured.
 
-  first_view_load.visit_all(kind, port, path, files, visitors, concurrency, pids) -> dict"""
+  visit_all(lambda: static_visit(port, "/truck", [photo_file, matte_file]), visitors, concurrency, pids) -> dict
+  (the WebSocket path: lambda: websocket_visit(port, session, [(sha256, size), ...], protocol_version))"""
 import asyncio
 import os
 import struct
