@@ -45,20 +45,6 @@ void refuse_plain_off_loopback(const ServerConfig& c) {
                   "or \"plain_off_loopback\": true when a TLS proxy stands in front");
 }
 
-// A mesh travels as one file: a model of several files (glTF with .bin and images, OBJ with
-// .mtl), or one whose up axis clients would not find by themselves, is made into one Y-up GLB
-// with everything inside, so every client gets it whole and upright.
-protocol::AssetAnnounce add_session_asset(AssetStore& store, const SessionAsset& asset, UpAxis up) {
-  if (asset.kind == protocol::AssetKind::Mesh)
-    if (const std::optional<SelfContainedModel> whole = self_contained_model(asset.path, up)) {
-      std::vector<std::string> gathered;
-      for (const fs::path& p : whole->gathered) gathered.push_back(p.filename().string());
-      log_info("model-made-whole", {{"path", asset.path}, {"as", whole->name}, {"bytes", whole->bytes.size()}, {"files", gathered}});
-      return store.add_bytes(whole->bytes, asset.kind, whole->name);
-    }
-  return store.add_file(asset.path, asset.kind);
-}
-
 }  // namespace
 
 Server::Server(asio::io_context& io, ServerConfig config) : io_(io), config_(std::move(config)), acceptor_(io), persist_timer_(io) {
@@ -76,6 +62,7 @@ Server::Server(asio::io_context& io, ServerConfig config) : io_(io), config_(std
   if (config_.http) http_ = std::make_unique<HttpServer>(io, *this);
   relay_ = make_relay(*this, config_);  // a broker this build cannot use is refused before the data folder is made
   store_.emplace(config_.data_dir);
+  registry_.emplace(*store_, config_);
   create_sessions();
 }
 
@@ -84,46 +71,9 @@ uint16_t Server::http_port() const { return http_ ? http_->port() : 0; }
 Server::~Server() = default;
 
 void Server::create_sessions() {
-  // Sessions in the catalogue come back as they were; configured ones it lacks are created.
-  // Tokens are the config's to give: a configured session takes the config's tokens even when its
-  // state comes from the catalogue (a changed editor token applies at the next start).
-  for (StoredSession& stored : store_->sessions()) {
-    const std::string name = stored.state.session;
-    for (const SessionConfig& c : config_.sessions)
-      if (c.name == name && (stored.token != hash_token(c.token) || stored.editor_token != hash_token(c.editor_token))) {
-        stored.token = hash_token(c.token);
-        stored.editor_token = hash_token(c.editor_token);
-        store_->save_session(stored);
-      }
-    sessions_[name] = std::make_shared<Session>(std::move(stored));
-  }
-  for (const SessionConfig& c : config_.sessions) {
-    if (sessions_.count(c.name)) continue;
-    StoredSession stored{.token = hash_token(c.token), .editor_token = hash_token(c.editor_token), .state = {}};
-    if (c.product) {
-      try {
-        stored.state = find_or_make_product(*store_, *c.product, c.name, [&](int done, int total, const std::string& line) {
-          log_info("product-pair", {{"session", c.name}, {"done", done}, {"total", total}, {"pair", line}});
-        });
-      } catch (const Error& e) {
-        log(LogLevel::Error, "product-failed", {{"session", c.name}, {"source", c.product->describe()}, {"reason", e.what()}});
-        continue;
-      }
-    }
-    stored.state.session = c.name;
-    stored.state.kind = c.kind;
-    stored.state.style = {.renderer = c.style, .settings = c.settings};
-    const Camera camera = scene_orbit_camera(30, 20, 1.4f);
-    stored.state.camera = {.sequence = 0, .position = camera.position, .target = camera.target, .up = camera.up, .fov_y_degrees = camera.fov_y_degrees};
-    for (const SessionAsset& a : c.assets) stored.state.assets.push_back(add_session_asset(*store_, a, c.up));
-    store_->save_session(stored);
-    log_info("session-created", {{"session", c.name}, {"kind", protocol::to_string(c.kind)}, {"assets", stored.state.assets.size()}});
-    sessions_[c.name] = std::make_shared<Session>(std::move(stored));
-  }
-  sweep_unnamed_assets();
-  for (auto& [name, session] : sessions_) ready_product(*session);
-  // Every conference session is a call its members may publish in; their pictures are analysed
-  // on one thread, whose results come back to this I/O thread.
+  registry_->load();
+  // Every conference session is a call its members may publish in (those added later too); their
+  // pictures are analysed on one thread, whose results come back to this I/O thread.
   call_analyst_ = std::make_unique<CallAnalyst>([this](CallAnalyst::Result result) {
     asio::post(io_, [this, result = std::move(result)] {
       std::visit([&](const auto& r) {
@@ -131,55 +81,15 @@ void Server::create_sessions() {
       }, result);
     });
   });
-  for (auto& [name, session] : sessions_)
-    if (session->state().kind == protocol::SessionKind::Conference) session->start_call(config_.call, *call_analyst_, counters_.call, *relay_, config_.name);
+  registry_->on_added = [this](Session& session) { start_call(session); };
+  for (auto& [name, session] : registry_->all()) start_call(*session);
 }
 
-// A product is checked (every file against its hash) and its tween data readied once.
-void Server::ready_product(Session& session) {
-  if (session.state().kind != protocol::SessionKind::Turntable || session.state().product.directions.empty()) return;
-  try {
-    session.set_product(product_tween_messages(*store_, session.state()));
-    log_info("product-loaded", {{"session", session.name()}, {"samples", session.state().product.directions.size()},
-                                {"cells", session.state().product.cells}});
-  } catch (const Error& e) {
-    session.set_unavailable(e.what());
-    log(LogLevel::Error, "product-unavailable", {{"session", session.name()}, {"reason", e.what()}});
-  }
+void Server::start_call(Session& session) {
+  if (session.state().kind == protocol::SessionKind::Conference) session.start_call(config_.call, *call_analyst_, counters_.call, *relay_, config_.name);
 }
 
-std::shared_ptr<Session> Server::add_session(StoredSession stored) {
-  const std::string name = stored.state.session;
-  if (sessions_.count(name)) return nullptr;
-  try {
-    store_->save_session(stored);
-  } catch (const Error& e) {
-    log(LogLevel::Error, "session-not-added", {{"session", name}, {"reason", e.what()}});
-    return nullptr;
-  }
-  auto session = std::make_shared<Session>(std::move(stored));
-  ready_product(*session);
-  if (session->state().kind == protocol::SessionKind::Conference) session->start_call(config_.call, *call_analyst_, counters_.call, *relay_, config_.name);
-  sessions_[name] = session;
-  log_info("session-added", {{"session", name}, {"kind", protocol::to_string(session->state().kind)}, {"assets", session->state().assets.size()}});
-  return session;
-}
-
-void Server::sweep_unnamed_assets() {
-  const AssetStore::Swept swept = store_->sweep_unnamed(std::chrono::seconds(int64_t(config_.asset_sweep_grace_seconds)));
-  if (!swept.skipped.empty()) log_warn("asset-sweep-skipped", {{"reason", swept.skipped}});
-  else log_info("assets-swept", {{"assets", swept.assets}, {"files", swept.files}, {"bytes", swept.bytes},
-                                 {"grace_seconds", config_.asset_sweep_grace_seconds}});
-}
-
-// A product added while the server runs (`inkwire-server add-product` is a process of its own,
-// writing the same catalogue): served from the next tick of the persist loop, under its name.
-// A name the server already serves keeps its session until a restart.
-void Server::adopt_sessions_stored_elsewhere() {
-  if (!store_->changed_elsewhere()) return;
-  for (StoredSession& stored : store_->sessions())
-    if (!sessions_.count(stored.state.session)) add_session(std::move(stored));
-}
+std::shared_ptr<Session> Server::find_session(const std::string& name) const { return registry_->find(name); }
 
 void Server::deliver(Session& session, const protocol::Message& change, uint64_t sender, std::optional<uint32_t> revision) {
   if (!session.apply(change, sender)) return;
@@ -230,7 +140,7 @@ std::map<std::pair<std::string, bool>, size_t> Server::connections_by_kind() con
 
 void Server::start() {
   start_face_feeds();
-  log_info("listening", {{"host", config_.host}, {"port", port()}, {"data", config_.data_dir.string()}, {"sessions", sessions_.size()}});
+  log_info("listening", {{"host", config_.host}, {"port", port()}, {"data", config_.data_dir.string()}, {"sessions", registry_->all().size()}});
   const auto handshake = std::chrono::milliseconds(int64_t(config_.hello_timeout_seconds * 1000));
   asio::co_spawn(io_, accept_connections(acceptor_, stopping_, "accept-failed", [this, handshake](asio::ip::tcp::socket socket) {
                    secure_then(std::move(socket), tls_, handshake, [this](ByteStream stream) { adopt(std::make_unique<TcpTransport>(std::move(stream))); });
@@ -246,7 +156,7 @@ asio::awaitable<void> Server::call_loop() {
   while (!stopping_) {
     timer.expires_after(std::chrono::milliseconds(200));
     co_await timer.async_wait(no_throw);
-    for (auto& [name, session] : sessions_)
+    for (auto& [name, session] : registry_->all())
       if (Call* call = session->call()) call->tick();
   }
 }
@@ -255,9 +165,9 @@ asio::awaitable<void> Server::persist_loop() {
   while (!stopping_) {
     persist_timer_.expires_after(std::chrono::milliseconds(int64_t(config_.persist_seconds * 1000)));
     co_await persist_timer_.async_wait(no_throw);
-    for (auto& [name, session] : sessions_)
-      if (session->dirty) persist(*session);
-    adopt_sessions_stored_elsewhere();
+    for (auto& [name, session] : registry_->all())
+      if (session->dirty) registry_->persist(*session);
+    registry_->adopt_stored_elsewhere();
     // After a burst of connections (an attack, a crowd leaving) glibc keeps the freed memory in
     // its arenas: hand it back, so the server's size follows what it serves (SPEC D6).
     if (connections_.size() < peak_connections_ / 2) {
@@ -268,19 +178,6 @@ asio::awaitable<void> Server::persist_loop() {
   }
 }
 
-void Server::persist(Session& session) {
-  try {
-    store_->save_session(session.stored());
-    session.dirty = false;
-  } catch (const Error& e) {
-    log(LogLevel::Error, "persist-failed", {{"session", session.name()}, {"reason", e.what()}});
-  }
-}
-
-std::shared_ptr<Session> Server::find_session(const std::string& name) const {
-  const auto it = sessions_.find(name);
-  return it == sessions_.end() ? nullptr : it->second;
-}
 
 void Server::forget(const Connection* connection) {
   const std::string address = connection->address();  // erasing may end the connection
@@ -310,7 +207,7 @@ void Server::stop() {
   persist_timer_.cancel();
   relay_->stop();
   face_feeds_.clear();  // joins their threads; codes they posted are applied or dropped with the context
-  for (auto& [name, session] : sessions_) persist(*session);
+  for (auto& [name, session] : registry_->all()) registry_->persist(*session);
   // Copy: closing connections forget themselves.
   auto open = connections_;
   for (auto& [raw, connection] : open) connection->close_with(protocol::ErrorCode::ShuttingDown, "server shutting down");

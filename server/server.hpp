@@ -1,6 +1,7 @@
 #pragma once
-// The Inkwire server (SPEC N1-N4): accepts clients on one Asio I/O thread, keeps sessions and
-// their state, serves assets from the store, persists session state, shuts down gracefully.
+// The Inkwire server (SPEC N1-N4): accepts clients on one Asio I/O thread, serves its sessions
+// (SessionRegistry) and assets from the store, persists session state on a timer, shuts down
+// gracefully.
 #include <chrono>
 #include <map>
 #include <memory>
@@ -15,6 +16,7 @@
 #include "server/asset_store.hpp"
 #include "server/config.hpp"
 #include "server/session.hpp"
+#include "server/session_registry.hpp"
 
 namespace inkwire::server {
 
@@ -63,8 +65,8 @@ class Server {
   // Open connections by transport ("tcp", "tls", "websocket") and whether they are in a session.
   std::map<std::pair<std::string, bool>, size_t> connections_by_kind() const;
   ServerCounters& counters() { return counters_; }
-  const std::map<std::string, std::shared_ptr<Session>>& sessions() const { return sessions_; }
-  void persist(Session& session);
+  const std::map<std::string, std::shared_ptr<Session>>& sessions() const { return registry_->all(); }
+  void persist(Session& session) { registry_->persist(session); }
   bool stopping() const { return stopping_; }
   asio::io_context& io() { return io_; }
   std::shared_ptr<asio::ssl::context> tls() const { return tls_; }  // null: plain TCP
@@ -75,16 +77,13 @@ class Server {
   void deliver(Session& session, const protocol::Message& change, uint64_t sender, std::optional<uint32_t> revision = {});
   // A session defined elsewhere (another instance): stored in the catalogue and served. Null if
   // a session of that name exists or it cannot be stored.
-  std::shared_ptr<Session> add_session(StoredSession stored);
+  std::shared_ptr<Session> add_session(StoredSession stored) { return registry_->add(std::move(stored)); }
 
  private:
   void create_sessions();
-  void ready_product(Session& session);
+  void start_call(Session& session);  // a conference session's call
   void start_face_feeds();
   asio::awaitable<void> persist_loop();
-  void adopt_sessions_stored_elsewhere();
-  // On start: what a killed add-product left (AssetStore::sweep_unnamed), counted in the log.
-  void sweep_unnamed_assets();
   asio::awaitable<void> call_loop();  // calls' speakers fall silent on time
 
   asio::io_context& io_;
@@ -96,7 +95,7 @@ class Server {
   // The calls' face analysis, on a thread of its own: declared before the sessions, whose calls
   // tell it of members leaving until the last of them is gone.
   std::unique_ptr<CallAnalyst> call_analyst_;
-  std::map<std::string, std::shared_ptr<Session>> sessions_;
+  std::optional<SessionRegistry> registry_;  // made with the store
   std::map<const Connection*, std::shared_ptr<Connection>> connections_;
   Admission admission_{config_};
   std::vector<std::unique_ptr<FaceFeed>> face_feeds_;

@@ -1,0 +1,43 @@
+#pragma once
+// The sessions this instance serves, by name, and what keeps them in the catalogue: those the
+// catalogue holds come back as they were, configured ones it lacks are made (a product's photos
+// or mesh included), others are added later (from another instance, or stored by another process
+// such as add-product), and changed state is written back. Each product is checked and readied
+// once; assets nothing names are swept at load. Touched on the I/O thread only.
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "server/asset_store.hpp"
+#include "server/config.hpp"
+#include "server/session.hpp"
+
+namespace inkwire::server {
+
+class SessionRegistry {
+ public:
+  SessionRegistry(AssetStore& store, const ServerConfig& config) : store_(store), config_(config) {}
+
+  void load();
+  std::shared_ptr<Session> find(const std::string& name) const;
+  const std::map<std::string, std::shared_ptr<Session>>& all() const { return sessions_; }
+  // A session defined elsewhere (another instance, another process): stored and served. Null if
+  // a session of that name exists or it cannot be stored.
+  std::shared_ptr<Session> add(StoredSession stored);
+  // What another process stored since the last look (add-product while the server runs), added.
+  void adopt_stored_elsewhere();
+  void persist(Session& session);
+  // Called for each session added after load() (the server starts a conference's call).
+  std::function<void(Session&)> on_added;
+
+ private:
+  void ready_product(Session& session);
+  void sweep_unnamed_assets();
+
+  AssetStore& store_;
+  const ServerConfig& config_;
+  std::map<std::string, std::shared_ptr<Session>> sessions_;
+};
+
+}  // namespace inkwire::server
