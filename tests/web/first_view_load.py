@@ -51,15 +51,17 @@ async def http_get(reader, writer, host, path):
 
 
 async def static_visit(port, path, files):
-    """The manifest and the files of a first view over HTTP/1.1, reconnecting where the host closes."""
+    """The manifest and the files of a first view over HTTP/1.1, reconnecting where the host closes:
+    (bytes received, requests)."""
     host = f"127.0.0.1:{port}"
     reader = writer = None
-    received = 0
+    received = requests = 0
     try:
         for name in ["product.json"] + files:
             if writer is None:
                 reader, writer = await asyncio.open_connection("127.0.0.1", port)
             status, body, kept = await http_get(reader, writer, host, f"{path}/{name}")
+            requests += 1
             if status != 200:
                 raise RuntimeError(f"{path}/{name} answered {status}")
             received += len(body)
@@ -69,7 +71,7 @@ async def static_visit(port, path, files):
     finally:
         if writer:
             writer.close()
-    return received
+    return received, requests
 
 
 def message(kind, payload):
@@ -82,9 +84,10 @@ def text(s):
 
 
 async def websocket_visit(port, session, assets, protocol_version):
-    """hello, join, the snapshot, then each asset (hash hex, size) in chunks, as the element did."""
+    """hello, join, the snapshot, then each asset (hash hex, size) in chunks, as the element did:
+    (bytes received, messages sent)."""
     import websockets
-    received = 0
+    received, requests = 0, 2  # hello and join, then each asset request
     async with websockets.connect(f"ws://127.0.0.1:{port}/ws", ping_interval=None, max_size=2**20,
                                   origin=f"http://127.0.0.1:{port}") as ws:
         await ws.send(message(HELLO, struct.pack("<IH", MAGIC, protocol_version) + text("load")))
@@ -103,42 +106,45 @@ async def websocket_visit(port, session, assets, protocol_version):
                 for h, size in wanted.items():
                     for offset in range(0, size, CHUNK):
                         await ws.send(message(ASSET_REQUEST, h + struct.pack("<QI", offset, min(CHUNK, size - offset))))
+                        requests += 1
             elif kind == ASSET_CHUNK:
                 h = frame[6:38]
                 (length,) = struct.unpack_from("<I", frame, 46)
                 have[h] = have.get(h, 0) + length
-    return received
+    return received, requests
 
 
 async def visit_all_async(visit, visitors, concurrency):
-    times, failures, received = [], [], 0
+    times, failures, received, requests = [], [], 0, 0
     queue = iter(range(visitors))
 
     async def worker():
-        nonlocal received
+        nonlocal received, requests
         for _ in queue:
             start = time.perf_counter()
             try:
-                got = await visit()  # (not `received += await ...`: that reads `received` before the wait)
+                got, asked = await visit()  # (not `received += await ...`: that reads `received` before the wait)
                 received += got
+                requests += asked
                 times.append(time.perf_counter() - start)
             except Exception as error:  # a refused or broken visit counts as a failure, not a time
                 failures.append(str(error))
 
     start = time.perf_counter()
     await asyncio.gather(*(worker() for _ in range(concurrency)))
-    return time.perf_counter() - start, times, failures, received
+    return time.perf_counter() - start, times, failures, received, requests
 
 
 def visit_all(visit, visitors, concurrency, pids):
-    """Runs `visitors` first views (`visit`, an async function returning bytes received),
+    """Runs `visitors` first views (`visit`, an async function returning the bytes it received and
+    the requests it made),
     `concurrency` at once, measuring the processes `pids`."""
     cpu_before = cpu_seconds(pids)
-    wall, times, failures, received = asyncio.run(visit_all_async(visit, visitors, concurrency))
+    wall, times, failures, received, requests = asyncio.run(visit_all_async(visit, visitors, concurrency))
     cpu = cpu_seconds(pids) - cpu_before
     times.sort()
     pick = lambda p: 1000 * times[min(len(times) - 1, int(p * len(times)))] if times else None
     return {"visitors": visitors, "failed": len(failures), "visitors_per_second": len(times) / wall,
-            "ms_first_view_p50": pick(0.5), "ms_first_view_p99": pick(0.99), "cpu_seconds": cpu,
+            "requests_per_second": requests / wall, "p50_ms": pick(0.5), "p99_ms": pick(0.99), "cpu_seconds": cpu,
             "cpu_ms_per_visitor": 1000 * cpu / max(1, len(times)), "visitors_per_cpu_second": len(times) / cpu if cpu > 0 else None,
             "bytes_per_visitor": received / max(1, len(times)), "first_failure": failures[0] if failures else ""}

@@ -185,7 +185,7 @@ try:
     rows.append({"variant": "static,size=512", "counters": {"fps": fps, "bytes_first_view": first_bytes, "bytes_first_view_wire": first_wire,
                                                              "ms_first_view": first_ms, "bytes_total": total,
                                                              "bytes_repeat_visit": repeat_wire, "ms_first_view_repeat": repeat_ms,
-                                                             "websockets": sockets}})
+                                                             "websockets_opened": sockets}})
     print(f"web: static on nginx: {fps:.1f} fps while dragging, first view {first_bytes} bytes ({first_wire} on the wire: {first_files}) "
           f"in {first_ms:.0f} ms, {total} bytes in all, "
           f"a repeat visit {repeat_wire} bytes on the wire ({repeat_ms:.0f} ms to its first view), {sockets} WebSockets", file=sys.stderr)
@@ -274,17 +274,17 @@ try:
     manifest = json.load(open(os.path.join(www, "truck", "product.json")))
     first = [manifest["photos"][0], manifest["mattes"][0]]
     nginx_pids = [nginx.process.pid] + [int(p) for p in open(f"/proc/{nginx.process.pid}/task/{nginx.process.pid}/children").read().split()]
-    visits = {
+    visits = {  # via: CONTRACTS.md's names; inkwire-server is the WebSocket path the ratio is against
         "nginx": (lambda: static_visit(nginx.port, "/truck", [f["file"] for f in first]), nginx_pids),
-        "inkwire-server-http": (lambda: static_visit(server.http, "/products/truck", [f["file"] for f in first]), [server.process.pid]),
-        "inkwire-server-websocket": (lambda: websocket_visit(server.http, "truck", [(f["sha256"], f["size"]) for f in first], PROTOCOL_VERSION),
-                                     [server.process.pid]),
+        "inkwire-server": (lambda: websocket_visit(server.http, "truck", [(f["sha256"], f["size"]) for f in first], PROTOCOL_VERSION),
+                           [server.process.pid]),
+        "inkwire-server-products": (lambda: static_visit(server.http, "/products/truck", [f["file"] for f in first]), [server.process.pid]),
     }
     for host, (visit, pids) in visits.items():
         load = visit_all(visit, 1000, 32, pids)
-        rows.append({"variant": f"load,host={host}", "counters": {k: v for k, v in load.items() if isinstance(v, (int, float)) and v is not None}})
-        print(f"web: 1000 first views from {host}: {load['visitors_per_second']:.0f} a second, p50 {load['ms_first_view_p50']:.1f} ms, "
-              f"p99 {load['ms_first_view_p99']:.1f} ms, {load['cpu_ms_per_visitor']:.2f} CPU ms a visitor "
+        rows.append({"variant": f"load,via={host}", "counters": {k: v for k, v in load.items() if isinstance(v, (int, float)) and v is not None}})
+        print(f"web: 1000 first views via {host}: {load['visitors_per_second']:.0f} a second ({load['requests_per_second']:.0f} requests), "
+              f"p50 {load['p50_ms']:.1f} ms, p99 {load['p99_ms']:.1f} ms, {load['cpu_ms_per_visitor']:.2f} CPU ms a visitor "
               f"({load['bytes_per_visitor']:.0f} bytes), {load['failed']} failed {load['first_failure']}", file=sys.stderr)
 finally:
     if driver:
