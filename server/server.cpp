@@ -4,15 +4,12 @@
 
 #include <asio/experimental/as_tuple.hpp>
 
-#include "common/camera.hpp"
 #include "common/error.hpp"
 #include "common/face/landmarks_file.hpp"
 #include "common/log.hpp"
-#include "common/model_bundle.hpp"
 #include "server/call/call_analyst.hpp"
 #include "server/connection.hpp"
 #include "server/face/face_feed.hpp"
-#include "server/products/product_store.hpp"
 #include "server/relay/relay.hpp"
 #include "server/transport.hpp"
 #include "server/web/http_server.hpp"
