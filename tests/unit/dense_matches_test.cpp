@@ -150,8 +150,11 @@ TEST(ExposureTest, APhotoWhoseBackdropJumpsIsEvenedAndSlowDriftIsKept) {
   EXPECT_TRUE(camera.unmeasured.empty());
   EXPECT_NEAR(camera.gains[3].g, 1.0 / 1.2, 0.02);
   EXPECT_NEAR(camera.gains[3].b, 1.0 / 1.3, 0.02);
-  for (int i = 0; i < n; ++i)
-    if (i != 3) EXPECT_NEAR(camera.gains[size_t(i)].g, 1.0, 0.01) << "photo " << i << " keeps its light";
+  for (int i = 0; i < n; ++i) {
+    if (i != 3) {
+      EXPECT_NEAR(camera.gains[size_t(i)].g, 1.0, 0.01) << "photo " << i << " keeps its light";
+    }
+  }
 }
 
 TEST(ExposureTest, ABackdropWhiteToTheClipEvensNothingAndSaysWhy) {
