@@ -5,7 +5,6 @@
 #include "common/error.hpp"
 #include "server/products/product_listing.hpp"
 #include "server/products/product_store.hpp"
-#include "server/web/gzip.hpp"
 #include "server/web/web_files.hpp"
 
 namespace inkwire::server {
@@ -55,7 +54,7 @@ ExportSummary export_product(const AssetStore& store, const protocol::Snapshot& 
   // The manifest last: until it is renamed into place, visitors read the previous one. Beside it
   // the same gzipped, which a static host sends as it is to browsers that take gzip (nginx's
   // gzip_static, deploy/nginx/): compressing it per visit was most of nginx's time per visitor.
-  write_file(dir / "product.json.gz", server::gzipped(listing.manifest), summary);
+  write_file(dir / "product.json.gz", listing.manifest_gzipped, summary);
   write_file(dir / "product.json", listing.manifest, summary);
   summary.first_view_bytes = listing.first_view_bytes;
   return summary;

@@ -6,6 +6,7 @@
 
 #include "common/content_hash.hpp"
 #include "common/error.hpp"
+#include "server/web/gzip.hpp"
 
 namespace inkwire::server {
 namespace {
@@ -57,6 +58,8 @@ ProductListing product_listing(const protocol::Snapshot& state, const std::vecto
     manifest["cells"].push_back(entry);
   }
   listing.manifest = manifest.dump() + "\n";  // one line: the first view waits for it
+  listing.manifest_gzipped = gzipped(listing.manifest);
+  listing.etag = "\"" + to_hex(content_hash(listing.manifest.data(), listing.manifest.size())).substr(0, 32) + "\"";
   listing.first_view_bytes = listing.manifest.size() + manifest["photos"][0]["size"].get<uint64_t>() +
                              (manifest["mattes"].empty() ? 0 : manifest["mattes"][0]["size"].get<uint64_t>());
   return listing;

@@ -24,6 +24,8 @@ struct ProductFile {
 
 struct ProductListing {
   std::string manifest;                        // product.json's text
+  std::string manifest_gzipped;                // the same gzipped once (product.json.gz, the HTTP reply)
+  std::string etag;                            // the manifest's quoted entity tag, from its hash
   std::map<std::string, ProductFile> files;    // by their name in the manifest
   uint64_t first_view_bytes = 0;               // the manifest, one photo and its matte
 };

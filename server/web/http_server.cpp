@@ -13,13 +13,11 @@
 
 #include <asio/experimental/as_tuple.hpp>
 
-#include "common/content_hash.hpp"
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "server/relay/relay.hpp"
 #include "server/server.hpp"
 #include "server/products/product_listing.hpp"
-#include "server/web/gzip.hpp"
 #include "server/web/http_request.hpp"
 #include "server/web/metrics.hpp"
 #include "server/web/web_files.hpp"
@@ -364,18 +362,12 @@ std::string HttpServer::product_reply(const Request& request, const std::string&
   if (file == "product.json") {
     if (!session->role_of(query_value(request.path, "token")))
       return response(403, "Forbidden", "text/plain", "product " + session->name() + " needs its token (?token=)\n", kAnyOrigin);
-    const ContentHash tag_hash = content_hash(listing->manifest.data(), listing->manifest.size());
-    const std::string tag = "\"" + to_hex(tag_hash).substr(0, 32) + "\"";
+    const std::string& tag = listing->etag;
     if (request.header("if-none-match") == tag)
       return "HTTP/1.1 304 Not Modified\r\nETag: " + tag + "\r\nCache-Control: no-cache\r\nConnection: close\r\n" + kAnyOrigin + "\r\n";
     if (request.header("accept-encoding").find("gzip") == std::string::npos)
       return served("application/json", "no-cache", listing->manifest, "ETag: " + tag + "\r\n");
-    auto& [gzipped_from, gzipped_text] = gzipped_manifests_[session->name()];
-    if (gzipped_from != listing) {
-      gzipped_text = gzipped(listing->manifest);
-      gzipped_from = listing;
-    }
-    return served("application/json", "no-cache", gzipped_text, "ETag: " + tag + "\r\nContent-Encoding: gzip\r\nVary: Accept-Encoding\r\n");
+    return served("application/json", "no-cache", listing->manifest_gzipped, "ETag: " + tag + "\r\nContent-Encoding: gzip\r\nVary: Accept-Encoding\r\n");
   }
   const auto found = listing->files.find(file);
   if (found == listing->files.end()) return response(404, "Not Found", "text/plain", "product " + session->name() + " has no file " + file + "\n", kAnyOrigin);

@@ -6,7 +6,6 @@
 // arrive whole within the head timeout and 8 KiB, so a slow or endless client is cut off while
 // everyone else is served. WebSockets are refused (403) to pages of origins not allowed: by
 // default the server's own pages only.
-#include <map>
 #include <memory>
 #include <string>
 
@@ -17,7 +16,6 @@
 namespace inkwire::server {
 
 class Server;
-struct ProductListing;
 struct Request;
 
 class HttpServer {
@@ -37,8 +35,6 @@ class HttpServer {
   Server& server_;
   asio::ip::tcp::acceptor acceptor_;
   bool stopping_ = false;
-  // Each product's manifest gzipped once, beside the listing it was made from.
-  std::map<std::string, std::pair<std::shared_ptr<const ProductListing>, std::string>> gzipped_manifests_;
 };
 
 // Whether a page of `origin` may open a WebSocket to a server reached as `host` (the Host

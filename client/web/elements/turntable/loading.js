@@ -37,16 +37,12 @@ export const LoadingMixin = (Base) => class extends Base {
     this.product.addEventListener('error', (e) => this.fail(e.detail));
     this.goLive();
     const product = this.product;
-    const pendingCells = [];
-    product.addEventListener('tween-data', (e) => {
-      if (this.view) this.addCell(e.detail);
-      else pendingCells.push(e.detail);
-    });
+    // Cells are fetched only after the first photo (startCells), when the view is there.
+    product.addEventListener('tween-data', (e) => this.addCell(e.detail));
     product.addEventListener('snapshot', async (e) => {
       try {
         this.snapshot = e.detail;
         this.view = new TweenView(this.webgl(), this.snapshot.product, await loadTweenShaders());
-        for (const cell of pendingCells.splice(0)) this.addCell(cell);
         await this.download(product);
       } catch (error) {
         if (this.product === product) this.fail(error.message);
