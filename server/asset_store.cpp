@@ -318,6 +318,30 @@ std::optional<protocol::Snapshot> AssetStore::find_product(const std::string& ke
   }
 }
 
+bool AssetStore::remove_product(const std::string& name) {
+  Statement kind(db_, "SELECT kind FROM sessions WHERE name = ?");
+  kind.bind(1, name);
+  if (!kind.step() || kind.text(0) != protocol::to_string(protocol::SessionKind::Turntable)) return false;
+  std::vector<std::string> made;
+  for (Statement q(db_, "SELECT key, state FROM products"); q.step();) {
+    try {
+      if (decode_state(q.blob(1)).session == name) made.push_back(q.text(0));
+    } catch (const Error&) {
+      // a record from an older version: not this product's to remove
+    }
+  }
+  exec("BEGIN IMMEDIATE");
+  try {
+    Statement(db_, "DELETE FROM sessions WHERE name = ?").bind(1, name).step();
+    for (const std::string& key : made) Statement(db_, "DELETE FROM products WHERE key = ?").bind(1, key).step();
+    exec("COMMIT");
+  } catch (...) {
+    exec("ROLLBACK");
+    throw;
+  }
+  return true;
+}
+
 void AssetStore::save_session(const StoredSession& session) {
   Statement(db_, "INSERT OR REPLACE INTO sessions (name, kind, token, editor_token, state, updated) VALUES (?, ?, ?, ?, ?, CURRENT_TIMESTAMP)")
       .bind(1, session.state.session).bind(2, protocol::to_string(session.state.kind)).bind(3, session.token)

@@ -53,6 +53,10 @@ class AssetStore {
   // Products by key (product_store.hpp): the state of a session that shows the product.
   void save_product(const std::string& key, const protocol::Snapshot& state);
   std::optional<protocol::Snapshot> find_product(const std::string& key) const;
+  // Takes product session `name` out of the catalogue, with the made-product records stored
+  // under that name, so its assets are named no more (swept after the grace period at a start)
+  // and a running server drops it. False when the catalogue has no product of that name.
+  bool remove_product(const std::string& name);
 
   // Assets no session and no product names, stored more than `grace` ago: what an add-product
   // killed half-way leaves (its files are written before the product that names them). Their

@@ -79,6 +79,7 @@ void Server::create_sessions() {
     });
   });
   registry_->on_added = [this](Session& session) { start_call(session); };
+  registry_->on_removed = [](Session& session) { session.close_members(protocol::ErrorCode::NoSession, "product " + session.name() + " was removed"); };
   for (auto& [name, session] : registry_->all()) start_call(*session);
 }
 

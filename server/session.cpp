@@ -40,6 +40,12 @@ void Session::leave(const Connection* member) {
   });
 }
 
+void Session::close_members(protocol::ErrorCode code, const std::string& reason) {
+  const auto members = members_;  // closing a member leaves the session
+  for (const auto& weak : members)
+    if (const auto member = weak.lock()) member->close_with(code, reason);
+}
+
 bool Session::apply(const protocol::Message& change, uint64_t sender) {
   if (!protocol::apply_state_change(stored_.state, change)) return false;
   dirty = true;

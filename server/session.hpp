@@ -31,6 +31,8 @@ class Session {
 
   void join(const std::shared_ptr<Connection>& member);
   void leave(const Connection* member);
+  // Ends every member's connection with `code` and `reason` (the session is no longer served).
+  void close_members(protocol::ErrorCode code, const std::string& reason);
   size_t members() const { return members_.size(); }
 
   // Applies a state message (style, camera, object, expression) from the member with

@@ -1,5 +1,7 @@
 #include "server/session_registry.hpp"
 
+#include <set>
+
 #include "common/camera.hpp"
 #include "common/error.hpp"
 #include "common/log.hpp"
@@ -108,11 +110,25 @@ void SessionRegistry::sweep_unnamed_assets() {
 
 // A product added while the server runs (`inkwire-server add-product` is a process of its own,
 // writing the same catalogue): served from the next tick of the persist loop, under its name.
-// A name the server already serves keeps its session until a restart.
+// A name the server already serves keeps its session until a restart. A product removed
+// (`remove-product`) is no longer served from the same tick; other kinds of session stay.
 void SessionRegistry::adopt_stored_elsewhere() {
   if (!store_.changed_elsewhere()) return;
-  for (StoredSession& stored : store_.sessions())
+  std::set<std::string> stored_names;
+  for (StoredSession& stored : store_.sessions()) {
+    stored_names.insert(stored.state.session);
     if (!sessions_.count(stored.state.session)) add(std::move(stored));
+  }
+  for (auto it = sessions_.begin(); it != sessions_.end();) {
+    if (it->second->state().kind != protocol::SessionKind::Turntable || stored_names.count(it->first)) {
+      ++it;
+      continue;
+    }
+    const std::shared_ptr<Session> removed = it->second;
+    it = sessions_.erase(it);
+    log_info("product-removed", {{"session", removed->name()}, {"members", removed->members()}});
+    if (on_removed) on_removed(*removed);
+  }
 }
 
 void SessionRegistry::persist(Session& session) {

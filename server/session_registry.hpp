@@ -25,11 +25,15 @@ class SessionRegistry {
   // A session defined elsewhere (another instance, another process): stored and served. Null if
   // a session of that name exists or it cannot be stored.
   std::shared_ptr<Session> add(StoredSession stored);
-  // What another process stored since the last look (add-product while the server runs), added.
+  // What another process changed since the last look: products stored (add-product while the
+  // server runs) are added, products taken out (remove-product) are dropped.
   void adopt_stored_elsewhere();
   void persist(Session& session);
   // Called for each session added after load() (the server starts a conference's call).
   std::function<void(Session&)> on_added;
+  // Called for each session dropped while the server runs, after it left the registry (the
+  // server ends its members' connections).
+  std::function<void(Session&)> on_removed;
 
  private:
   void ready_product(Session& session);

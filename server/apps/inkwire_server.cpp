@@ -165,10 +165,26 @@ int main(int argc, char** argv) {
   exporting->add_option("name", product_name, "the product's session name")->required();
   exporting->add_option("dir", export_dir, "the folder to write (an earlier export there is updated: only what changed is added)")->required();
   exporting->add_option("--data", product_data, "data folder (default ./inkwire-data)");
+  CLI::App* removing = app.add_subcommand("remove-product", "take product NAME out of the data folder: a running server stops serving it within "
+                                                             "seconds (its visitors are told), its files are swept at a later start");
+  removing->add_option("name", product_name, "the product's session name")->required();
+  removing->add_option("--data", product_data, "data folder (default ./inkwire-data)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
+  }
+  if (removing->parsed()) {
+    try {
+      server::AssetStore store(product_data.empty() ? "inkwire-data" : product_data);
+      if (!store.remove_product(product_name)) throw Error("no product named '" + product_name + "' in " + store.dir().string());
+      std::printf("removed product '%s' from %s (a product the config names is made again at the next start)\n", product_name.c_str(),
+                  store.dir().string().c_str());
+      return 0;
+    } catch (const std::exception& e) {
+      std::cerr << "inkwire-server remove-product: " << e.what() << "\n";
+      return 1;
+    }
   }
   if (exporting->parsed()) {
     try {

@@ -177,7 +177,7 @@ std::vector<std::string> gl_mapped(pid_t pid) {
 // a process of its own, never by the serving process, which maps no GL library after it served
 // one: the product of its config at start, and one added with add-product while it runs, which is
 // served under its name without a restart.
-TEST_F(TurntableE2ETest, MeshProductsAreMadeOutsideTheServingProcessWhichMapsNoGLAndOneAddedWhileItRunsIsServed) {
+TEST_F(TurntableE2ETest, MeshProductsAreMadeOutsideTheServingProcessWhichMapsNoGLAndOneAddedWhileItRunsIsServedUntilRemoved) {
   const fs::path dir = output_dir("turntable-no-gl");
   ServerUnderTest server(dir, {{"sessions", {{{"name", "duck"}, {"kind", "turntable"},
                                               {"product", {{"mesh", kDuck.string()}, {"samples", 8}, {"size", 128}}}}}}});
@@ -197,6 +197,19 @@ TEST_F(TurntableE2ETest, MeshProductsAreMadeOutsideTheServingProcessWhichMapsNoG
   ASSERT_EQ(cow->wait(), 0) << cow->output();
   EXPECT_EQ(frame_log(dir / "added.jsonl").at(0)["product"]["samples_loaded"], 6);
   EXPECT_EQ(gl_mapped(server.process().pid()), std::vector<std::string>{}) << "the serving process mapped GL";
+
+  // Taken out again while the server runs: no longer served; a name never stored is refused.
+  Process remove("inkwire-server", {"remove-product", "cow", "--data", (dir / "data").string()}, dir / "remove.log");
+  ASSERT_EQ(remove.wait(), 0) << remove.output();
+  EXPECT_TRUE(eventually([&] { return server.process().output().find("\"product-removed\"") != std::string::npos; }))
+      << "the running server did not drop the product removed beside it";
+  auto gone = product_client(server, "cow", dir, "removed", 1, "0", true);
+  EXPECT_NE(gone->wait(), 0) << gone->output();
+  Process again("inkwire-server", {"remove-product", "cow", "--data", (dir / "data").string()}, dir / "remove-again.log");
+  EXPECT_NE(again.wait(), 0);
+  EXPECT_NE(again.output().find("no product named 'cow'"), std::string::npos) << again.output();
+  auto duck = product_client(server, "duck", dir, "still", 1, "0", true);
+  EXPECT_EQ(duck->wait(), 0) << duck->output();
 }
 
 TEST_F(TurntableE2ETest, RowsOfPhotosTurnUpAndDownAClientTurnedUpSeesTheUpperRow) {
