@@ -41,7 +41,9 @@ void make_mesh_product_in_helper(const fs::path& data, const ProductSource& sour
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, out[1], STDOUT_FILENO);
   posix_spawn_file_actions_adddup2(&actions, out[1], STDERR_FILENO);  // its reason, when it fails, is the last line
-  posix_spawn_file_actions_addclose(&actions, out[0]);
+  // The helper takes none of the server's descriptors (the pipe's ends included): a client's
+  // socket held by it would outlive the client's leaving.
+  posix_spawn_file_actions_addclosefrom_np(&actions, 3);
   pid_t pid = 0;
   const int spawned = posix_spawn(&pid, helper.c_str(), &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);

@@ -28,6 +28,7 @@ struct Options {
   std::string gl = "osmesa";  // off-screen backend
   std::string output_dir;     // where suites write extra files (CSV, plots): beside the JSON
   std::vector<std::string> photos;  // turntable: real photo folders to measure (every other photo held out)
+  double minutes = 1;               // soak: how long the churn lasts
   bool even_turn = false;           // turntable --photos: take them as evenly spaced, not the turn found from the matches
 };
 
@@ -92,5 +93,6 @@ std::vector<Result> run_landmarks_suite(Harness& harness);
 std::vector<Result> run_call_suite(Harness& harness);
 std::vector<Result> run_abuse_suite(Harness& harness);
 std::vector<Result> run_crash_suite(Harness& harness);
+std::vector<Result> run_soak_suite(Harness& harness);
 
 }  // namespace inkwire::bench

@@ -1,5 +1,6 @@
 #include "net_load.hpp"
 
+#include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -7,6 +8,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -136,6 +138,38 @@ double process_cpu_seconds(pid_t pid) {
   return (user + system) / double(sysconf(_SC_CLK_TCK));
 }
 
+double process_rss_mb(pid_t pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/status");
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("VmRSS:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
+  return 0;
+}
+
+double process_open_fds(pid_t pid) {
+  double n = 0;
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it("/proc/" + std::to_string(pid) + "/fd", ec), end; !ec && it != end; it.increment(ec)) ++n;
+  return n;
+}
+
+pid_t spawn_process(const std::vector<std::string>& args, const std::string& log) {
+  std::vector<char*> argv;
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, 1, 2);
+  // Nothing else of this process goes with it: a client's socket held open by a server started
+  // mid-run would keep that connection alive after the client closed it.
+  posix_spawn_file_actions_addclosefrom_np(&actions, 3);
+  pid_t pid = -1;
+  const int rc = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (rc != 0) throw Error("cannot start " + args[0]);
+  return pid;
+}
+
 double percentile(std::vector<double> v, double p) {
   if (v.empty()) return 0;
   std::sort(v.begin(), v.end());
@@ -156,34 +190,29 @@ int free_loopback_port() {
   return a.local_endpoint().port();
 }
 
-BrokerProcess::BrokerProcess(Kind kind) : port_(free_loopback_port()) {
+BrokerProcess::BrokerProcess(Kind kind) : kind_(kind), port_(free_loopback_port()) { start(); }
+
+void BrokerProcess::start() {
   const std::string port = std::to_string(port_);
   std::vector<std::string> args =
-      kind == Kind::Redis ? std::vector<std::string>{"/usr/bin/redis-server", "--port", port, "--bind", "127.0.0.1", "--save", "", "--appendonly", "no",
-                                                     "--maxclients", "4064", "--loglevel", "warning"}
-                          : std::vector<std::string>{"/usr/sbin/nats-server", "-a", "127.0.0.1", "-p", port};
-  if (access(args[0].c_str(), X_OK) != 0) throw Error(args[0] + " is missing (Debian package " + (kind == Kind::Redis ? "redis-server" : "nats-server") + ")");
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-  const int rc = posix_spawn(&pid_, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (rc != 0) throw Error("cannot start " + args[0]);
+      kind_ == Kind::Redis ? std::vector<std::string>{"/usr/bin/redis-server", "--port", port, "--bind", "127.0.0.1", "--save", "", "--appendonly", "no",
+                                                      "--maxclients", "4064", "--loglevel", "warning"}
+                           : std::vector<std::string>{"/usr/sbin/nats-server", "-a", "127.0.0.1", "-p", port};
+  if (access(args[0].c_str(), X_OK) != 0) throw Error(args[0] + " is missing (Debian package " + (kind_ == Kind::Redis ? "redis-server" : "nats-server") + ")");
+  pid_ = spawn_process(args, "/dev/null");
   for (int i = 0; i < 200; ++i) {
-    asio::io_context io;
-    asio::ip::tcp::socket s(io);
-    std::error_code ec;
-    s.connect({asio::ip::make_address("127.0.0.1"), uint16_t(port_)}, ec);
-    if (!ec) return;
+    if (port_answers(port_)) return;
     std::this_thread::sleep_for(std::chrono::milliseconds(25));
   }
   kill(pid_, SIGKILL);
   waitpid(pid_, nullptr, 0);
   throw Error(args[0] + " did not start listening on port " + port);
+}
+
+void BrokerProcess::restart() {
+  kill(pid_, SIGKILL);
+  waitpid(pid_, nullptr, 0);
+  start();
 }
 
 BrokerProcess::~BrokerProcess() {

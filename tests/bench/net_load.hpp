@@ -43,6 +43,10 @@ asio::awaitable<void> simulated_client(std::vector<asio::ip::tcp::endpoint> serv
 double percentile(std::vector<double> v, double p);
 double thread_cpu_seconds();
 double process_cpu_seconds(pid_t pid);  // user + system time of another process
+double process_rss_mb(pid_t pid);        // resident memory of another process, from /proc
+double process_open_fds(pid_t pid);      // its open descriptors
+// Starts a program (args[0] a path) with stdout and stderr in `log`; its pid.
+pid_t spawn_process(const std::vector<std::string>& args, const std::string& log);
 int free_loopback_port();
 // Whether something accepts connections on 127.0.0.1:`port` now (a server process started yet).
 bool port_answers(int port);
@@ -54,6 +58,8 @@ class BrokerProcess {
   // Throws inkwire::Error when the program is missing or does not start listening.
   explicit BrokerProcess(Kind kind);
   ~BrokerProcess();
+  // Killed without warning and started again on the same port (what it held is gone).
+  void restart();
   BrokerProcess(const BrokerProcess&) = delete;
   BrokerProcess& operator=(const BrokerProcess&) = delete;
   int port() const { return port_; }
@@ -61,6 +67,9 @@ class BrokerProcess {
   double cpu_seconds() const { return process_cpu_seconds(pid_); }
 
  private:
+  void start();
+
+  Kind kind_;
   pid_t pid_ = -1;
   int port_ = 0;
 };

@@ -33,19 +33,6 @@ using namespace protocol;
 using asio::ip::tcp;
 constexpr auto no_throw = asio::experimental::as_tuple(asio::use_awaitable);
 
-double rss_mb(pid_t pid) {
-  std::ifstream in("/proc/" + std::to_string(pid) + "/status");
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind("VmRSS:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
-  return 0;
-}
-
-double open_fds(pid_t pid) {
-  double n = 0;
-  for ([[maybe_unused]] const auto& e : fs::directory_iterator("/proc/" + std::to_string(pid) + "/fd")) ++n;
-  return n;
-}
-
 struct Hostile {
   tcp::endpoint native, http;
   Clock::time_point until;
@@ -176,7 +163,7 @@ std::vector<Result> run_abuse_suite(Harness& harness) {
   // Serving once the native port answers.
   for (int i = 0; i < 200 && !port_answers(port); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
-  const double rss_before = rss_mb(server), fds_before = open_fds(server);
+  const double rss_before = process_rss_mb(server), fds_before = process_open_fds(server);
 
   Load load(shape, 1);
   const tcp::endpoint native{asio::ip::make_address("127.0.0.1"), uint16_t(port)}, http{asio::ip::make_address("127.0.0.1"), uint16_t(http_port)};
@@ -187,14 +174,14 @@ std::vector<Result> run_abuse_suite(Harness& harness) {
   std::thread attackers([&] { hostile_io.run(); });
   std::thread sampler([&] {
     std::this_thread::sleep_for(std::chrono::seconds(6));
-    rss_during = rss_mb(server), fds_during = open_fds(server);
+    rss_during = process_rss_mb(server), fds_during = process_open_fds(server);
   });
   for (int i = 0; i < shape.clients; ++i) asio::co_spawn(client_io, simulated_client({native}, load, i), asio::detached);
   client_io.run();
   sampler.join();
   attackers.join();
   std::this_thread::sleep_for(std::chrono::seconds(3));  // the last hostile connections' deadlines pass
-  const double rss_after = rss_mb(server), fds_after = open_fds(server);
+  const double rss_after = process_rss_mb(server), fds_after = process_open_fds(server);
   kill(server, SIGTERM);
   waitpid(server, nullptr, 0);
 

@@ -29,21 +29,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Starts a program with its output in `log`; its pid.
-pid_t spawn(const std::vector<std::string>& args, const fs::path& log) {
-  const pid_t pid = fork();
-  if (pid == 0) {
-    freopen(log.c_str(), "w", stdout);
-    freopen(log.c_str(), "a", stderr);
-    std::vector<char*> argv;
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execv(argv[0], argv.data());
-    _exit(127);
-  }
-  return pid;
-}
-
 std::string text_of(const fs::path& file) {
   std::ifstream in(file);
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -67,7 +52,7 @@ std::vector<Result> run_crash_suite(Harness& harness) {
     if (i % 2 == 0) {
       // add-product of a product not made before (its size differs), killed somewhere in its work.
       const std::string name = "p" + std::to_string(i);
-      const pid_t pid = spawn({server_bin, "add-product", name, "--mesh", duck, "--samples", "8", "--size", std::to_string(64 + 2 * i), "--data", data.string()}, log);
+      const pid_t pid = spawn_process({server_bin, "add-product", name, "--mesh", duck, "--samples", "8", "--size", std::to_string(64 + 2 * i), "--data", data.string()}, log);
       std::this_thread::sleep_for(std::chrono::milliseconds(std::uniform_int_distribution<int>(50, 2500)(rng)));
       kill(pid, SIGKILL);
       int status = 0;
@@ -79,7 +64,7 @@ std::vector<Result> run_crash_suite(Harness& harness) {
     } else {
       // A running server, a member changing the session as fast as it can, killed.
       const int port = free_loopback_port();
-      const pid_t pid = spawn({server_bin, "--listen", "127.0.0.1:" + std::to_string(port), "--data", data.string(), "--config", (dir / "server.json").string(), "--quiet"}, log);
+      const pid_t pid = spawn_process({server_bin, "--listen", "127.0.0.1:" + std::to_string(port), "--data", data.string(), "--config", (dir / "server.json").string(), "--quiet"}, log);
       for (int t = 0; t < 200 && !port_answers(port); ++t) std::this_thread::sleep_for(std::chrono::milliseconds(25));
       if (!port_answers(port)) {
         ++restarts_failed;  // the data a kill left behind does not start
@@ -106,7 +91,7 @@ std::vector<Result> run_crash_suite(Harness& harness) {
 
   // The aftermath: the server starts on what the kills left; every stored product is served whole.
   const int port = free_loopback_port();
-  const pid_t pid = spawn({server_bin, "--listen", "127.0.0.1:" + std::to_string(port), "--data", data.string(), "--config", (dir / "server.json").string(), "--quiet"},
+  const pid_t pid = spawn_process({server_bin, "--listen", "127.0.0.1:" + std::to_string(port), "--data", data.string(), "--config", (dir / "server.json").string(), "--quiet"},
                           dir / "after.log");
   for (int t = 0; t < 400 && !port_answers(port); ++t) std::this_thread::sleep_for(std::chrono::milliseconds(25));
   int served = 0, lost = 0;
@@ -144,7 +129,7 @@ std::vector<Result> run_crash_suite(Harness& harness) {
                                     << R"(", "sessions": [ { "name": "bunny", "kind": "scene", "assets": [ { "path": "/usr/share/glmark2/models/bunny.obj" } ] } ] })";
     std::ofstream(dir / "two.json") << R"({ "name": "two", "broker": ")" << url << R"(", "sessions": [] })";
     const int one_port = free_loopback_port();
-    const pid_t one = spawn({server_bin, "--listen", "127.0.0.1:" + std::to_string(one_port), "--data", (dir / "data-one").string(), "--config",
+    const pid_t one = spawn_process({server_bin, "--listen", "127.0.0.1:" + std::to_string(one_port), "--data", (dir / "data-one").string(), "--config",
                              (dir / "one.json").string(), "--quiet"}, dir / "one.log");
     for (int t = 0; t < 400 && !port_answers(one_port); ++t) std::this_thread::sleep_for(std::chrono::milliseconds(25));
     std::this_thread::sleep_for(std::chrono::seconds(2));  // one has shared the session and its mesh
@@ -156,7 +141,7 @@ std::vector<Result> run_crash_suite(Harness& harness) {
       const std::vector<std::string> two = {server_bin, "--listen", "127.0.0.1:" + std::to_string(port), "--data", (dir / "data-two").string(),
                                             "--config", (dir / "two.json").string()};
       const fs::path victim_log = dir / ("two-" + std::to_string(i) + ".log");
-      const pid_t victim = spawn(two, victim_log);
+      const pid_t victim = spawn_process(two, victim_log);
       // The mesh comes within about 20 ms of the instance's listening: the kill falls in that window.
       for (int t = 0; t < 500 && text_of(victim_log).find("\"listening\"") == std::string::npos; ++t) std::this_thread::sleep_for(std::chrono::milliseconds(2));
       std::this_thread::sleep_for(std::chrono::microseconds(std::uniform_int_distribution<int>(0, 30000)(rng)));
@@ -165,7 +150,7 @@ std::vector<Result> run_crash_suite(Harness& harness) {
       waitpid(victim, nullptr, 0);
       ++upload_kills;
       // Started again: it takes the session (again, or from what it stored) and serves it whole.
-      const pid_t again = spawn(two, dir / ("two-" + std::to_string(i) + "-again.log"));
+      const pid_t again = spawn_process(two, dir / ("two-" + std::to_string(i) + "-again.log"));
       for (int t = 0; t < 400 && !port_answers(port); ++t) std::this_thread::sleep_for(std::chrono::milliseconds(25));
       bool served = false;
       for (int t = 0; t < 40 && !served; ++t) {
