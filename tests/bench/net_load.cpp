@@ -152,6 +152,10 @@ double process_open_fds(pid_t pid) {
   return n;
 }
 
+std::string program_beside_bench(const std::string& name) {
+  return (std::filesystem::read_symlink("/proc/self/exe").parent_path() / name).string();
+}
+
 pid_t spawn_process(const std::vector<std::string>& args, const std::string& log) {
   std::vector<char*> argv;
   for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));

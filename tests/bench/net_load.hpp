@@ -45,6 +45,9 @@ double thread_cpu_seconds();
 double process_cpu_seconds(pid_t pid);  // user + system time of another process
 double process_rss_mb(pid_t pid);        // resident memory of another process, from /proc
 double process_open_fds(pid_t pid);      // its open descriptors
+// The path of program `name` (inkwire-server) beside this inkwire-bench: a copied set of the
+// three runs as one, whatever the build tree does meanwhile.
+std::string program_beside_bench(const std::string& name);
 // Starts a program (args[0] a path) with stdout and stderr in `log`; its pid.
 pid_t spawn_process(const std::vector<std::string>& args, const std::string& log);
 int free_loopback_port();

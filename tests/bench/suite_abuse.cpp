@@ -141,7 +141,7 @@ std::vector<Result> run_abuse_suite(Harness& harness) {
   const fs::path dir = fs::path(harness.options().output_dir.empty() ? "." : harness.options().output_dir) / "abuse-bench";
   fs::remove_all(dir);
   fs::create_directories(dir);
-  const std::string bin = INKWIRE_BIN_DIR;
+  const std::string bin = std::filesystem::path(program_beside_bench("inkwire-server")).parent_path().string();
   const fs::path duck = "/usr/share/assimp/models/Collada/duck.dae";
   if (std::system(("'" + bin + "/inkwire-server' add-product product --mesh '" + duck.string() + "' --samples 12 --size 128 --editor-token owner --data '" +
                    (dir / "data").string() + "' > '" + (dir / "add.log").string() + "'").c_str()) != 0)

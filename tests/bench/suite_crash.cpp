@@ -40,7 +40,7 @@ std::vector<Result> run_crash_suite(Harness& harness) {
   const fs::path dir = fs::path(harness.options().output_dir.empty() ? "." : harness.options().output_dir) / "crash-bench";
   fs::remove_all(dir);
   fs::create_directories(dir);
-  const std::string server_bin = std::string(INKWIRE_BIN_DIR) + "/inkwire-server";
+  const std::string server_bin = program_beside_bench("inkwire-server");
   const std::string duck = "/usr/share/assimp/models/Collada/duck.dae";
   const fs::path data = dir / "data";
   std::ofstream(dir / "server.json") << R"({ "sessions": [ { "name": "scene", "kind": "scene" } ] })";

@@ -66,7 +66,7 @@ class Instance {
   }
   ~Instance() { stop(SIGTERM); }
   void start() {
-    const std::string bin = std::string(INKWIRE_BIN_DIR) + "/inkwire-server";
+    const std::string bin = program_beside_bench("inkwire-server");
     pid_ = spawn_process({bin, "--listen", "127.0.0.1:" + std::to_string(port_), "--config", (dir_ / "server.json").string(), "--data",
                           (dir_ / "data").string(), "--quiet"},
                          (dir_ / ("server-" + std::to_string(starts_++) + ".log")).string());
@@ -375,7 +375,7 @@ std::vector<Result> run_soak_suite(Harness& harness) {
   const fs::path dir = fs::path(harness.options().output_dir.empty() ? "." : harness.options().output_dir) / "soak-bench";
   fs::remove_all(dir);
   fs::create_directories(dir);
-  const std::string server_bin = std::string(INKWIRE_BIN_DIR) + "/inkwire-server";
+  const std::string server_bin = program_beside_bench("inkwire-server");
   const std::string duck = "/usr/share/assimp/models/Collada/duck.dae";
   BrokerProcess broker(BrokerProcess::Kind::Redis);
   const std::string url = "redis://127.0.0.1:" + std::to_string(broker.port());
