@@ -279,6 +279,14 @@ template <class Stream>
 void serialise(Stream&, KeyFrameRequest&) {}
 
 template <class Stream>
+void serialise(Stream& s, VoiceRoute& m) {
+  s.text(m.ticket, kVoiceTicketChars);
+  if constexpr (Stream::reading)
+    check(m.ticket.size() == kVoiceTicketChars && m.ticket.find_first_not_of("0123456789abcdef") == std::string::npos,
+          "voice route: the ticket is not 32 hex digits");
+}
+
+template <class Stream>
 void serialise(Stream& s, FaceRegion& m) {
   flag(s, m.found, "face region found");
   for (uint16_t* v : {&m.x, &m.y, &m.width, &m.height}) s.u16(*v);
@@ -384,7 +392,7 @@ const char* name_of(MessageType type) {
                                 "style-change", "camera-pose", "object-pose", "expression-code", "tween-data",
                                 "asset-announce", "asset-request", "asset-chunk", "publish", "neutral-photo",
                                 "face-crop", "face-region", "voice-frame", "member-face", "roster", "permissions",
-                                "face-video", "key-frame-request"};
+                                "face-video", "key-frame-request", "voice-route"};
   const auto i = unsigned(type);
   return i >= 1 && i <= kMessageTypes ? names[i - 1] : "unknown";
 }

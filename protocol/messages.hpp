@@ -18,8 +18,8 @@
 namespace inkwire::protocol {
 
 inline constexpr uint32_t kMagic = 0x574B4E49;  // the bytes "INKW" read as a little-endian u32
-inline constexpr uint16_t kVersion = 6;  // 2: snapshots describe a turntable's product; 3: calls, refused changes; 4: zoom levels; 5: permissions;
-                                         // 6: face video
+inline constexpr uint16_t kVersion = 7;  // 2: snapshots describe a turntable's product; 3: calls, refused changes; 4: zoom levels; 5: permissions;
+                                         // 6: face video; 7: voice route
 
 inline constexpr size_t kMaxName = 64;           // session, client and server names
 inline constexpr size_t kMaxToken = 128;
@@ -42,14 +42,15 @@ inline constexpr uint16_t kMaxVideoSide = 320;          // the face video's pict
 inline constexpr size_t kMaxPhotoBytes = 120 * 1024;  // a member's neutral photo, JPEG
 inline constexpr size_t kMaxVoiceBytes = 1275;        // one Opus packet at most (RFC 6716); 12 kbit/s x 60 ms is 90 bytes
 inline constexpr size_t kMaxMembers = 64;             // members a roster lists
+inline constexpr size_t kVoiceTicketChars = 32;       // a voice route's ticket: 128 random bits in hex
 
 enum class MessageType : uint16_t {
   Hello = 1, Welcome, Error, Ping, Pong, Join, Leave, Snapshot, StyleChange, CameraPose,
   ObjectPose, ExpressionCode, TweenData, AssetAnnounce, AssetRequest, AssetChunk,
   Publish, NeutralPhoto, FaceCrop, FaceRegion, VoiceFrame, MemberFace, Roster, Permissions,
-  FaceVideo, KeyFrameRequest
+  FaceVideo, KeyFrameRequest, VoiceRoute
 };
-inline constexpr uint16_t kMessageTypes = 26;
+inline constexpr uint16_t kMessageTypes = 27;
 
 enum class SessionKind : uint8_t { Scene = 1, Turntable = 2, Conference = 3 };
 // Samples: a product's sample photos in sample order; Matte: their mattes, in the same order;
@@ -270,6 +271,17 @@ struct KeyFrameRequest {
   bool operator==(const KeyFrameRequest&) const = default;
 };
 
+// A second way for this member to hear the call (S->C, to a call member on a WebSocket; SPEC
+// F15): GET /voice/TICKET on the server's HTTP listener answers with the call's voice frames to
+// this member, framed as on the wire, as one streamed (chunked) response. Once it is open, voice
+// frames no longer come on this connection; they come back to it if the stream ends. A worker's
+// fetch() is kept off the page's thread by engines that route a worker's WebSocket through it.
+struct VoiceRoute {
+  static constexpr MessageType type = MessageType::VoiceRoute;
+  bool operator==(const VoiceRoute&) const = default;
+  std::string ticket;  // kVoiceTicketChars lowercase hex digits
+};
+
 // Where the server found the publisher's face (S->C, to the publisher only): the box in frame
 // pixels to crop around next, or found = false (then the next crop is the whole frame).
 struct FaceRegion {
@@ -339,7 +351,7 @@ struct Permissions {
 using Message = std::variant<Hello, Welcome, ErrorMessage, Ping, Pong, Join, Leave, Snapshot, StyleChange, CameraPose,
                              ObjectPose, ExpressionCode, TweenData, AssetAnnounce, AssetRequest, AssetChunk,
                              Publish, NeutralPhoto, FaceCrop, FaceRegion, VoiceFrame, MemberFace, Roster, Permissions,
-                             FaceVideo, KeyFrameRequest>;
+                             FaceVideo, KeyFrameRequest, VoiceRoute>;
 
 MessageType type_of(const Message& m);
 const char* name_of(MessageType type);

@@ -9,6 +9,8 @@
 #include "server/relay/relay.hpp"
 #include "server/server.hpp"
 #include "server/session.hpp"
+#include "server/session_token.hpp"
+#include "server/web/voice_stream.hpp"
 
 namespace inkwire::server {
 namespace {
@@ -40,6 +42,13 @@ void Connection::send(const Message& message) {
 
 void Connection::send_frame(std::shared_ptr<const Bytes> frame, MessageType type) {
   if (closing_) return;
+  if (type == MessageType::VoiceFrame && voice_stream_) {
+    if (voice_stream_->open()) {
+      voice_stream_->send(std::move(frame));
+      return;
+    }
+    voice_stream_.reset();  // ended: voice comes this way again
+  }
   const uint64_t replaced = queue_.replaced();
   if (!queue_.push(std::move(frame), type)) {
     ++server_.counters().too_slow;
@@ -238,6 +247,12 @@ void Connection::join(const Join& join) {
     if (std::string reason = refusal(session_->authority(), role_, change); !reason.empty())
       permissions.refused.push_back({.change = change, .reason = std::move(reason)});
   send(permissions);
+  // A member on a WebSocket may hear the call on a second route, which browsers that carry a
+  // worker's WebSocket on the page's thread (Firefox) keep off it.
+  if (session_->call() && transport_->name().starts_with("websocket")) {
+    voice_ticket_ = random_hex(protocol::kVoiceTicketChars / 2);
+    send(VoiceRoute{.ticket = voice_ticket_});
+  }
   cells_pending_ = !session_->tween_frames().empty();
   if (cells_pending_) {
     // A member that holds every photo already asks for none: its cells go after two seconds.
@@ -295,7 +310,19 @@ void Connection::send_tween_cells() {
   for (const auto& frame : session_->tween_frames()) send_frame(frame, MessageType::TweenData);
 }
 
+bool Connection::holds_voice_ticket(const std::string& ticket) const {
+  return !voice_ticket_.empty() && !closing_ && session_ && session_->call() && same_secret(voice_ticket_, ticket);
+}
+
+void Connection::take_voice_stream(std::shared_ptr<VoiceStream> stream) {
+  voice_ticket_.clear();
+  voice_stream_ = std::move(stream);
+  log_info("voice-route", {{"client", id_}, {"session", session_ ? session_->name() : ""}});
+}
+
 void Connection::leave_session() {
+  voice_ticket_.clear();
+  if (voice_stream_) voice_stream_->close(), voice_stream_.reset();
   cells_pending_ = false;
   if (cells_timer_) cells_timer_->cancel();
   if (!session_) return;

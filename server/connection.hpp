@@ -20,6 +20,7 @@ namespace inkwire::server {
 
 class Server;
 class Session;
+class VoiceStream;
 
 class Connection : public std::enable_shared_from_this<Connection> {
  public:
@@ -39,6 +40,10 @@ class Connection : public std::enable_shared_from_this<Connection> {
   // How long since anything arrived from the peer (the server pings a quiet one: a live peer is
   // never silent much longer than a heartbeat).
   std::chrono::steady_clock::duration silent_for() const { return Clock::now() - last_heard_; }
+  // Whether `ticket` is the voice route this call member was sent and has not used
+  // (protocol/SPEC.md "Voice route"); then take_voice_stream() makes it its route, once.
+  bool holds_voice_ticket(const std::string& ticket) const;
+  void take_voice_stream(std::shared_ptr<VoiceStream> stream);
 
  private:
   asio::awaitable<void> read_loop();
@@ -71,6 +76,8 @@ class Connection : public std::enable_shared_from_this<Connection> {
   Clock::time_point last_heard_ = Clock::now(), last_ping_ = Clock::now();
   std::optional<Clock::time_point> writing_since_;  // set while a write waits for the peer
   uint64_t pings_sent_ = 0;
+  std::string voice_ticket_;                   // sent in voice-route, not yet used
+  std::shared_ptr<VoiceStream> voice_stream_;  // where this member's voice goes while it is open
 };
 
 }  // namespace inkwire::server

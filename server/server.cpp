@@ -182,6 +182,12 @@ void Server::forget(const Connection* connection) {
   if (connections_.erase(connection)) admission_.give_place(address);
 }
 
+std::shared_ptr<Connection> Server::voice_ticket_holder(const std::string& ticket) const {
+  for (const auto& [key, connection] : connections_)
+    if (connection->holds_voice_ticket(ticket)) return connection;
+  return nullptr;
+}
+
 void Server::adopt(std::unique_ptr<Transport> transport) {
   if (stopping_) {
     transport->close();

@@ -59,6 +59,9 @@ class Server {
   // A client arrived over another transport (a WebSocket upgraded on the HTTP listener).
   // Refused, with the reason, past the connection caps (overall and per address).
   void adopt(std::unique_ptr<Transport> transport);
+  // The call member that was sent voice route `ticket` and has not used it (GET /voice/TICKET
+  // on the HTTP listener); null when none (unknown, used, or the member left).
+  std::shared_ptr<Connection> voice_ticket_holder(const std::string& ticket) const;
   // Who is taken on: places within the connection caps, joins slowed after wrong tokens.
   Admission& admission() { return admission_; }
   size_t connection_count() const { return connections_.size(); }

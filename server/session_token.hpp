@@ -12,5 +12,9 @@ std::string hash_token(const std::string& token);
 std::string as_token_hash(const std::string& stored);
 // Whether `guess` is the token whose hash is `stored` (always, when nothing is stored).
 bool token_matches(const std::string& stored, const std::string& guess);
+// Whether two secrets are equal, compared in constant time.
+bool same_secret(const std::string& a, const std::string& b);
+// `bytes` random bytes from OpenSSL, as lowercase hex (a one-time ticket).
+std::string random_hex(size_t bytes);
 
 }  // namespace inkwire::server

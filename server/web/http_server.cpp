@@ -16,10 +16,12 @@
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "server/relay/relay.hpp"
+#include "server/connection.hpp"
 #include "server/server.hpp"
 #include "server/products/product_listing.hpp"
 #include "server/web/http_request.hpp"
 #include "server/web/metrics.hpp"
+#include "server/web/voice_stream.hpp"
 #include "server/web/web_files.hpp"
 #include "server/web/websocket.hpp"
 
@@ -245,6 +247,28 @@ asio::awaitable<void> HttpServer::serve(ByteStream accepted) {
     *handed_over = true;
     place.release();
     server_.adopt(std::make_unique<WebSocketTransport>(std::move(socket), buffer.substr(n)));
+    co_return;
+  }
+  if (path.rfind("/voice/", 0) == 0) {
+    // A call member's voice route (protocol/SPEC.md "Voice route"): the socket becomes its stream.
+    const std::string origin = request.header("origin");
+    if (!origin_allowed(origin, request.header("host"), server_.config().allowed_origins)) {
+      co_await reply(response(403, "Forbidden", "text/plain", "pages of " + origin + " may not hear this server's calls\n"));
+      co_return;
+    }
+    const std::shared_ptr<Connection> member = server_.voice_ticket_holder(path.substr(7));
+    if (!member) {
+      co_await reply(response(404, "Not Found", "text/plain", "no call member has this voice ticket (used, or the member left)\n"));
+      co_return;
+    }
+    const auto stream = std::make_shared<VoiceStream>(std::move(socket), std::chrono::milliseconds(int64_t(server_.config().idle_timeout_seconds * 1000)));
+    member->take_voice_stream(stream);
+    *handed_over = true;
+    place.release();
+    std::string head = "HTTP/1.1 200 OK\r\nContent-Type: application/vnd.inkwire.frames\r\nCache-Control: no-store\r\nTransfer-Encoding: chunked\r\n";
+    if (!origin.empty()) head += "Access-Control-Allow-Origin: " + origin + "\r\nVary: Origin\r\n";
+    if (https) head += "Strict-Transport-Security: max-age=63072000\r\n";
+    stream->start(head + "\r\n");
     co_return;
   }
   if (path == "/healthz") {

@@ -2,11 +2,17 @@
 // as a TCP one (hello, join, snapshot, a change that reaches a TCP member); a page of a foreign
 // origin is refused; a text message, an oversized fragmented message and a slow-loris request
 // head each close only that connection while another client carries on; /healthz and /metrics
-// answer.
+// answer. A call member on a WebSocket hears the call by its voice route (GET /voice/TICKET, a
+// streamed response) while it is open, and on its socket again once it closes; a ticket used,
+// unknown or from a foreign page is refused.
+#include <cmath>
+#include <thread>
+
 #include <asio.hpp>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "client/call/voice_codec.hpp"
 #include "client/net/session_client.hpp"
 #include "e2e_support.hpp"
 #include "protocol/framing.hpp"
@@ -224,4 +230,117 @@ TEST_F(WebTransportE2ETest, ForeignOriginsTextMessagesOversizedMessagesAndSlowHe
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
   EXPECT_TRUE(still_served(4));
   EXPECT_FALSE(log_events(server.process().output(), "http-too-slow").empty());
+}
+
+namespace {
+
+// The voice frames of a voice route's chunked body as they come, until `count` or the end.
+std::vector<protocol::VoiceFrame> voice_from_route(tcp::socket& socket, std::string& pending, size_t count) {
+  std::vector<protocol::VoiceFrame> frames;
+  std::string body;
+  std::error_code ec;
+  while (frames.size() < count && !ec) {
+    // Chunks: hex size CRLF, bytes, CRLF; their bytes are frames as on the wire.
+    for (size_t line; (line = pending.find("\r\n")) != std::string::npos;) {
+      const size_t size = std::stoul(pending.substr(0, line), nullptr, 16);
+      if (pending.size() < line + 2 + size + 2) break;
+      body += pending.substr(line + 2, size);
+      pending.erase(0, line + 2 + size + 2);
+    }
+    protocol::FrameDecoder decoder;
+    decoder.feed(reinterpret_cast<const uint8_t*>(body.data()), body.size());
+    size_t used = 0;
+    while (const auto m = decoder.next()) {
+      used += protocol::encoded_size(*m);
+      if (const auto* voice = std::get_if<protocol::VoiceFrame>(&*m)) frames.push_back(*voice);
+    }
+    body.erase(0, used);
+    if (frames.size() >= count) break;
+    char chunk[4096];
+    const size_t got = socket.read_some(asio::buffer(chunk), ec);
+    pending.append(chunk, got);
+  }
+  return frames;
+}
+
+}  // namespace
+
+TEST_F(WebTransportE2ETest, ACallMemberOnAWebSocketHearsTheCallByItsVoiceRouteWhileOpenAndOnItsSocketAfter) {
+  const fs::path dir = output_dir("web-voice-route");
+  ServerUnderTest server(dir, {{"http", "127.0.0.1:0"}, {"sessions", {{{"name", "talk"}, {"kind", "conference"}}}}});
+  const int port = http_port(server);
+  ASSERT_NE(port, 0) << server.process().output();
+  const std::string own = "http://127.0.0.1:" + std::to_string(port);
+  WebSocket ws(port, own);
+  ASSERT_TRUE(ws.upgraded()) << ws.head();
+  ws.send(protocol::Hello{.client_name = "browser"});
+  ws.send(protocol::Join{.session = "talk", .token = ""});
+  std::string ticket;
+  for (int i = 0; i < 20 && ticket.empty(); ++i) {
+    const auto m = ws.receive();
+    ASSERT_TRUE(m) << "closed before a voice route came";
+    if (const auto* route = std::get_if<protocol::VoiceRoute>(&*m)) ticket = route->ticket;
+  }
+  ASSERT_EQ(ticket.size(), 32u);
+
+  // A native member speaks a tone for the whole test, 60 ms packets.
+  SessionClient speaker(server.address(), "speaker");
+  speaker.join("talk", "");
+  speaker.send(protocol::Publish{.camera = false, .microphone = true});
+  std::atomic<bool> speaking = true;
+  std::thread voice([&] {
+    VoiceEncoder encoder(60, 10000);
+    std::vector<float> samples(size_t(encoder.frame_samples()));
+    for (uint32_t k = 0; speaking; ++k) {
+      for (size_t i = 0; i < samples.size(); ++i) samples[i] = 0.3f * float(std::sin(2 * M_PI * 220.0 * double(k * samples.size() + i) / 48000.0));
+      speaker.send(protocol::VoiceFrame{.member = 0, .time_ms = k * 60, .opus = encoder.encode(samples)});
+      std::this_thread::sleep_for(std::chrono::milliseconds(60));
+    }
+  });
+  struct Stop {
+    std::atomic<bool>& speaking;
+    std::thread& voice;
+    ~Stop() { speaking = false, voice.join(); }
+  } stop{speaking, voice};
+  // Heard on the socket first.
+  bool heard_on_socket = false;
+  for (int i = 0; i < 200 && !heard_on_socket; ++i) heard_on_socket = std::holds_alternative<protocol::VoiceFrame>(*ws.receive());
+  ASSERT_TRUE(heard_on_socket) << "the WebSocket member heard nothing before opening its route";
+
+  // A foreign page, an unknown ticket and a malformed one are refused.
+  EXPECT_EQ(http_get(port, "GET /voice/" + ticket + " HTTP/1.1\r\nHost: x\r\nOrigin: https://evil.example\r\n\r\n").rfind("HTTP/1.1 403", 0), 0u);
+  EXPECT_EQ(http_get(port, "GET /voice/0123456789abcdef0123456789abcdef HTTP/1.1\r\nHost: x\r\n\r\n").rfind("HTTP/1.1 404", 0), 0u);
+  EXPECT_EQ(http_get(port, "GET /voice/../ws HTTP/1.1\r\nHost: x\r\n\r\n").rfind("HTTP/1.1 404", 0), 0u);
+
+  // The route: a chunked body of voice frames, and none of them on the socket meanwhile.
+  asio::io_context io;
+  tcp::socket route(io);
+  route.connect({asio::ip::make_address("127.0.0.1"), uint16_t(port)});
+  asio::write(route, asio::buffer("GET /voice/" + ticket + " HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) + "\r\nOrigin: " + own + "\r\n\r\n"));
+  std::string pending;
+  const size_t head_end = asio::read_until(route, asio::dynamic_buffer(pending), "\r\n\r\n");
+  const std::string head = pending.substr(0, head_end);
+  pending.erase(0, head_end);
+  ASSERT_EQ(head.rfind("HTTP/1.1 200", 0), 0u) << head;
+  EXPECT_NE(head.find("Transfer-Encoding: chunked"), std::string::npos) << head;
+  EXPECT_NE(head.find("Cache-Control: no-store"), std::string::npos) << head;
+  const std::vector<protocol::VoiceFrame> routed = voice_from_route(route, pending, 10);
+  ASSERT_EQ(routed.size(), 10u) << "the route carried too little voice";
+  const uint32_t first = routed.front().time_ms, last = routed.back().time_ms;
+  EXPECT_EQ(last - first, 9u * 60) << "the route lost or reordered packets";
+  // Used once: the same ticket again is refused.
+  EXPECT_EQ(http_get(port, "GET /voice/" + ticket + " HTTP/1.1\r\nHost: x\r\n\r\n").rfind("HTTP/1.1 404", 0), 0u);
+  route.close();
+
+  // Closed: the voice comes on the socket again, and what the route carried never came there.
+  bool after = false;
+  for (int i = 0; i < 400 && !after; ++i) {
+    const auto m = ws.receive();
+    ASSERT_TRUE(m);
+    if (const auto* v = std::get_if<protocol::VoiceFrame>(&*m)) {
+      EXPECT_FALSE(v->time_ms >= first && v->time_ms <= last) << "packet " << v->time_ms << " came by both routes";
+      after = v->time_ms > last;
+    }
+  }
+  EXPECT_TRUE(after) << "voice did not come back to the socket once the route closed";
 }

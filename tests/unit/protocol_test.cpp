@@ -72,7 +72,8 @@ std::vector<Message> every_message() {
                                   {.change = MessageType::CameraPose, .reason = "only the session's editors may move the camera; you follow them"}}},
           FaceVideo{.time_ms = 123500, .sequence = 31, .frame_width = 640, .frame_height = 480, .x = 200, .y = 100, .width = 240, .height = 240,
                     .key = false, .vp8 = Bytes(300, 0x31)},
-          KeyFrameRequest{}};
+          KeyFrameRequest{},
+          VoiceRoute{.ticket = "0123456789abcdef0123456789abcdef"}};
 }
 
 Bytes stream_of(const std::vector<Message>& messages) {

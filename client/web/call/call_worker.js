@@ -16,16 +16,18 @@
 // {op: 'status', voiceSent, voiceReceived, voiceGapMs, encoderErrors, decoderErrors, ringFull}
 // twice a second.
 import { Session } from '../net/session.js';
+import { FrameReader } from '../protocol/messages.js';
 import { PacketRing, SampleRing } from './audio_ring.js';
 
 const kOpusRate = 48000, kBitrate = 10000, kFrameMs = 60;  // as client/call/publisher.hpp
 const kForwarded = ['snapshot', 'roster', 'member-face', 'face-region', 'key-frame-request', 'permissions', 'state', 'refused', 'error', 'close'];
 
-let session = null, joined = false, sending = false, clockOrigin = 0, encoder = null, playout = null, playoutRing = null;
+let session = null, joined = false, sending = false, clockOrigin = 0, encoder = null, playout = null, playoutRing = null, route = null;
 const decoders = new Map();  // member -> {decoder, pending: [time_ms]}
 // voiceGapMs: the longest wait between two voice packets arriving here (what the network and this
 // engine's worker added; the playout's delay must cover it).
-const status = { voiceSent: 0, voiceReceived: 0, voiceGapMs: 0, encoderErrors: 0, decoderErrors: 0, ringFull: 0 };
+// voiceRoute: how voice arrives, 'websocket' or 'stream' (the voice route's fetch).
+const status = { voiceSent: 0, voiceReceived: 0, voiceGapMs: 0, encoderErrors: 0, decoderErrors: 0, ringFull: 0, voiceRoute: 'websocket' };
 let lastVoiceAt = 0;
 
 const callClockMs = () => performance.timeOrigin + performance.now() - clockOrigin;
@@ -118,6 +120,32 @@ function heard(frame) {
   m.decoder.decode(new EncodedAudioChunk({ type: 'key', timestamp: frame.time_ms * 1000, data: frame.opus }));
 }
 
+// The call's voice by its second route (protocol/SPEC.md "Voice route"): one streamed fetch of
+// framed voice packets. Gecko hands a worker's fetch body to the worker without the page's
+// thread, which it does not do for a worker's WebSocket: a busy page then stalls nothing here.
+// If the route fails or ends, the server sends voice on the WebSocket again.
+async function listenByRoute(s, url, ticket) {
+  route?.abort();
+  const abort = (route = new AbortController());
+  try {
+    const response = await fetch(new URL(`/voice/${ticket}`, url.replace(/^ws/, 'http')), { cache: 'no-store', signal: abort.signal });
+    if (!response.ok || !response.body) return;
+    status.voiceRoute = 'stream';
+    const reader = response.body.getReader(), frames = new FrameReader();
+    for (;;) {
+      const { done, value } = await reader.read();
+      if (done || session !== s) break;
+      frames.feed(value);
+      for (let m; (m = frames.next()); ) if (m.type === 'voice-frame') heard(m);
+    }
+  } catch {
+    // aborted, refused, or malformed: the WebSocket carries voice again
+  } finally {
+    if (route === abort) route = null, status.voiceRoute = 'websocket';
+    abort.abort();
+  }
+}
+
 function open({ url, session: name, token, name: member, clockOrigin: origin }) {
   close();
   clockOrigin = origin;
@@ -130,6 +158,7 @@ function open({ url, session: name, token, name: member, clockOrigin: origin }) 
       self.postMessage({ op: 'event', type, detail: e.detail });
     });
   s.addEventListener('voice-frame', (e) => heard(e.detail));
+  s.addEventListener('voice-route', (e) => listenByRoute(s, url, e.detail.ticket));
 }
 
 function close() {
@@ -139,6 +168,7 @@ function close() {
   }
   session = null;
   joined = false;
+  route?.abort();
   for (const m of decoders.values()) if (m.decoder.state !== 'closed') m.decoder.close();
   decoders.clear();
 }

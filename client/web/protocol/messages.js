@@ -5,7 +5,7 @@
 import { ProtocolError, ReadStream, WriteStream } from './streams.js';
 
 export const kMagic = 0x574b4e49;  // the bytes "INKW" read as a little-endian u32
-export const kVersion = 6;
+export const kVersion = 7;
 export const kMaxName = 64;
 export const kMaxToken = 128;
 export const kMaxReason = 512;
@@ -24,14 +24,15 @@ export const kMaxVideoSide = 320;
 export const kMaxPhotoBytes = 120 * 1024;
 export const kMaxVoiceBytes = 1275;
 export const kMaxMembers = 64;
+export const kVoiceTicketChars = 32;
 
 export const MessageType = Object.freeze({
   hello: 1, welcome: 2, error: 3, ping: 4, pong: 5, join: 6, leave: 7, snapshot: 8, 'style-change': 9, 'camera-pose': 10,
   'object-pose': 11, 'expression-code': 12, 'tween-data': 13, 'asset-announce': 14, 'asset-request': 15, 'asset-chunk': 16,
   publish: 17, 'neutral-photo': 18, 'face-crop': 19, 'face-region': 20, 'voice-frame': 21, 'member-face': 22, roster: 23,
-  permissions: 24, 'face-video': 25, 'key-frame-request': 26,
+  permissions: 24, 'face-video': 25, 'key-frame-request': 26, 'voice-route': 27,
 });
-export const kMessageTypes = 26;
+export const kMessageTypes = 27;
 export const FaceSource = Object.freeze({ neutral: 0, camera: 1, voice: 2 });
 export const nameOf = (type) => Object.keys(MessageType).find((k) => MessageType[k] === type) ?? 'unknown';
 
@@ -273,6 +274,11 @@ function serialiseFaceVideo(s, m) {
 
 function serialiseKeyFrameRequest() {}
 
+function serialiseVoiceRoute(s, m) {
+  m.ticket = s.text(m.ticket ?? '', kVoiceTicketChars);
+  if (s.constructor.reading) check(/^[0-9a-f]{32}$/.test(m.ticket), 'voice route: the ticket is not 32 hex digits');
+}
+
 function serialiseFaceRegion(s, m) {
   m.found = flag(s, m.found, 'face region found');
   for (const f of ['x', 'y', 'width', 'height']) m[f] = s.u16(m[f] ?? 0);
@@ -339,7 +345,7 @@ const serialisers = [serialiseHello, serialiseWelcome, serialiseErrorMessage, se
                      serialiseSnapshot, serialiseStyleChange, serialiseCameraPose, serialiseObjectPose, serialiseExpressionCode,
                      serialiseTweenData, serialiseAssetAnnounce, serialiseAssetRequest, serialiseAssetChunk, serialisePublish,
                      serialiseNeutralPhoto, serialiseFaceCrop, serialiseFaceRegion, serialiseVoiceFrame, serialiseMemberFace, serialiseRoster,
-                     serialisePermissions, serialiseFaceVideo, serialiseKeyFrameRequest];
+                     serialisePermissions, serialiseFaceVideo, serialiseKeyFrameRequest, serialiseVoiceRoute];
 
 export const kHeaderBytes = 6;
 export const kMaxPayload = 128 * 1024;
@@ -379,6 +385,29 @@ export function decode(type, payload) {
   serialisers[type - 1](s, m);
   s.finish();
   return m;
+}
+
+// Frames out of a byte stream in arbitrary pieces (a streamed fetch body), as C++'s
+// FrameDecoder: feed() what arrived, then next() until it returns null. A header over the limit
+// throws at once, before its payload is waited for.
+export class FrameReader {
+  constructor() {
+    this.pending = new Uint8Array(0);
+  }
+  feed(bytes) {
+    const joined = new Uint8Array(this.pending.length + bytes.length);
+    joined.set(this.pending);
+    joined.set(bytes, this.pending.length);
+    this.pending = joined;
+  }
+  next() {
+    if (this.pending.length < kHeaderBytes) return null;
+    const { length, type } = parseHeader(this.pending);
+    if (this.pending.length < kHeaderBytes + length) return null;
+    const m = decode(type, this.pending.subarray(kHeaderBytes, kHeaderBytes + length));
+    this.pending = this.pending.slice(kHeaderBytes + length);
+    return m;
+  }
 }
 
 // A whole frame (as one WebSocket message carries it): exactly one message, nothing after it.

@@ -7,7 +7,7 @@ import { readFileSync } from 'node:fs';
 import { test } from 'node:test';
 
 import { decodeTweenCell, encodeTweenCell, TweenError } from '../common/tween_data.js';
-import { decode, decodeFrame, encode, kHeaderBytes, kMaxPayload, kMessageTypes, kVersion, MessageType, parseHeader } from '../protocol/messages.js';
+import { decode, decodeFrame, encode, FrameReader, kHeaderBytes, kMaxPayload, kMessageTypes, kVersion, MessageType, parseHeader } from '../protocol/messages.js';
 import { ProtocolError } from '../protocol/streams.js';
 
 const golden = JSON.parse(readFileSync(new URL('../../../tests/golden/protocol-frames.json', import.meta.url)));
@@ -61,6 +61,26 @@ test('decoded fields are the C++ ones', () => {
   assert.equal(roster.members[1].assets[1].name, 'face.landmarks.json');
   assert.deepEqual(byType.permissions.refused.map((r) => r.change), ['style-change', 'camera-pose']);
   assert.match(byType.permissions.refused[1].reason, /editors may move the camera/);
+});
+
+test('a stream of frames in pieces of any size gives every frame once, in order (the voice route)', () => {
+  const frames = golden.frames.map((f) => fromHex(f.hex));
+  const stream = new Uint8Array(frames.reduce((n, f) => n + f.length, 0));
+  frames.reduce((at, f) => (stream.set(f, at), at + f.length), 0);
+  for (const piece of [1, 7, 100, stream.length]) {
+    const reader = new FrameReader(), got = [];
+    for (let at = 0; at < stream.length; at += piece) {
+      reader.feed(stream.subarray(at, at + piece));
+      for (let m; (m = reader.next()); ) got.push(m.type);
+    }
+    assert.deepEqual(got, golden.frames.map((f) => f.type), `pieces of ${piece} bytes`);
+  }
+  const over = new Uint8Array(kHeaderBytes);
+  new DataView(over.buffer).setUint32(0, kMaxPayload + 1, true);
+  new DataView(over.buffer).setUint16(4, 1, true);
+  const reader = new FrameReader();
+  reader.feed(over);
+  assert.throws(() => reader.next(), ProtocolError, 'a header over the limit is refused before its payload comes');
 });
 
 test('every truncation of every frame is refused with a ProtocolError', () => {
