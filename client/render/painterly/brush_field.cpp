@@ -39,7 +39,9 @@ bool Matte::covers(glm::vec2 unit) const {
 glm::vec2 Matte::random_object_point(Random& random) const {
   if (object_indices_.empty()) return {random.uniform(0, 1), random.uniform(0, 1)};
   const uint32_t i = object_indices_[size_t(random.next() % object_indices_.size())];
-  const glm::vec2 pixel(float(i % uint32_t(width_)) + random.uniform(0, 1), float(i / uint32_t(width_)) + random.uniform(0, 1));
+  // Braces, not parentheses: the draws then happen in order whatever the compiler (the browser's
+  // module and the native client paint the same strokes; function arguments have no order).
+  const glm::vec2 pixel{float(i % uint32_t(width_)) + random.uniform(0, 1), float(i / uint32_t(width_)) + random.uniform(0, 1)};
   return glm::min(pixel / glm::vec2(width_, height_), glm::vec2(std::nextafter(1.0f, 0.0f)));
 }
 
@@ -85,7 +87,7 @@ StepStats BrushField::step(const Matte& matte) {
   StepStats stats;
   for (size_t i = 0; i < brushes_.size(); ++i) {
     Brush& b = brushes_[i];
-    b.acceleration = b.acceleration * 0.5f + glm::vec2(random_.uniform(-1, 1), random_.uniform(-1, 1)) * motion_.jitter;
+    b.acceleration = b.acceleration * 0.5f + glm::vec2{random_.uniform(-1, 1), random_.uniform(-1, 1)} * motion_.jitter;  // in order (braces)
     b.velocity = b.velocity * motion_.damping + b.acceleration;
     const float speed = glm::length(b.velocity);
     if (speed > motion_.max_speed) b.velocity *= motion_.max_speed / speed;
