@@ -12,6 +12,7 @@
 #include "client/call/voice_codec.hpp"
 #include "common/error.hpp"
 #include "common/image.hpp"
+#include "common/log.hpp"
 #include "common/video_source.hpp"
 
 namespace inkwire {
@@ -91,6 +92,12 @@ Publisher::Publisher(SessionClient& client, PublisherOptions options)
   }
   camera_live_ = first.has_value();
   microphone_live_ = microphone_source_ != nullptr;
+  // Where the clock its crops and voice are stamped with starts, in wall time: what a listener on
+  // the same machine needs to measure mouth-to-ear (the browser engines' bench does).
+  const auto since_start = std::chrono::steady_clock::now() - start_;
+  const auto origin = std::chrono::system_clock::now() - std::chrono::duration_cast<std::chrono::system_clock::duration>(since_start);
+  log_info("publishing", {{"camera", bool(camera_live_)}, {"microphone", bool(microphone_live_)},
+                          {"clock_origin_unix_ms", std::chrono::duration<double, std::milli>(origin.time_since_epoch()).count()}});
   announce();
   if (first) camera_ = std::thread([this, frame = std::move(*first)] { run_camera(frame); });
   if (microphone_source_) microphone_ = std::thread([this] { run_microphone(); });

@@ -71,6 +71,28 @@ STALL_SECONDS = 16
 MAX_DELAY_MS = 300  # client/web/call/playout.js kMaxDelayMs
 
 
+
+# When the native member's moment 0 plays at this page's output, in wall-clock ms: its offset and
+# the jitter rule's delay on the audio clock, taken to the output by getOutputTimestamp().
+PLAYS_AT = """const e = ELEMENT, l = e.link, nat = e.roster?.members.find((m) => m.name === 'Nat');
+  const m = nat && l.stats?.members.get(nat.member);
+  if (!m || !l.context?.getOutputTimestamp) return null;
+  const ts = l.context.getOutputTimestamp(), scheduled = performance.timeOrigin + performance.now() + (m.offsetMs + m.delayMs - l.context.currentTime * 1000);
+  return [performance.timeOrigin + ts.performanceTime + (m.offsetMs + m.delayMs - ts.contextTime * 1000), scheduled];"""
+NAT_FRAME_MS = 60  # the native client's voice packets (client/call/publisher.hpp)
+
+
+def clock_origin(log):
+    """The wall-clock ms at which a native member's call clock starts (its "publishing" log line)."""
+    try:
+        for line in open(log):
+            if '"publishing"' in line:
+                return json.loads(line).get("clock_origin_unix_ms")
+    except (OSError, ValueError):
+        pass
+    return None
+
+
 def read_wav(path):
     with wave.open(path) as w:
         rate, channels, width = w.getframerate(), w.getnchannels(), w.getsampwidth()
@@ -175,8 +197,15 @@ try:
                 if stall:
                     driver.execute_script(f"window.stalls = setInterval(() => {{ const t = performance.now(); while (performance.now() - t < {stall}); }}, 2000);")
                 end = time.time() + STALL_SECONDS
+                # When Nat's moment 0 reaches this page's audio output, and when the playout plays it
+                # (the output's own latency apart), in wall time (ms), sampled.
+                plays_at, scheduled_at = [], []
                 while time.time() < end:
                     seen |= {m["expression"] for m in driver.execute_script(f"return {element}.members") if m["name"] == "Nat"}
+                    at = driver.execute_script(PLAYS_AT.replace("ELEMENT", element))
+                    if at is not None:
+                        plays_at.append(at[0])
+                        scheduled_at.append(at[1])
                     time.sleep(0.5)
                 driver.execute_script("clearInterval(window.stalls);")
                 time.sleep(1)  # what is in flight lands
@@ -186,9 +215,20 @@ try:
                 print(f"{name}: stalled {stall} ms every 2 s for {STALL_SECONDS} s: {received} packets received, {played} played, {late} late, "
                       f"{dropped} dropped, delay {after['delayMs']:.0f} ms, the longest wait between two packets {after['voiceGapMs']} ms; "
                       f"{after['voiceSent']} sent, {after['encoderErrors']} encoder and {after['decoderErrors']} decoder errors")
+                # Mouth to ear: Nat's moment t is heard at its clock's origin + t (the file's frames go out
+                # as they start: a live microphone adds the frame, 60 ms, as the native bench counts it).
+                # As the native bench measures it: until the playout mixes it (output latency apart);
+                # and to the page's audio output.
+                origin = clock_origin(os.path.join(out, "nat.log"))
+                p = lambda v, q: v[min(len(v) - 1, int(q * len(v)))] if v else 0
+                mixed = sorted(at - origin + NAT_FRAME_MS for at in scheduled_at) if origin else []
+                output = sorted(at - origin + NAT_FRAME_MS for at in plays_at) if origin else []
+                print(f"{name}: mouth to ear p50 {p(mixed, 0.5):.0f} ms, p99 {p(mixed, 0.99):.0f} ms to the playout's mix; "
+                      f"p99 {p(output, 0.99):.0f} ms to the page's audio output ({len(mixed)} samples)")
                 rows.append({"variant": f"browser,engine={name},stall={stall}",
                              "counters": {"packets_played_fraction": played / received if received else 0, "packets_late": late,
-                                          "packets_received": received, "delay_ms": after["delayMs"], "voice_gap_ms_max": after["voiceGapMs"]}})
+                                          "packets_received": received, "delay_ms": after["delayMs"], "voice_gap_ms_max": after["voiceGapMs"],
+                                          "mouth_to_ear_ms_p99": p(mixed, 0.99), "mouth_to_ear_output_ms_p99": p(output, 0.99)}})
             checks.check(received > STALL_SECONDS * 10, f"{name}: the native member's voice arrived while the page stalled ({received} packets)")
             checks.check(after.get("voiceRoute") == "stream",
                          f"{name}: the call's voice comes by its voice route, a streamed fetch in the worker ({after.get('voiceRoute')})")
