@@ -27,6 +27,7 @@
 #include <deque>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <random>
 #include <thread>
@@ -139,7 +140,8 @@ class Peer : public std::enable_shared_from_this<Peer> {
 };
 
 // Connects, says hello and joins; the peer once the snapshot came, null if anything failed.
-// Callers pass names held in locals: GCC 12 mishandles temporaries that live across a co_await.
+// Callers pass names held in locals: GCC 12 mishandles temporaries that live across a co_await
+// (which is also why coroutines here take their executor apart, and functions as locals).
 asio::awaitable<std::shared_ptr<Peer>> join(tcp::endpoint at, const std::string& name, const std::string& session) {
   const auto executor = co_await asio::this_coro::executor;
   auto peer = std::make_shared<Peer>(executor);
@@ -204,28 +206,49 @@ asio::awaitable<void> presenter(Soak& soak, int session) {
   }
 }
 
-// A member watching steady session `session` on one instance, timing each pose.
-asio::awaitable<void> watcher(Soak& soak, int session, size_t instance) {
+// A member of `session` on one instance until the steady traffic ends, joining again after a
+// lost connection (an instance killed), each message it gets handed to `heard`.
+asio::awaitable<void> stay_joined(Soak& soak, size_t instance, const std::string& name, const std::string& session,
+                                  const std::function<void(const Message&)>& heard) {
   const auto executor = co_await asio::this_coro::executor;  // apart: GCC 12 and co_await inside a longer expression
-  const std::string name = "watcher-" + std::to_string(session), scene = scene_name(session);
   while (Clock::now() < soak.steady_until) {
-    auto peer = co_await join(soak.at(instance), name, scene);
+    auto peer = co_await join(soak.at(instance), name, session);
     if (!peer) {
       co_await sleep_for(std::chrono::milliseconds(500));
       continue;
     }
     asio::steady_timer done(executor, soak.steady_until);
     done.async_wait([peer](std::error_code) { peer->close(); });
-    while (auto m = co_await peer->next()) {
-      const auto* pose = std::get_if<CameraPose>(&*m);
-      if (!pose || pose->sequence >= soak.sent[size_t(session)].size()) continue;
-      const Clock::time_point sent = soak.sent[size_t(session)][pose->sequence];
-      if (sent == Clock::time_point{}) continue;
-      soak.latencies_ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - sent).count());
-      ++soak.poses_delivered;
-    }
+    while (auto m = co_await peer->next()) heard(*m);
     done.cancel();
   }
+}
+
+// A member watching steady session `session` on one instance, timing each pose.
+asio::awaitable<void> watcher(Soak& soak, int session, size_t instance) {
+  const std::string name = "watcher-" + std::to_string(session), scene = scene_name(session);
+  const std::function<void(const Message&)> timed = [&soak, session](const Message& m) {
+    const auto* pose = std::get_if<CameraPose>(&m);
+    if (!pose || pose->sequence >= soak.sent[size_t(session)].size()) return;
+    const Clock::time_point sent = soak.sent[size_t(session)][pose->sequence];
+    if (sent == Clock::time_point{}) return;
+    soak.latencies_ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - sent).count());
+    ++soak.poses_delivered;
+  };
+  co_await stay_joined(soak, instance, name, scene, timed);
+}
+
+// A member of the call on one instance for the whole run, keeping the names of its newest roster.
+asio::awaitable<void> call_observer(Soak& soak, size_t instance) {
+  const std::string name = "observer-" + std::to_string(instance), call = "call";
+  const std::function<void(const Message&)> kept = [&soak, &name](const Message& m) {
+    const auto* roster = std::get_if<Roster>(&m);
+    if (!roster) return;
+    std::vector<std::string>& names = soak.roster[name];
+    names.clear();
+    for (const CallMember& member : roster->members) names.push_back(member.name);
+  };
+  co_await stay_joined(soak, instance, name, call, kept);
 }
 
 // A visitor of a churn session: stays a while, then leaves politely or just drops.
@@ -284,29 +307,6 @@ asio::awaitable<void> call_member(Soak& soak, int index) {
     co_await sleep_for(std::chrono::seconds(25));
   }
   peer->close();
-}
-
-// A member of the call on one instance for the whole run, keeping the names of its newest roster.
-asio::awaitable<void> call_observer(Soak& soak, size_t instance) {
-  const auto executor = co_await asio::this_coro::executor;  // apart: GCC 12 and co_await inside a longer expression
-  const std::string name = "observer-" + std::to_string(instance), call = "call";
-  while (Clock::now() < soak.steady_until) {
-    auto peer = co_await join(soak.at(instance), name, call);
-    if (!peer) {
-      co_await sleep_for(std::chrono::milliseconds(500));
-      continue;
-    }
-    asio::steady_timer done(executor, soak.steady_until);
-    done.async_wait([peer](std::error_code) { peer->close(); });
-    while (auto m = co_await peer->next()) {
-      if (const auto* roster = std::get_if<Roster>(&*m)) {
-        std::vector<std::string>& names = soak.roster[name];
-        names.clear();
-        for (const CallMember& member : roster->members) names.push_back(member.name);
-      }
-    }
-    done.cancel();
-  }
 }
 
 // Starts visitors (5 a second) and call members (one every 2 s) until the churn ends.
