@@ -4,7 +4,8 @@
 // (call/playout.js, pinned to the C++) gives on the audio clock itself; each render quantum reads
 // its frames out of the ring and clears them. Nothing here waits on the page's thread, so a
 // stalled page or a hidden tab keeps hearing. The page is told, four times a second, what was
-// played, too late or dropped and each member's clock offset and delay (lip sync, voiceStats);
+// played, too late or dropped and each member's clock offset and delay (lip sync, voiceStats),
+// and how much sooner than its first packet any later one came (what the offset keeps of a slow start);
 // on request it is sent those figures at once, or what was played since the first voice (tests listen to it).
 import { PacketRing } from './audio_ring.js';
 import { kStartDelayMs, playoutMs } from './playout.js';
@@ -47,6 +48,7 @@ class PlayoutProcessor extends AudioWorkletProcessor {
     const nowMs = this.nowMs();
     let m = this.members.get(member);
     if (!m) this.members.set(member, (m = { offsetMs: nowMs - timeMs, delayMs: kStartDelayMs }));
+    m.earliestMs = Math.min(m.earliestMs ?? Infinity, nowMs - timeMs - m.offsetMs);  // how much sooner than the first a packet came
     const atMs = playoutMs(timeMs, m.offsetMs, m, nowMs);
     if (atMs === null) {
       ++this.late;
