@@ -26,7 +26,7 @@ void VoiceStream::send(std::shared_ptr<const protocol::Bytes> frame) {
     close();  // the page stopped reading: its voice goes back to its connection
     return;
   }
-  if (waiting_.size() >= kMaxWaiting) waiting_.pop_front(), ++dropped_;
+  if (waiting_.size() >= kMaxWaiting) waiting_.pop_front();
   waiting_.push_back(std::move(frame));
   wake_.cancel();
 }

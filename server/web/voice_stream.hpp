@@ -26,7 +26,6 @@ class VoiceStream : public std::enable_shared_from_this<VoiceStream> {
   void send(std::shared_ptr<const protocol::Bytes> frame);
   bool open() const { return open_; }
   void close();
-  uint64_t dropped() const { return dropped_; }
 
  private:
   asio::awaitable<void> write_loop(std::string head);
@@ -38,7 +37,6 @@ class VoiceStream : public std::enable_shared_from_this<VoiceStream> {
   asio::steady_timer wake_;  // the writer sleeps on it; send() cancels it
   std::optional<std::chrono::steady_clock::time_point> writing_since_;
   bool open_ = true;
-  uint64_t dropped_ = 0;
 };
 
 }  // namespace inkwire::server
