@@ -85,14 +85,18 @@ void SessionRegistry::ready_product(Session& session) {
 }
 
 std::shared_ptr<Session> SessionRegistry::add(StoredSession stored) {
-  const std::string name = stored.state.session;
-  if (sessions_.count(name)) return nullptr;
+  if (sessions_.count(stored.state.session)) return nullptr;
   try {
     store_.save_session(stored);
   } catch (const Error& e) {
-    log(LogLevel::Error, "session-not-added", {{"session", name}, {"reason", e.what()}});
+    log(LogLevel::Error, "session-not-added", {{"session", stored.state.session}, {"reason", e.what()}});
     return nullptr;
   }
+  return serve(std::move(stored));
+}
+
+std::shared_ptr<Session> SessionRegistry::serve(StoredSession stored) {
+  const std::string name = stored.state.session;
   auto session = std::make_shared<Session>(std::move(stored));
   ready_product(*session);
   if (on_added) on_added(*session);
@@ -117,7 +121,7 @@ void SessionRegistry::adopt_stored_elsewhere() {
   std::set<std::string> stored_names;
   for (StoredSession& stored : store_.sessions()) {
     stored_names.insert(stored.state.session);
-    if (!sessions_.count(stored.state.session)) add(std::move(stored));
+    if (!sessions_.count(stored.state.session)) serve(std::move(stored));  // already in the catalogue: not written again
   }
   for (auto it = sessions_.begin(); it != sessions_.end();) {
     if (it->second->state().kind != protocol::SessionKind::Turntable || stored_names.count(it->first)) {

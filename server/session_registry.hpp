@@ -36,6 +36,8 @@ class SessionRegistry {
   std::function<void(Session&)> on_removed;
 
  private:
+  // A session of the catalogue served from now on (readied, announced to on_added).
+  std::shared_ptr<Session> serve(StoredSession stored);
   void ready_product(Session& session);
   void sweep_unnamed_assets();
 
