@@ -33,4 +33,10 @@ FaceCropChoice follow_face(const protocol::FaceRegion& shown, const protocol::Fa
   return {.region = shown, .jumped = false};
 }
 
+PictureSize search_picture_size(int frame_width, int frame_height) {
+  const double scale = std::min(1.0, double(kFaceSearchWidth) / std::max(frame_width, frame_height));
+  const auto even = [&](int side) { return std::max(16, int(std::lround(side * scale / 2)) * 2); };
+  return {even(frame_width), even(frame_height)};
+}
+
 }  // namespace inkwire

@@ -23,4 +23,12 @@ struct FaceCropChoice {
 // region's longer side, moved into the frame, or the frame's shorter side when it is longer.
 FaceCropChoice follow_face(const protocol::FaceRegion& shown, const protocol::FaceRegion& reported, int frame_width, int frame_height);
 
+// The face video's picture while the face is not found: the whole frame scaled so neither side
+// passes kFaceSearchWidth (a portrait camera too: the server refuses a side over 320), even
+// sides (VP8 pictures are 4:2:0), at least 16.
+struct PictureSize {
+  int width = 0, height = 0;
+};
+PictureSize search_picture_size(int frame_width, int frame_height);
+
 }  // namespace inkwire

@@ -213,7 +213,7 @@ void Publisher::send_crop(const Image& frame) {
 }
 
 // The face video's next frame: the crop follows the server's region (face_crop.hpp), scaled to
-// 160 x 160; until the face is found, the whole frame scaled to 320 wide. A new picture size, a
+// 160 x 160; until the face is found, the whole frame scaled to at most 320 a side. A new picture size, a
 // jump of the crop or the server's asking starts the video again with a key frame.
 void Publisher::send_video(const Image& frame) {
   bool key = client_.take_key_frame_request() || video_restart_.exchange(false);
@@ -225,9 +225,9 @@ void Publisher::send_video(const Image& frame) {
     video_crop_ = protocol::FaceRegion{.found = false, .x = 0, .y = 0, .width = uint16_t(frame.width), .height = uint16_t(frame.height)};
   }
   int width = kCropSide, height = kCropSide;
-  if (!video_crop_.found) {  // the whole frame, even sides (VP8 pictures are 4:2:0)
-    width = std::min(kSearchWidth, frame.width) & ~1;
-    height = std::max(16, int(std::lround(double(frame.height) * width / frame.width / 2)) * 2);
+  if (!video_crop_.found) {  // the whole frame
+    const PictureSize size = search_picture_size(frame.width, frame.height);
+    width = size.width, height = size.height;
   }
   if (!video_encoder_ || video_encoder_->width() != width || video_encoder_->height() != height) {
     video_encoder_ = std::make_unique<FaceVideoEncoder>(width, height, options_.max_fps, options_.video_bitrate);

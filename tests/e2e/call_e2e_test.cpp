@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "client/call/face_crop.hpp"
 #include "client/net/session_client.hpp"
 #include "common/image.hpp"
 #include "e2e_support.hpp"
@@ -57,7 +58,8 @@ TEST(CallE2ETest, MembersAreSeenAndHeardAsThemselvesAndBadInputIsDroppedAndCount
       crop.x = region->x, crop.y = region->y, crop.width = region->width, crop.height = region->height;
       crop.jpeg = encode_image(resized(cropped(shown, crop.x, crop.y, crop.width, crop.height), 160, 160), "jpg", 90);
     } else {
-      crop.jpeg = encode_image(shown, "jpg", 90);
+      const PictureSize whole = search_picture_size(shown.width, shown.height);  // at most 320 a side (SPEC)
+      crop.jpeg = encode_image(resized(shown, whole.width, whole.height), "jpg", 90);
     }
     ada.send(crop);
     for (int k = 0; k < 5 && sent_voice < int(voice.size()); ++k, ++sent_voice) {

@@ -261,7 +261,13 @@ nlohmann::json face_crop_cases() {
     steps.push_back({{"shown", json_of(shown)}, {"reported", json_of(reported)}, {"region", json_of(choice.region)}, {"jumped", choice.jumped}});
     shown = choice.region;
   }
-  return {{"sides", {inkwire::kFaceVideoSide, inkwire::kFaceSearchWidth}}, {"steps", steps}};
+  // The whole frame's picture while no face is found: landscape, portrait, small, odd sizes.
+  nlohmann::json search = nlohmann::json::array();
+  for (const auto& [w, h] : std::vector<std::pair<int, int>>{{640, 480}, {565, 800}, {1280, 720}, {300, 200}, {641, 479}, {20, 1000}}) {
+    const inkwire::PictureSize size = inkwire::search_picture_size(w, h);
+    search.push_back({{"frame", {w, h}}, {"picture", {size.width, size.height}}});
+  }
+  return {{"sides", {inkwire::kFaceVideoSide, inkwire::kFaceSearchWidth}}, {"steps", steps}, {"search_pictures", search}};
 }
 
 TEST(WarpVectorsTest, AFaceThatStaysKeepsItsCropOneThatDriftsMovesItAndOneThatJumpsStartsAgain) {

@@ -1,7 +1,7 @@
 // A call member's camera in the browser (SPEC F8, F17), as client/call/publisher.cpp sends it:
 // the face as VP8 video (WebCodecs' VideoEncoder): 160 x 160 pictures of a rectangle that
 // follows the region the server reports (followFace, the rule of client/call/face_crop.cpp,
-// both pinned by tests/golden/warp-vectors.json), or the whole frame scaled to 320 px wide until it
+// both pinned by tests/golden/warp-vectors.json), or the whole frame scaled to at most 320 px a side until it
 // finds one, at most 15 a second, a key frame when the picture size changes, the rectangle
 // jumps or the server asks. Where the engine has no VP8 encoder, JPEG crops as before
 // (`format` says which). The neutral photo: the frame shown when it is taken. Pictures stay in
@@ -44,6 +44,14 @@ function squared(r, frameWidth, frameHeight) {
 // The rectangle to show next, square (the video's picture is, and a face stretched one way
 // reads as another expression): `shown` ({found: false}: the whole frame) kept while the face
 // stays well inside it, moved when the face drifted, a jump (a key frame) when it went far.
+// The face video's picture while the face is not found, as client/call/face_crop.hpp's
+// search_picture_size (pinned with it): the whole frame, neither side past kFaceSearchWidth,
+// even sides of at least 16.
+export function searchPictureSize(W, H) {
+  const scale = Math.min(1, kFaceSearchWidth / Math.max(W, H)), even = (side) => Math.max(16, Math.round((side * scale) / 2) * 2);
+  return [even(W), even(H)];
+}
+
 export function followFace(shown, reportedRegion, frameWidth, frameHeight) {
   const reported = squared(reportedRegion, frameWidth, frameHeight);
   if (!shown.found) return { region: reported, jumped: true };
@@ -108,10 +116,7 @@ class FaceVideo {
       this.shown = { found: false, x: 0, y: 0, width: W, height: H };
     }
     let size = [kFaceVideoSide, kFaceVideoSide];
-    if (!this.shown.found) {  // the whole frame, even sides (VP8 pictures are 4:2:0)
-      const w = Math.min(kFaceSearchWidth, W) & ~1;
-      size = [w, Math.max(16, Math.round(H * w / W / 2) * 2)];
-    }
+    if (!this.shown.found) size = searchPictureSize(W, H);  // the whole frame
     if (!this.encoder || this.size[0] !== size[0] || this.size[1] !== size[1]) this.open(size);
     const rect = [this.shown.x, this.shown.y, this.shown.width, this.shown.height];
     const timestamp = time_ms * 1000;

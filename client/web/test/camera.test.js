@@ -5,7 +5,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { test } from 'node:test';
 
-import { followFace, kFaceSearchWidth, kFaceVideoSide } from '../call/camera.js';
+import { followFace, kFaceSearchWidth, kFaceVideoSide, searchPictureSize } from '../call/camera.js';
 
 test('a face that stays keeps its crop, one that drifts moves it, one that jumps starts again, as in C++', () => {
   const golden = JSON.parse(readFileSync(new URL('../../../tests/golden/warp-vectors.json', import.meta.url))).face_crop;
@@ -14,5 +14,14 @@ test('a face that stays keeps its crop, one that drifts moves it, one that jumps
     const choice = followFace(step.shown, step.reported, 640, 480);
     assert.deepEqual(choice.region, step.region, JSON.stringify(step));
     assert.equal(choice.jumped, step.jumped, JSON.stringify(step));
+  }
+});
+
+test('the whole frame is sent at the size C++ sends it, neither side past the search width (a portrait camera too)', () => {
+  const golden = JSON.parse(readFileSync(new URL('../../../tests/golden/warp-vectors.json', import.meta.url))).face_crop;
+  assert.ok(golden.search_pictures.length > 0);
+  for (const { frame, picture } of golden.search_pictures) {
+    assert.deepEqual(searchPictureSize(frame[0], frame[1]), picture, JSON.stringify(frame));
+    assert.ok(Math.max(...picture) <= kFaceSearchWidth, JSON.stringify(picture));
   }
 });
