@@ -17,36 +17,47 @@ double ms_between(CallAudio::Clock::time_point a, CallAudio::Clock::time_point b
 
 void CallAudio::add(const protocol::VoiceFrame& frame, Clock::time_point arrived) {
   auto& slot = members_[frame.member];
-  if (!slot) {
-    slot = std::make_unique<Member>();
-    slot->offset_ms = ms_between(start_, arrived) - double(frame.time_ms);
-  }
+  if (!slot) slot = std::make_unique<Member>();
   Member& m = *slot;
-  const std::optional<double> at_ms = playout_ms(frame.time_ms, m.offset_ms, m.delay_ms, double(mixed_until_) * 1000.0 / kCallRate);
-  if (!at_ms) {
+  // Every packet is decoded, played or not, so the decoder's state follows the stream. A gap since
+  // the member's last packet (one lost) is concealed, so the voice does not click.
+  std::vector<float> pcm;
+  if (m.next_ms && frame.time_ms > *m.next_ms && frame.time_ms - *m.next_ms <= 120) {
+    pcm = m.decoder.conceal(int((frame.time_ms - *m.next_ms) * kCallRate / 1000));
+  }
+  const size_t concealed = pcm.size();
+  const std::vector<float> decoded = m.decoder.decode(frame.opus);
+  if (decoded.empty()) return;
+  pcm.insert(pcm.end(), decoded.begin(), decoded.end());
+  const double duration_ms = double(decoded.size()) * 1000.0 / kCallRate;
+  const Playout placed = place_voice(frame.time_ms, duration_ms, ms_between(start_, arrived), double(mixed_until_) * 1000.0 / kCallRate, m.clock);
+  if (placed.kind == Playout::Kind::Late) {
     ++late_;
     m.next_ms.reset();
     return;
   }
-  const int64_t at = std::max<int64_t>(std::llround(*at_ms * kCallRate / 1000.0), mixed_until_);
-  std::vector<float> pcm;
-  // A gap since the member's last packet (one lost) is concealed, so the voice does not click.
-  if (m.next_ms && frame.time_ms > *m.next_ms && frame.time_ms - *m.next_ms <= 120) {
-    pcm = m.decoder.conceal(int((frame.time_ms - *m.next_ms) * kCallRate / 1000));
+  m.next_ms = frame.time_ms + uint32_t(std::lround(duration_ms));
+  if (placed.kind == Playout::Kind::Skip) {
+    ++skipped_;
+    return;
   }
-  const int64_t first = at - int64_t(pcm.size());
-  const std::vector<float> decoded = m.decoder.decode(frame.opus);
-  if (decoded.empty()) return;
-  pcm.insert(pcm.end(), decoded.begin(), decoded.end());
-  m.next_ms = frame.time_ms + uint32_t(decoded.size() * 1000 / kCallRate);
-  const int64_t from = std::max(first, mixed_until_) - mixed_until_, to = first + int64_t(pcm.size()) - mixed_until_;
+  // What is played from where: the concealment just before the packet, or when the packet's start
+  // is skipped, its rest alone (the gap concealed is what the offset caught up).
+  size_t drop = 0;
+  int64_t first = std::llround(placed.at_ms * kCallRate / 1000.0);
+  if (placed.skip_ms > 0) {
+    drop = std::min(pcm.size(), concealed + size_t(std::lround(placed.skip_ms * kCallRate / 1000.0)));
+  } else {
+    first -= int64_t(concealed);
+  }
+  const int64_t from = std::max(first, mixed_until_) - mixed_until_, to = first + int64_t(pcm.size() - drop) - mixed_until_;
   if (to > kMaxAhead) {
     ++late_;  // far ahead of the clock: a clock jump; start the member's mapping again
     members_.erase(frame.member);
     return;
   }
   if (int64_t(ahead_.size()) < to) ahead_.resize(size_t(to), 0.0f);
-  for (int64_t i = from; i < to; ++i) ahead_[size_t(i)] += pcm[size_t(i - (first - mixed_until_))];
+  for (int64_t i = from; i < to; ++i) ahead_[size_t(i)] += pcm[drop + size_t(i - (first - mixed_until_))];
   ++played_;
 }
 
@@ -64,7 +75,8 @@ std::vector<float> CallAudio::take(Clock::time_point until) {
 std::optional<CallAudio::Clock::time_point> CallAudio::local_time(uint16_t member, uint32_t time_ms) const {
   const auto it = members_.find(member);
   if (it == members_.end()) return std::nullopt;
-  const double ms = double(time_ms) + it->second->offset_ms + it->second->delay_ms;
+  const VoiceClock& clock = it->second->clock;
+  const double ms = double(time_ms) + clock.offset_ms.value_or(0) + clock.delay_ms;
   return start_ + std::chrono::microseconds(std::llround(ms * 1000.0));
 }
 

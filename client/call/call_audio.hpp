@@ -1,6 +1,6 @@
 #pragma once
 // What a call member hears (SPEC F9): every member's Opus packets decoded and mixed on this
-// member's own clock, each member's clock mapped to it by the first packet's arrival plus a
+// member's own clock, each member's clock mapped to it by its quickest packets' arrival plus a
 // jitter delay, so packets that come early or bunched play at their time. A late packet raises
 // its member's delay (playout_delay.hpp) and plays; one later than the largest delay is dropped
 // (counted), never played late. The same mapping tells when a face code stamped on a member's
@@ -31,12 +31,12 @@ class CallAudio {
 
   uint64_t late() const { return late_; }        // packets dropped for coming after their time
   uint64_t played() const { return played_; }    // packets mixed in
+  uint64_t skipped() const { return skipped_; }  // packets not played as the offset caught up with the quickest
 
  private:
   struct Member {
     VoiceDecoder decoder;
-    double offset_ms = 0;            // local ms (since start_) - member ms, from the first packet
-    double delay_ms = kStartDelayMs;  // the jitter buffer's, raised by late packets
+    VoiceClock clock;                // its mapping to local ms (since start_)
     std::optional<uint32_t> next_ms; // where the member's next packet should start, for concealing gaps
   };
 
@@ -44,7 +44,7 @@ class CallAudio {
   std::map<uint16_t, std::unique_ptr<Member>> members_;
   int64_t mixed_until_ = 0;    // samples since start_ handed out by take()
   std::vector<float> ahead_;   // mixed samples from mixed_until_ on
-  uint64_t late_ = 0, played_ = 0;
+  uint64_t late_ = 0, played_ = 0, skipped_ = 0;
 };
 
 }  // namespace inkwire

@@ -229,20 +229,28 @@ nlohmann::json turntable_cases() {
   return {{"zoom_range", {TurntableOrbit::kMinZoom, TurntableOrbit::kMaxZoom}}, {"poses", poses}, {"zoom_of_scale", held}};
 }
 
-// A member's voice packets, 60 ms apart, reaching a listener whose clock has played `now` ms:
-// on time, bunched, 30 ms late (the delay grows), on time again at the new delay, 49.75 ms late
-// (it grows again), on time, 100 ms late: beyond the largest delay (dropped), then on time.
+// A member's 20 ms voice packets, one after another, reaching a listener when `arrived` whose
+// clock has played `played` ms: a first packet that came slowly, one 18.25 ms sooner (its start
+// skipped as the offset catches up), one a little sooner (under kCatchUpMs: played whole), one
+// 41 ms sooner (skipped whole), on time, 78 ms late (the delay grows), on time, 190 ms late:
+// beyond the largest delay (late), then on time, then 11.5 ms sooner again.
 nlohmann::json playout_cases() {
-  const double offset = 1000.25;
-  const std::vector<std::pair<double, double>> packets = {{0, 1000.25}, {60, 1100},  {120, 1150}, {180, 1290.25}, {240, 1330},
-                                                          {300, 1480},  {360, 1540}, {420, 1720}, {480, 1650},    {540, 1700}};
-  double delay = kStartDelayMs;
+  struct Packet {
+    double time, arrived, played;
+  };
+  const std::vector<Packet> packets = {{0, 1030.25, 1000}, {20, 1032, 1010},  {40, 1045, 1040},   {60, 1031, 1040},   {80, 1075, 1100},
+                                       {100, 1250, 1250},  {120, 1262, 1255}, {140, 1500, 1500}, {160, 1300, 1290}, {180, 1160.5, 1295}};
+  constexpr double kDuration = 20;
+  VoiceClock clock;
+  const char* kinds[] = {"play", "skip", "late"};
   nlohmann::json steps = nlohmann::json::array();
-  for (const auto& [time, now] : packets) {
-    const std::optional<double> at = playout_ms(time, offset, delay, now);
-    steps.push_back({{"time_ms", time}, {"now_ms", now}, {"at_ms", at ? nlohmann::json(*at) : nlohmann::json()}, {"delay_ms", delay}});
+  for (const Packet& p : packets) {
+    const Playout placed = place_voice(p.time, kDuration, p.arrived, p.played, clock);
+    steps.push_back({{"time_ms", p.time}, {"duration_ms", kDuration}, {"arrived_ms", p.arrived}, {"played_ms", p.played},
+                     {"kind", kinds[int(placed.kind)]}, {"at_ms", placed.at_ms}, {"skip_ms", placed.skip_ms},
+                     {"offset_ms", *clock.offset_ms}, {"delay_ms", clock.delay_ms}});
   }
-  return {{"offset_ms", offset}, {"limits", {kStartDelayMs, kDelayMarginMs, kMaxDelayMs}}, {"steps", steps}};
+  return {{"limits", {kStartDelayMs, kDelayMarginMs, kMaxDelayMs, kCatchUpMs}}, {"steps", steps}};
 }
 
 // The face video's rectangle following a face the server reports (SPEC F17) in a 640 x 480
@@ -445,35 +453,50 @@ TEST(WarpVectorsTest, PhotosComeForTheViewFirstThenItsLevelThenNearestFirst) {
   EXPECT_LE(c["steps"][7]["fetched"].size(), c["steps"][7]["dropped"].size() + 1) << "a small turn swaps a few, it does not fetch all again";
 }
 
-// What the playout vectors stand for: a packet plays no earlier than the clock has played; the
-// delay never shrinks, grows only for a late packet, by its lateness and the margin, and stays
-// within the largest; a packet beyond it is dropped and changes nothing.
-TEST(WarpVectorsTest, ALatePacketRaisesTheDelayOnceAndOneTooLateIsDropped) {
+// What the playout vectors stand for: a packet plays no earlier than the clock has played and,
+// when it follows the one before, exactly where that one's part played ended unless the delay
+// grew (nothing overlaps, nothing gaps, skipped starts and whole skips included); the offset
+// never grows and moves only for a packet kCatchUpMs sooner; the delay never shrinks, grows only
+// for a late packet, by its lateness and the margin, and stays within the largest; a packet
+// beyond it plays nothing and changes nothing.
+TEST(WarpVectorsTest, TheVoiceRuleCatchesUpWithQuickPacketsAndWaitsForLateOnesWithoutOverlapOrGap) {
   const nlohmann::json c = playout_cases();
+  std::optional<double> offset, ends;  // the offset so far, and where the last packet's played part ends
   double delay = kStartDelayMs;
-  int raised = 0, dropped = 0;
+  std::map<std::string, int> kinds;
+  int raised = 0;
   for (const nlohmann::json& step : c["steps"]) {
-    const double on_time = step["time_ms"].get<double>() + c["offset_ms"].get<double>() + delay, now = step["now_ms"];
-    if (step["at_ms"].is_null()) {
-      ++dropped;
-      EXPECT_GT(delay + (now - on_time) + kDelayMarginMs, kMaxDelayMs);
-      EXPECT_EQ(step["delay_ms"].get<double>(), delay);
-      continue;
-    }
-    EXPECT_GE(step["at_ms"].get<double>(), now);
+    const double time = step["time_ms"], arrived = step["arrived_ms"], played = step["played_ms"], duration = step["duration_ms"];
+    const std::string kind = step["kind"];
+    ++kinds[kind];
+    const double sooner = offset ? *offset - (arrived - time) : 0;
+    EXPECT_LE(step["offset_ms"].get<double>(), offset.value_or(1e9)) << "packet " << time;
     EXPECT_GE(step["delay_ms"].get<double>(), delay);
     EXPECT_LE(step["delay_ms"].get<double>(), kMaxDelayMs);
-    if (on_time < now) {
-      ++raised;
-      EXPECT_DOUBLE_EQ(step["at_ms"].get<double>(), now + kDelayMarginMs);
+    if (kind == "late") {
+      EXPECT_EQ(step["delay_ms"].get<double>(), delay) << "packet " << time;
+      ends.reset();
+    } else if (kind == "skip") {
+      EXPECT_GE(sooner, duration) << "packet " << time;
+      EXPECT_DOUBLE_EQ(step["offset_ms"].get<double>(), *offset - duration);
     } else {
-      EXPECT_EQ(step["delay_ms"].get<double>(), delay);
-      EXPECT_EQ(step["at_ms"].get<double>(), on_time);
+      const double at = step["at_ms"], skip = step["skip_ms"];
+      EXPECT_GE(at, played) << "packet " << time;
+      EXPECT_EQ(skip > 0, sooner >= kCatchUpMs) << "packet " << time;
+      if (step["delay_ms"].get<double>() > delay) {
+        ++raised;
+        EXPECT_DOUBLE_EQ(at, played + kDelayMarginMs) << "packet " << time;
+      } else if (ends) {
+        EXPECT_DOUBLE_EQ(at, *ends) << "packet " << time << " does not begin where the one before ended";
+      }
+      ends = at + duration - skip;
     }
+    offset = step["offset_ms"].get<double>();
     delay = step["delay_ms"];
   }
-  EXPECT_EQ(raised, 2);
-  EXPECT_EQ(dropped, 1);
+  EXPECT_EQ(raised, 1);
+  EXPECT_EQ(kinds["late"], 1);
+  EXPECT_EQ(kinds["skip"], 1);
 }
 
 }  // namespace

@@ -77,9 +77,10 @@ MAX_DELAY_MS = 300  # client/web/call/playout.js kMaxDelayMs
 PLAYS_AT = """const e = ELEMENT, l = e.link, nat = e.roster?.members.find((m) => m.name === 'Nat');
   const m = nat && l.stats?.members.get(nat.member);
   if (!m || !l.context?.getOutputTimestamp) return null;
-  // (WebKitGTK's getOutputTimestamp() answers a performanceTime of 0: no output figure there.)
+  // (WebKitGTK's getOutputTimestamp() answers a performanceTime of 0, or one seconds away from
+  // performance.now(): no output figure there.)
   const ts = l.context.getOutputTimestamp(), scheduled = performance.timeOrigin + performance.now() + (m.offsetMs + m.delayMs - l.context.currentTime * 1000);
-  const output = ts.performanceTime > 0 ? performance.timeOrigin + ts.performanceTime + (m.offsetMs + m.delayMs - ts.contextTime * 1000) : null;
+  const output = ts.performanceTime > 0 && Math.abs(performance.now() - ts.performanceTime) < 1000 ? performance.timeOrigin + ts.performanceTime + (m.offsetMs + m.delayMs - ts.contextTime * 1000) : null;
   return [output, scheduled, m.earliestMs];"""
 NAT_FRAME_MS = 60  # the native client's voice packets (client/call/publisher.hpp)
 
@@ -215,9 +216,9 @@ try:
                 time.sleep(1)  # what is in flight lands
                 after = driver.execute_script(counts)
                 received = after["voiceReceived"] - before["voiceReceived"]
-                played, late, dropped = (after[k] - before[k] for k in ("played", "late", "dropped"))
+                played, late, skipped, dropped = (after[k] - before[k] for k in ("played", "late", "skipped", "dropped"))
                 print(f"{name}: stalled {stall} ms every 2 s for {STALL_SECONDS} s: {received} packets received, {played} played, {late} late, "
-                      f"{dropped} dropped, delay {after['delayMs']:.0f} ms, the longest wait between two packets {after['voiceGapMs']} ms; "
+                      f"{skipped} skipped as the offset caught up, {dropped} dropped, delay {after['delayMs']:.0f} ms, the longest wait between two packets {after['voiceGapMs']} ms; "
                       f"{after['voiceSent']} sent, {after['encoderErrors']} encoder and {after['decoderErrors']} decoder errors")
                 # Mouth to ear: Nat's moment t is heard at its clock's origin + t (the file's frames go out
                 # as they start: a live microphone adds the frame, 60 ms, as the native bench counts it).
@@ -229,9 +230,10 @@ try:
                 output = sorted(at - origin + NAT_FRAME_MS for at in plays_at) if origin else []
                 print(f"{name}: mouth to ear p50 {p(mixed, 0.5):.0f} ms, p99 {p(mixed, 0.99):.0f} ms to the playout's mix; "
                       f"p99 {p(output, 0.99):.0f} ms to the page's audio output ({len(mixed)} samples); Nat's first packet came "
-                      f"{-(earliest or 0):.0f} ms later than the quickest after it (the jitter rule's offset keeps that)")
+                      f"{-(earliest or 0):.0f} ms later than the quickest after it (the jitter rule's offset catches that up)")
                 rows.append({"variant": f"browser,engine={name},stall={stall}",
                              "counters": {"packets_played_fraction": played / received if received else 0, "packets_late": late,
+                                          "packets_skipped": skipped,
                                           "packets_received": received, "delay_ms": after["delayMs"], "voice_gap_ms_max": after["voiceGapMs"],
                                           "mouth_to_ear_ms_p99": p(mixed, 0.99), "mouth_to_ear_output_ms_p99": p(output, 0.99),
                                           "first_packet_late_ms": -(earliest or 0)}})

@@ -4,11 +4,11 @@
 // (call/playout.js, pinned to the C++) gives on the audio clock itself; each render quantum reads
 // its frames out of the ring and clears them. Nothing here waits on the page's thread, so a
 // stalled page or a hidden tab keeps hearing. The page is told, four times a second, what was
-// played, too late or dropped and each member's clock offset and delay (lip sync, voiceStats),
-// and how much sooner than its first packet any later one came (what the offset keeps of a slow start);
+// played, too late, skipped or dropped and each member's clock offset and delay (lip sync,
+// voiceStats), and how much sooner than its first packet any later one came (a slow start);
 // on request it is sent those figures at once, or what was played since the first voice (tests listen to it).
 import { PacketRing } from './audio_ring.js';
-import { kStartDelayMs, playoutMs } from './playout.js';
+import { placeVoice, voiceClock } from './playout.js';
 import { resampled } from './resample.js';
 
 const kRingSeconds = 2, kStatsEveryMs = 250, kOpusRate = 48000, kMaxRecordingSeconds = 120;
@@ -17,8 +17,8 @@ class PlayoutProcessor extends AudioWorkletProcessor {
   constructor() {
     super();
     this.mix = new Float32Array(sampleRate * kRingSeconds);  // indexed by frame modulo its length
-    this.members = new Map();  // member -> {offsetMs (this clock minus the member's), delayMs}
-    this.played = this.late = this.dropped = 0;
+    this.members = new Map();  // member -> its voiceClock (call/playout.js), firstMs, earliestMs
+    this.played = this.late = this.skipped = this.dropped = 0;
     this.lastStats = 0;
     this.recording = null;     // [Float32Array] since the first voice, while asked
     this.port.onmessage = (e) => this.command(e.data);
@@ -47,20 +47,24 @@ class PlayoutProcessor extends AudioWorkletProcessor {
   packet({ member, timeMs, samples }) {
     const nowMs = this.nowMs();
     let m = this.members.get(member);
-    if (!m) this.members.set(member, (m = { offsetMs: nowMs - timeMs, delayMs: kStartDelayMs }));
-    m.earliestMs = Math.min(m.earliestMs ?? Infinity, nowMs - timeMs - m.offsetMs);  // how much sooner than the first a packet came
-    const atMs = playoutMs(timeMs, m.offsetMs, m, nowMs);
-    if (atMs === null) {
+    if (!m) this.members.set(member, (m = { ...voiceClock(), firstMs: nowMs - timeMs }));
+    m.earliestMs = Math.min(m.earliestMs ?? Infinity, nowMs - timeMs - m.firstMs);  // how much sooner than the first a packet came
+    const placed = placeVoice(timeMs, (samples.length / kOpusRate) * 1000, nowMs, nowMs, m);
+    if (placed.kind === 'late') {
       ++this.late;
       return;
     }
-    const mine = resampled(samples, kOpusRate, sampleRate);
-    const start = Math.round((atMs / 1000) * sampleRate), length = this.mix.length;
-    if (start + mine.length > currentFrame + length) {
+    if (placed.kind === 'skip') {
+      ++this.skipped;
+      return;
+    }
+    const mine = resampled(samples, kOpusRate, sampleRate), skip = Math.round((placed.skipMs / 1000) * sampleRate);
+    const start = Math.round((placed.atMs / 1000) * sampleRate), length = this.mix.length;
+    if (start + mine.length - skip > currentFrame + length) {
       ++this.dropped;  // further ahead than the mix holds: a member's clock that jumped
       return;
     }
-    for (let i = 0; i < mine.length; ++i) this.mix[(start + i) % length] += mine[i];
+    for (let i = skip; i < mine.length; ++i) this.mix[(start + i - skip) % length] += mine[i];
     ++this.played;
     if (this.recording && !this.recording.started) this.recording.started = true;
   }
@@ -81,7 +85,7 @@ class PlayoutProcessor extends AudioWorkletProcessor {
 
   postStats() {
     const nowMs = (this.lastStats = this.nowMs());
-    this.port.postMessage({ stats: { played: this.played, late: this.late, dropped: this.dropped, nowMs, members: [...this.members] } });
+    this.port.postMessage({ stats: { played: this.played, late: this.late, skipped: this.skipped, dropped: this.dropped, nowMs, members: [...this.members] } });
   }
 }
 

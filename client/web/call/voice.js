@@ -65,7 +65,7 @@ export class CallLink {
     this.shared = !!globalThis.crossOriginIsolated && typeof SharedArrayBuffer === 'function';
     this.session = null;
     this.status = { voiceSent: 0, voiceReceived: 0, encoderErrors: 0, decoderErrors: 0 };
-    this.stats = { played: 0, late: 0, dropped: 0, nowMs: 0, members: new Map() };
+    this.stats = { played: 0, late: 0, skipped: 0, dropped: 0, nowMs: 0, members: new Map() };
     this.reason = new Promise((resolve) => (this.ready = resolve));
     this.audio = voiceUnsupported() ? null : this.buildAudio();
   }
@@ -167,10 +167,12 @@ export class CallLink {
     if (d.recording) this.recordingArrived?.({ sampleRate: d.sampleRate, samples: d.recording });
   }
 
-  // What this member heard: {played, late, dropped, delayMs} (delayMs the largest member's delay).
+  // What this member heard: {played, late, dropped, delayMs, skipped} (delayMs the largest member's
+  // delay; skipped the packets not played as a member's offset caught up with its quickest).
   get voiceStats() {
     const delays = [...this.stats.members.values()].map((m) => m.delayMs);
-    return { played: this.stats.played, late: this.stats.late, dropped: this.stats.dropped, delayMs: delays.length ? Math.max(...delays) : 0 };
+    const { played, late, dropped, skipped } = this.stats;
+    return { played, late, dropped, delayMs: delays.length ? Math.max(...delays) : 0, skipped };
   }
 
   // When `member`'s moment `timeMs` plays, in this page's performance.now() ms; null before its voice.

@@ -12,7 +12,7 @@
 // joins as a listener and says why (`reason`).
 // Attributes: server, session, token, name, muted, camera ("off"). Sets `joined` once in the
 // call; properties `members`: [{name, speaking, expression}], `voiceStats` ({played, late,
-// dropped, delayMs}: what it heard) and `reason` ('' or why this engine cannot carry its voice);
+// dropped, delayMs, skipped}: what it heard) and `reason` ('' or why this engine cannot carry its voice);
 // method join() does what the Join button does, hangUp() what Leave does (a lost connection is
 // joined again, under the same name, until then); counters voiceSent and
 // camera.sent say what went out; `joinedAt` and `firstFaceAt` (performance.now() of joining and
@@ -77,7 +77,7 @@ export class InkwireCall extends FacesMixin(PublishingMixin(MembershipMixin(Prej
     this.roster = { you: 0, members: [] };
   }
 
-  get voiceStats() { return this.link?.voiceStats ?? { played: 0, late: 0, dropped: 0, delayMs: 0 }; }
+  get voiceStats() { return this.link?.voiceStats ?? { played: 0, late: 0, dropped: 0, delayMs: 0, skipped: 0 }; }
   get voiceSent() { return this.link?.status.voiceSent ?? 0; }
 
   get members() {
