@@ -33,6 +33,9 @@ fs::path clip_of(const fs::path& dir, const fs::path& first, const fs::path& the
   return dir;
 }
 
+// A smile, or a laugh: an open smile read as one (the call bench counts it so too).
+bool is_smile(uint8_t code) { return expression_from_code(code) == Expression::Smile || expression_from_code(code) == Expression::Laugh; }
+
 uint64_t dropped(ServerUnderTest& server, const std::string& reason) {
   const std::string metrics = metrics_of(server), key = "inkwire_call_dropped_total{reason=\"" + reason + "\"} ";
   const size_t at = metrics.find(key);
@@ -43,16 +46,19 @@ uint64_t dropped(ServerUnderTest& server, const std::string& reason) {
 
 TEST(FaceVideoE2ETest, AFaceSentAsVideoIsReadAsWellAsJpegAtAFractionOfTheBits) {
   if (!fs::exists(kFaceModel) || !fs::exists(kDlibPhoto)) GTEST_SKIP() << "libdlib-data's model or libdlib-dev's example photo is missing";
-  const bool yale = fs::exists(kYale / "subject02_normal.png");
+  // Subject 01 smiles showing his teeth: subject 02's smile, under a moustache, is read as a smile
+  // or as a wink depending on where the crop falls (one CI run of many saw the wink throughout).
+  const bool yale = fs::exists(kYale / "subject01_normal.png");
   if (!yale) std::printf("../shared/data/yalefaces is absent: the photo of libdlib's examples stands in, and the smile is not checked\n");
   const fs::path dir = output_dir("face-video");
   ServerUnderTest server(dir, {{"http", "127.0.0.1:0"}, {"sessions", {{{"name", "call"}, {"kind", "conference"}}}}});
-  const fs::path clip = yale ? clip_of(dir / "clip", kYale / "subject02_normal.png", kYale / "subject02_happy.png")
+  const fs::path clip = yale ? clip_of(dir / "clip", kYale / "subject01_normal.png", kYale / "subject01_happy.png")
                              : clip_of(dir / "clip", kDlibPhoto, kDlibPhoto);
   SessionClient ada(server.address(), "Ada"), listener(server.address(), "Listener");
   for (SessionClient* c : {&ada, &listener}) c->join("call", "");
   uint16_t ada_number = 0;
   uint64_t pictures = 0, bytes = 0;
+  std::vector<std::pair<uint32_t, uint8_t>> read;  // what Ada's face was read as from 3 s on, and the picture's time
   {
     Publisher publisher(ada, PublisherOptions{.camera = clip.string(), .crops = PublisherOptions::Crops::Vp8});
     ASSERT_TRUE(eventually([&] { return named(listener.roster(), "Ada") != nullptr; }));
@@ -62,7 +68,10 @@ TEST(FaceVideoE2ETest, AFaceSentAsVideoIsReadAsWellAsJpegAtAFractionOfTheBits) {
     std::this_thread::sleep_for(std::chrono::milliseconds(3000));
     const auto smiling = [&] {
       const auto faces = listener.member_faces();
-      return faces.count(ada_number) && expression_from_code(faces.at(ada_number).expression.code) == Expression::Smile;
+      if (!faces.count(ada_number)) return false;
+      const protocol::MemberFace& f = faces.at(ada_number);
+      if (read.empty() || read.back().second != f.expression.code) read.emplace_back(f.time_ms, f.expression.code);
+      return is_smile(f.expression.code);
     };
     if (yale) eventually(smiling);
     pictures = publisher.crops_sent(), bytes = publisher.bytes_sent();
@@ -71,7 +80,11 @@ TEST(FaceVideoE2ETest, AFaceSentAsVideoIsReadAsWellAsJpegAtAFractionOfTheBits) {
   ASSERT_TRUE(eventually([&] { return listener.member_faces().count(ada_number); }));
   const protocol::MemberFace face = listener.member_faces().at(ada_number);
   EXPECT_EQ(face.source, protocol::FaceSource::Camera);
-  if (yale) EXPECT_EQ(expression_from_code(face.expression.code), Expression::Smile) << "neutral then smile arrives as " << int(face.expression.code);
+  if (yale) {
+    std::string seen;
+    for (const auto& [time_ms, code] : read) seen += " " + std::to_string(code) + " at " + std::to_string(time_ms) + " ms;";
+    EXPECT_TRUE(is_smile(face.expression.code)) << "neutral then smile arrives as " << int(face.expression.code) << "; read as" << seen;
+  }
   EXPECT_EQ(dropped(server, "video-unreadable"), 0u) << "the client's own video was refused";
   // The neutral photo (a JPEG of ~30 KB) is in `bytes` too; the video's pictures are a few hundred bytes.
   ASSERT_GT(pictures, 40u);
