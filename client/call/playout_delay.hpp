@@ -18,7 +18,7 @@
 
 namespace inkwire {
 
-inline constexpr double kStartDelayMs = 80, kDelayMarginMs = 20, kMaxDelayMs = 300, kCatchUpMs = 10;
+inline constexpr double kStartDelayMs = 80, kDelayMarginMs = 20, kMaxDelayMs = 300, kCatchUpMs = 2;
 
 // One member's mapping to this clock (ms).
 struct VoiceClock {

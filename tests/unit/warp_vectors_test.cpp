@@ -231,14 +231,14 @@ nlohmann::json turntable_cases() {
 
 // A member's 20 ms voice packets, one after another, reaching a listener when `arrived` whose
 // clock has played `played` ms: a first packet that came slowly, one 18.25 ms sooner (its start
-// skipped as the offset catches up), one a little sooner (under kCatchUpMs: played whole), one
+// skipped as the offset catches up), one 1.5 ms sooner (under kCatchUpMs: played whole), one
 // 41 ms sooner (skipped whole), on time, 78 ms late (the delay grows), on time, 190 ms late:
 // beyond the largest delay (late), then on time, then 11.5 ms sooner again.
 nlohmann::json playout_cases() {
   struct Packet {
     double time, arrived, played;
   };
-  const std::vector<Packet> packets = {{0, 1030.25, 1000}, {20, 1032, 1010},  {40, 1045, 1040},   {60, 1031, 1040},   {80, 1075, 1100},
+  const std::vector<Packet> packets = {{0, 1030.25, 1000}, {20, 1032, 1010},  {40, 1050.5, 1040},   {60, 1031, 1040},   {80, 1075, 1100},
                                        {100, 1250, 1250},  {120, 1262, 1255}, {140, 1500, 1500}, {160, 1300, 1290}, {180, 1160.5, 1295}};
   constexpr double kDuration = 20;
   VoiceClock clock;

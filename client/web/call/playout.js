@@ -4,7 +4,7 @@
 // playout worklet (call/playout_worklet.js), which applies it on the audio thread: no global
 // of a page or a worker is used here.
 
-export const kStartDelayMs = 80, kDelayMarginMs = 20, kMaxDelayMs = 300, kCatchUpMs = 10;
+export const kStartDelayMs = 80, kDelayMarginMs = 20, kMaxDelayMs = 300, kCatchUpMs = 2;
 
 // A member's mapping to this clock: {offsetMs (this clock minus the member's; null before its
 // first packet), delayMs}.
