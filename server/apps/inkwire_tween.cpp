@@ -8,6 +8,11 @@
 //       landmarks found automatically between those two frames (NCC). The frames it replaces
 //       are compared with what the input had there: PSNR against holding the last kept frame
 //       and against a cross-fade.
+//   inkwire-tween shape --photos DIR --out DIR [--rows N] [--elevations A,B] [--step D | --arc D]
+//       Finds a turntable's camera and the object's visual hull from the photos' mattes (SPEC
+//       T24, T25) and writes the hull (hull.ply), every photo's depth map (depth-N.png) and
+//       camera.json: focal length, each row's elevation, the axis, the angles, each photo's
+//       hull IoU against its matte.
 #include <algorithm>
 #include <fstream>
 #include <iostream>
@@ -25,6 +30,9 @@
 #include "common/image_metrics.hpp"
 #include "common/video_source.hpp"
 #include "server/face/face_analyzer.hpp"
+#include "server/products/matte.hpp"
+#include "server/products/photo_shape.hpp"
+#include "server/products/turn_angles.hpp"
 #include "server/tween/landmarks.hpp"
 
 using namespace inkwire;
@@ -233,10 +241,42 @@ int restore(const RestoreOptions& o) {
   return 0;
 }
 
+// ---- shape (T24, T25) ----
+
+struct ShapeOptions {
+  std::string photos, out;
+  PhotoLayout layout;
+};
+
+int shape(const ShapeOptions& o) {
+  PhotoFolder photos = read_photo_folder(o.photos, o.layout);
+  for (size_t i = 0; i < photos.photos.size(); ++i) {
+    const MatteResult r = key_plain_background(photos.photos[i]);
+    if (!r.keyed) throw Error(photos.names[i] + " cannot be keyed (" + r.reason + "): a shape needs every photo's matte");
+  }
+  // The turn and a first focal length from the corners tracked round (as add-product finds them).
+  float field_of_view = kDefaultFieldOfView;
+  if (photos.even_turn_assumed && photos.closed) {
+    const TurnSteps steps = turn_steps_from_photos(photos);
+    if (steps.fitted >= 3 && steps.uneven()) set_turn_steps(photos, steps.degrees);
+    if (steps.fitted >= 3 && steps.direction_known) field_of_view = std::abs(steps.field_of_view);
+  }
+  std::cout << "finding the camera from " << photos.photos.size() << " mattes (" << photos.rows << " row" << (photos.rows > 1 ? "s" : "")
+            << "), first guess: field of view " << field_of_view << " of the longer side\n";
+  const PhotoShape found = shape_from_photos(photos, field_of_view);
+  write_shape(found, o.out);
+  const auto [worst, best] = std::minmax_element(found.iou.begin(), found.iou.end());
+  std::cout << "focal length " << found.camera.focal_px << " px at " << found.camera.width << " x " << found.camera.height << ", elevation";
+  for (const float e : found.camera.elevations_deg) std::cout << " " << e;
+  std::cout << " degrees, axis at column " << found.camera.axis_x << "; hull of " << found.hull.count() << " cells, IoU against the mattes "
+            << *worst << " to " << *best << " (" << found.evaluations << " hulls carved to find the camera); written to " << o.out << "\n";
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"inkwire-tween: morph between two faces or objects, or regenerate missing video frames, by tweening"};
+  CLI::App app{"inkwire-tween: morph between two faces or objects, regenerate missing video frames by tweening, or find a turntable's shape"};
   app.require_subcommand(1);
   MorphOptions m;
   auto* morph_cmd = app.add_subcommand("morph", "morph between two different faces or objects");
@@ -260,6 +300,14 @@ int main(int argc, char** argv) {
   restore_cmd->add_option("--search", r.search, "how far a landmark may move between the kept frames: X Y pixels")->expected(2);
   restore_cmd->add_option("--sheet", r.sheet, "PNG of the middle of the first gap: input | hold | cross-fade | tween");
   restore_cmd->add_option("--json", r.json_path, "write the figures here");
+  ShapeOptions sh;
+  auto* shape_cmd = app.add_subcommand("shape", "find a turntable's camera and the object's hull from its photos' mattes");
+  shape_cmd->add_option("--photos", sh.photos, "a folder of turntable photos against a plain backdrop (as add-product reads them)")->required();
+  shape_cmd->add_option("--out", sh.out, "folder for hull.ply, depth-N.png and camera.json")->required();
+  shape_cmd->add_option("--rows", sh.layout.rows, "rings of photos in the folder, in file-name order")->check(CLI::Range(1, 32));
+  shape_cmd->add_option("--elevations", sh.layout.elevations, "first guesses of each row's elevation, degrees")->delimiter(',');
+  auto* step = shape_cmd->add_option("--step", sh.layout.step_degrees, "the turn between consecutive photos, degrees");
+  shape_cmd->add_option("--arc", sh.layout.arc_degrees, "the turn from a row's first photo to its last, degrees")->excludes(step);
   try {
     app.parse(argc, argv);
     if (restore_cmd->parsed() && r.missing.empty() && r.keep_every == 0) throw CLI::ValidationError("restore needs --missing or --keep-every");
@@ -267,6 +315,7 @@ int main(int argc, char** argv) {
     return app.exit(e);
   }
   try {
+    if (shape_cmd->parsed()) return shape(sh);
     return morph_cmd->parsed() ? morph(m) : restore(r);
   } catch (const std::exception& e) {
     std::cerr << "inkwire-tween: " << e.what() << "\n";

@@ -1,0 +1,37 @@
+#pragma once
+// The turntable's camera found from the mattes (SPEC T24): the focal length, each row's elevation
+// and the axis's column under which the silhouettes agree best, that is under which the visual
+// hull they carve (visual_hull.hpp) explains every matte (the mean IoU of the hull's silhouettes
+// against them). The turn angles are given (turn_angles.hpp finds them from the matches). The
+// search: coordinate descent from a first guess, each step halved when no parameter improves,
+// on silhouettes scaled to at most kSearchSide pixels and a hull of kSearchCells cells a side;
+// the turn read both ways round first (the silhouettes of a turn and of its mirror differ only
+// by perspective).
+#include <vector>
+
+#include "server/products/turntable_camera.hpp"
+#include "server/products/visual_hull.hpp"
+
+namespace inkwire {
+
+inline constexpr int kSearchSide = 256, kSearchCells = 48;
+inline constexpr double kClearlyBetter = 0.02;  // mean IoU by which another focal length must beat the guess's
+inline constexpr double kSteepest = 89;  // degrees of elevation: a camera straight above has no level right-hand side
+
+struct CameraFit {
+  TurntableCamera camera;
+  std::vector<PhotoView> views;  // as given, or mirrored when the turn reads better the other way
+  double mean_iou = 0;           // at the search's size
+  int evaluations = 0;
+};
+
+// Mean IoU of the hull carved under `camera` against `silhouettes`, at `cells` cells a side.
+double hull_agreement(const TurntableCamera& camera, const std::vector<PhotoView>& views, const std::vector<Silhouette>& silhouettes, int cells);
+
+// `start`'s focal length, elevations and axis column refined; silhouettes at the camera's size.
+CameraFit camera_from_mattes(const TurntableCamera& start, const std::vector<PhotoView>& views, const std::vector<Silhouette>& silhouettes);
+
+// A silhouette scaled by `factor` (<= 1): a pixel is inside when most of what it covers is.
+Silhouette scaled_silhouette(const Silhouette& s, float factor);
+
+}  // namespace inkwire
