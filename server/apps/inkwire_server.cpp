@@ -146,6 +146,11 @@ int main(int argc, char** argv) {
   add->add_option("--max-side", layout.max_side, "photos are kept at most this many pixels a side, the finest zoom level (32..2048, default 2048); they are matched and first shown at most 512")->needs(photos);
   add->add_option("--matte", source.photo_options.matte, "auto: key a plain backdrop when there is one; key: refuse if not; none")
       ->needs(photos);
+  add->add_option("--shape", source.photo_options.shape,
+                  "auto (default): with mattes, find the camera and the object's shape from them and move control points along the "
+                  "shape where the photos agree better under it; off: matched points only")
+      ->check(CLI::IsMember({"auto", "off"}))
+      ->needs(photos);
   add->add_option("--samples", source.mesh_options.samples, "samples on the ring (default 24)")->needs(mesh);
   add->add_option_function<std::string>("--up", [&](const std::string& up) { source.mesh_options.up = parse_up_axis(up); },
                                         "which axis is up in the mesh file: y, z or auto (what the file says)")

@@ -265,11 +265,7 @@ int shape(const ShapeOptions& o) {
             << "), first guess: field of view " << field_of_view << " of the longer side\n";
   const PhotoShape found = shape_from_photos(photos, field_of_view);
   write_shape(found, o.out);
-  const auto [worst, best] = std::minmax_element(found.iou.begin(), found.iou.end());
-  std::cout << "focal length " << found.camera.focal_px << " px at " << found.camera.width << " x " << found.camera.height << ", elevation";
-  for (const float e : found.camera.elevations_deg) std::cout << " " << e;
-  std::cout << " degrees, axis at column " << found.camera.axis_x << "; hull of " << found.hull.count() << " cells, IoU against the mattes "
-            << *worst << " to " << *best << " (" << found.evaluations << " hulls carved to find the camera); written to " << o.out << "\n";
+  std::cout << shape_summary(found) << " (" << found.evaluations << " hulls carved to find the camera); written to " << o.out << "\n";
   return 0;
 }
 

@@ -1,6 +1,8 @@
 #include "server/products/photo_shape.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 
 #include <glm/trigonometric.hpp>
@@ -52,6 +54,21 @@ PhotoShape shape_from_photos(const PhotoFolder& photos, float field_of_view) {
     shape.iou.push_back(silhouette_iou(hull_silhouette(shape.hull, shape.camera, shape.views[v], &shape.depth.back()), silhouettes[v]));
   }
   return shape;
+}
+
+std::string shape_summary(const PhotoShape& shape) {
+  const auto [worst, best] = std::minmax_element(shape.iou.begin(), shape.iou.end());
+  char line[200];
+  std::snprintf(line, sizeof line, "shape from the mattes: focal length %.0f px at %d x %d, elevation", shape.camera.focal_px, shape.camera.width,
+                shape.camera.height);
+  std::string out = line;
+  for (const float e : shape.camera.elevations_deg) {
+    std::snprintf(line, sizeof line, " %.1f", e);
+    out += line;
+  }
+  std::snprintf(line, sizeof line, " degrees, axis at column %.1f; a hull of %zu cells, IoU against the mattes %.3f to %.3f", shape.camera.axis_x,
+                shape.hull.count(), *worst, *best);
+  return out + line;
 }
 
 void write_shape(const PhotoShape& shape, const std::filesystem::path& folder) {

@@ -5,6 +5,7 @@
 // under it and every photo's depth map from the hull; written out for a person to look at as
 // `hull.ply`, `depth-N.png` and `camera.json` (names in CONTRACTS.md).
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "server/products/camera_from_mattes.hpp"
@@ -29,6 +30,9 @@ struct PhotoShape {
 // focal length (the turn fit's, or kDefaultFieldOfView). Throws inkwire::Error when a matte is
 // empty or the silhouettes carve nothing (they cannot be of one object turning about one axis).
 PhotoShape shape_from_photos(const PhotoFolder& photos, float field_of_view);
+
+// What was found, in a line: the focal length, each row's elevation, the axis, the hull's IoU.
+std::string shape_summary(const PhotoShape& shape);
 
 // Writes `hull.ply`, `depth-N.png` (16-bit, depth / depth_scale; N from 1 in the photos' order)
 // and `camera.json` into `folder`.

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <deque>
+#include <optional>
 
 #include <glm/geometric.hpp>
 
@@ -13,6 +14,8 @@
 #include "server/products/exposure.hpp"
 #include "server/products/matte.hpp"
 #include "server/products/photo_folder.hpp"
+#include "server/products/photo_shape.hpp"
+#include "server/products/shape_matches.hpp"
 #include "server/products/turn_angles.hpp"
 #include "server/tween/dense_matches.hpp"
 #include "server/tween/landmarks.hpp"
@@ -197,6 +200,7 @@ void find_turn_from_matches(PhotoFolder& photos, const PairProgress& progress) {
 
 Product product_from_photos(const fs::path& folder, const PhotoProductOptions& o, const PairProgress& progress) {
   if (o.matte != "auto" && o.matte != "key" && o.matte != "none") throw Error("--matte must be auto, key or none");
+  if (o.shape != "auto" && o.shape != "off") throw Error("--shape must be auto or off");
   if (o.layout.max_side < 32 || o.layout.max_side > 2048) throw Error("--max-side must be 32..2048");
   return product_from_photo_folder(read_photo_folder(folder, o.layout), o, progress, folder.string());
 }
@@ -232,6 +236,17 @@ Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions&
     }
   }
 
+  // The shape (SPEC T24-T26): from the mattes, where there are mattes of a full turn.
+  std::optional<PhotoShape> shape;
+  if (o.shape == "auto" && product.matted && photos.closed) {
+    try {
+      shape = shape_from_photos(photos, kDefaultFieldOfView);
+      if (progress) progress(0, int(photos.cells.size()), shape_summary(*shape));
+    } catch (const Error& e) {
+      if (progress) progress(0, int(photos.cells.size()), std::string("no shape: ") + e.what() + " (control points from the matches alone)");
+    }
+  }
+
   // Per cell, verified dense matches (SPEC T15) from its first photo to the others, and from them:
   // control points (the outline where there are mattes, what a view between two photos shows
   // first when it is wrong, then points wherever the warp through the points so far would
@@ -249,7 +264,14 @@ Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions&
     const Image& a = photos.photos[cell[0]];
     std::vector<DenseMatches> flows;
     std::vector<const DenseMatches*> flow_pointers;
-    for (size_t k = 1; k < cell.size(); ++k) flows.push_back(matches.get(cell[0], cell[k]));
+    double from_shape = 0;
+    for (size_t k = 1; k < cell.size(); ++k) {
+      flows.push_back(matches.get(cell[0], cell[k]));
+      if (!shape) continue;
+      MergedMatches merged = merged_matches(flows.back(), shape_matches(*shape, cell[0], cell[k]), a, photos.photos[cell[k]]);
+      flows.back() = std::move(merged.matches);
+      from_shape += merged.from_shape / double(cell.size() - 1);
+    }
     for (const DenseMatches& f : flows) flow_pointers.push_back(&f);
     std::vector<Track> outline;
     if (product.matted) outline = outline_tracks(a, photos.photos[cell[1]], flows);
@@ -261,6 +283,7 @@ Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions&
       std::string names = photos.names[cell[0]];
       for (size_t k = 1; k < cell.size(); ++k) names += (k == 1 ? " -> " : ", ") + photos.names[cell[k]];
       progress(i + 1, total, names + ": " + std::to_string(points.size() - on_outline) + " points from matches" +
+                                 (shape ? " (" + std::to_string(int(std::lround(100 * from_shape))) + "% of the motion from the shape)" : "") +
                                  (product.matted ? ", " + std::to_string(on_outline) + " outline points" : ""));
     }
   }

@@ -33,6 +33,10 @@ using PairProgress = std::function<void(int done, int total, const std::string& 
 struct PhotoProductOptions {
   PhotoLayout layout;      // rows, turn, elevations, size
   std::string matte = "auto";  // auto: key a plain backdrop when there is one; key: refuse if not; none
+  // auto: with mattes, the turntable's camera and the object's shape found from them
+  // (photo_shape.hpp), and control points moved along the shape where the photos agree better
+  // under it than under the matches (shape_matches.hpp); off: matched points only
+  std::string shape = "auto";
   int control_points = 130;  // per pair at most, outline included (12 bytes each; 160 bought 0.1 dB for 20% more)
   // The tween data at most this share of what a first view fetches (photos, mattes, tween data).
   // Over it, every cell gives up its last-chosen points (those that mended the least) down to one

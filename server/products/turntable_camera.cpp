@@ -7,14 +7,34 @@
 
 namespace inkwire {
 
-glm::vec3 to_camera(const TurntableCamera& camera, const PhotoView& view, const glm::vec3& point) {
+namespace {
+
+// The camera of `view`: where it stands and its right, down and ahead directions (object frame).
+struct Frame {
+  glm::vec3 centre, right, down, ahead;
+};
+
+Frame frame_of(const TurntableCamera& camera, const PhotoView& view) {
   const float azimuth = glm::radians(view.azimuth_deg), elevation = glm::radians(camera.elevations_deg[size_t(view.row)]);
-  const glm::vec3 centre(std::sin(azimuth) * std::cos(elevation), std::sin(elevation), std::cos(azimuth) * std::cos(elevation));
-  const glm::vec3 ahead = -centre;
-  const glm::vec3 right = glm::normalize(glm::cross(ahead, glm::vec3(0, 1, 0)));
-  const glm::vec3 down = glm::cross(ahead, right);
-  const glm::vec3 d = point - centre;
-  return {glm::dot(d, right), glm::dot(d, down), glm::dot(d, ahead)};
+  Frame f;
+  f.centre = glm::vec3(std::sin(azimuth) * std::cos(elevation), std::sin(elevation), std::cos(azimuth) * std::cos(elevation));
+  f.ahead = -f.centre;
+  f.right = glm::normalize(glm::cross(f.ahead, glm::vec3(0, 1, 0)));
+  f.down = glm::cross(f.ahead, f.right);
+  return f;
+}
+
+}  // namespace
+
+glm::vec3 to_camera(const TurntableCamera& camera, const PhotoView& view, const glm::vec3& point) {
+  const Frame f = frame_of(camera, view);
+  const glm::vec3 d = point - f.centre;
+  return {glm::dot(d, f.right), glm::dot(d, f.down), glm::dot(d, f.ahead)};
+}
+
+glm::vec3 from_camera(const TurntableCamera& camera, const PhotoView& view, const glm::vec3& in_camera) {
+  const Frame f = frame_of(camera, view);
+  return f.centre + in_camera.x * f.right + in_camera.y * f.down + in_camera.z * f.ahead;
 }
 
 glm::vec2 to_pixel(const TurntableCamera& camera, const glm::vec3& in_camera) {

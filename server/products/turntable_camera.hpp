@@ -28,6 +28,8 @@ struct PhotoView {
 
 // A point of the object frame in the camera's frame of `view`: x right, y down, z ahead (depth).
 glm::vec3 to_camera(const TurntableCamera& camera, const PhotoView& view, const glm::vec3& point);
+// A point of the camera's frame of `view` back in the object frame.
+glm::vec3 from_camera(const TurntableCamera& camera, const PhotoView& view, const glm::vec3& in_camera);
 // The pixel of a point in front of the camera (z > 0).
 glm::vec2 to_pixel(const TurntableCamera& camera, const glm::vec3& in_camera);
 

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numeric>
+#include <optional>
 #include <random>
 #include <thread>
 
@@ -230,27 +231,48 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
   const HeldOut held = hold_out(all);
   const PhotoFolder& kept = held.kept;
   const int n = int(kept.photos.size());
+  // Today's control points (matched), and with the shape where the mattes give one.
   const auto made = std::chrono::steady_clock::now();
-  const Product product = product_from_photo_folder(kept, PhotoProductOptions{}, {}, folder.string());
+  const Product product = product_from_photo_folder(kept, PhotoProductOptions{.shape = "off"}, {}, folder.string());
   const double seconds_to_make = std::chrono::duration<double>(std::chrono::steady_clock::now() - made).count();
+  std::optional<Product> shaped;
+  double seconds_with_shape = 0;
+  if (product.matted) {
+    const auto started = std::chrono::steady_clock::now();
+    shaped = product_from_photo_folder(kept, PhotoProductOptions{.shape = "auto"},
+                                       [&](int done, int, const std::string& line) {
+                                         if (done == 0) std::fprintf(stderr, "inkwire-bench: %s: %s\n", name.c_str(), line.c_str());
+                                       },
+                                       folder.string());
+    seconds_with_shape = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  }
   const fs::path data = fs::temp_directory_path() / ("inkwire-bench-photos-" + std::to_string(::getpid()));
   fs::remove_all(data);
-  protocol::Snapshot state;
+  protocol::Snapshot state, shaped_state;
   {
     server::AssetStore store(data);
     state = server::store_product(store, product, "photos");
+    if (shaped) shaped_state = server::store_product(store, *shaped, "photos-shape");
   }
   server::AssetStore store(data);
-  TweenModel model;
-  model.data = product.data;
-  model.images = stored_photos(store, state);
-  const float half = kSceneDiagonal / (2.0f * std::sqrt(3.0f));
-  model.bounds = {.min = glm::vec3(-half), .max = glm::vec3(half)};
-  model.distance_diagonals = product.distance_diagonals;
-  TweenRenderer renderer;
+  const auto model_of = [&](const Product& p, const protocol::Snapshot& stored) {
+    TweenModel model;
+    model.data = p.data;
+    model.images = stored_photos(store, stored);
+    const float half = kSceneDiagonal / (2.0f * std::sqrt(3.0f));
+    model.bounds = {.min = glm::vec3(-half), .max = glm::vec3(half)};
+    model.distance_diagonals = p.distance_diagonals;
+    return model;
+  };
+  const TweenModel model = model_of(product, state);
+  TweenRenderer renderer, shaped_renderer;
   renderer.configure(style_params("tween").front());
   renderer.use_model(model);
-  Scores spin, fade, tween, flow;
+  if (shaped) {
+    shaped_renderer.configure(style_params("tween").front());
+    shaped_renderer.use_model(model_of(*shaped, shaped_state));
+  }
+  Scores spin, fade, tween, flow, tween_shape;
   auto score = [](Scores& s, const Image& view, const Image& truth) {
     s.psnr.push_back(psnr(view, truth));
     s.ssim.push_back(ssim(view, truth));
@@ -284,9 +306,14 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
     score(fade, fade_view, truth);
     score(tween, tween_view, truth);
     score(flow, flow_view, truth);
-    if (!output_dir.empty())
-      save_image(side_by_side({truth, spin_view, fade_view, tween_view, flow_view}, {"held out", "spin", "cross-fade", "tween", "flow"}),
-                 output_dir / ("turntable-" + name + "-" + std::to_string(k) + ".png"), false);
+    std::vector<Image> views = {truth, spin_view, fade_view, tween_view, flow_view};
+    std::vector<std::string> labels = {"held out", "spin", "cross-fade", "tween", "flow"};
+    if (shaped) {
+      views.push_back(without_watermark_corner(over_colour(synthesised(shaped_renderer, canvas, frame, "bilinear", "matte"), colour, true), colour));
+      labels.push_back("tween, shape");
+      score(tween_shape, views.back(), truth);
+    }
+    if (!output_dir.empty()) save_image(side_by_side(views, labels), output_dir / ("turntable-" + name + "-" + std::to_string(k) + ".png"), false);
   }
   const uint64_t photo_bytes = bytes_of(state, protocol::AssetKind::Samples), matte_bytes = bytes_of(state, protocol::AssetKind::Matte),
                  tween_bytes = bytes_of(state, protocol::AssetKind::Tween);
@@ -300,6 +327,11 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
   rows[2].counters["tween_share"] = double(tween_bytes) / double(photo_bytes + matte_bytes + tween_bytes);
   rows[2].counters["seconds_to_make"] = seconds_to_make;
   rows[2].counters["turn_from_matches"] = turn_found;
+  if (shaped) {
+    rows.push_back(row("tween-shape" + suffix, name, n, tween_shape, false));
+    rows.back().counters["seconds_to_make"] = seconds_with_shape;
+    rows.back().counters["bytes_tween"] = double(bytes_of(shaped_state, protocol::AssetKind::Tween));
+  }
   // Zoom (SPEC T18): each finer level's size and bytes, fetched only zoomed in (a few photos of
   // it at a time), so not in the share above.
   const std::vector<uint64_t> level_bytes = server::zoom_level_bytes(state);
@@ -313,9 +345,12 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
                    std::to_string(level_bytes[l] / uint64_t(n)) + " B a photo";
   }
   std::fprintf(stderr, "inkwire-bench: turntable %s zoom levels: %s\n", name.c_str(), levels_said.c_str());
-  std::fprintf(stderr, "inkwire-bench: turntable %s (%zu held out): spin %.2f dB, cross-fade %.2f dB, tween %.2f dB, flow %.2f dB, %.0f B a pair\n",
+  std::fprintf(stderr,
+               "inkwire-bench: turntable %s (%zu held out): spin %.2f dB, cross-fade %.2f dB, tween %.2f dB, flow %.2f dB, %.0f B a pair; "
+               "tween with the shape %s\n",
                name.c_str(), spin.psnr.size(), Scores::mean(spin.psnr), Scores::mean(fade.psnr), Scores::mean(tween.psnr),
-               Scores::mean(flow.psnr), rows[2].counters["bytes_per_pair"]);
+               Scores::mean(flow.psnr), rows[2].counters["bytes_per_pair"],
+               shaped ? (std::to_string(Scores::mean(tween_shape.psnr)) + " dB").c_str() : "none (no mattes)");
   fs::remove_all(data);
   return rows;
 }
