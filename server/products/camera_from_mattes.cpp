@@ -48,10 +48,18 @@ double hull_agreement(const TurntableCamera& camera, const std::vector<PhotoView
 }
 
 CameraFit camera_from_mattes(const TurntableCamera& start, const std::vector<PhotoView>& views, const std::vector<Silhouette>& silhouettes) {
-  const float factor = std::min(1.0f, float(kSearchSide) / float(std::max(start.width, start.height)));
-  std::vector<Silhouette> small;
-  for (const Silhouette& s : silhouettes) small.push_back(scaled_silhouette(s, factor));
-  const int width = small[0].width, height = small[0].height;
+  // The silhouettes as two searches see them: the rough one (row by row), the fine one (all at once).
+  struct Level {
+    float factor;
+    int cells;
+    std::vector<Silhouette> silhouettes;
+  };
+  const auto level = [&](int side, int cells) {
+    Level l{.factor = std::min(1.0f, float(side) / float(std::max(start.width, start.height))), .cells = cells};
+    for (const Silhouette& s : silhouettes) l.silhouettes.push_back(scaled_silhouette(s, l.factor));
+    return l;
+  };
+  const Level rough = level(kRoughSide, kRoughCells), fine = level(kSearchSide, kSearchCells);
   const size_t rows = start.elevations_deg.size();
   CameraFit fit{.camera = start, .views = views};
 
@@ -63,27 +71,31 @@ CameraFit camera_from_mattes(const TurntableCamera& start, const std::vector<Pho
     c.axis_x = float(q[1 + rows]);
     return c;
   };
-  // The photos of rows below `up_to`, as the search sees them.
+  // The photos of rows below `up_to` at one level.
   struct Part {
+    const Level* level;
     std::vector<PhotoView> views;
     std::vector<Silhouette> silhouettes;
   };
-  const auto rows_below = [&](size_t up_to, const std::vector<PhotoView>& turn) {
-    Part part;
+  const auto rows_below = [&](size_t up_to, const std::vector<PhotoView>& turn, const Level& at) {
+    Part part{.level = &at};
     for (size_t v = 0; v < turn.size(); ++v)
-      if (size_t(turn[v].row) < up_to) part.views.push_back(turn[v]), part.silhouettes.push_back(small[v]);
+      if (size_t(turn[v].row) < up_to) part.views.push_back(turn[v]), part.silhouettes.push_back(at.silhouettes[v]);
     return part;
   };
-  const auto score = [&](const std::vector<double>& q, const Part& part, int cells) {
+  const auto score = [&](const std::vector<double>& q, const Part& part) {
     ++fit.evaluations;
-    return hull_agreement(scaled_camera(camera_of(q), factor, width, height), part.views, part.silhouettes, cells);
+    const Level& l = *part.level;
+    return hull_agreement(scaled_camera(camera_of(q), l.factor, l.silhouettes[0].width, l.silhouettes[0].height), part.views, part.silhouettes,
+                          l.cells);
   };
-  // Coordinate descent over the parameters marked `active`, each step halved when none improves.
-  std::vector<double> finest = {0.004};
-  for (size_t r = 0; r < rows; ++r) finest.push_back(0.2);
-  finest.push_back(0.25 / factor);
-  const auto descend = [&](std::vector<double>& p, std::vector<double> step, const std::vector<bool>& active, const Part& part, int cells) {
-    double best = score(p, part, cells);
+  // Coordinate descent over the parameters marked `active`, each step halved when none improves
+  // (the axis's down to a quarter of the level's pixel).
+  const auto descend = [&](std::vector<double>& p, std::vector<double> step, const std::vector<bool>& active, const Part& part) {
+    std::vector<double> finest = {0.004};
+    for (size_t r = 0; r < rows; ++r) finest.push_back(0.2);
+    finest.push_back(0.25 / part.level->factor);
+    double best = score(p, part);
     for (int round = 0; round < 60; ++round) {
       bool improved = false;
       for (size_t i = 0; i < p.size() && !improved; ++i)
@@ -91,7 +103,7 @@ CameraFit camera_from_mattes(const TurntableCamera& start, const std::vector<Pho
           if (!active[i]) break;
           std::vector<double> q = p;
           q[i] += sign * step[i];
-          if (const double s = score(q, part, cells); s > best + 1e-6) {
+          if (const double s = score(q, part); s > best + 1e-6) {
             best = s, p = q, improved = true;
             break;
           }
@@ -124,40 +136,40 @@ CameraFit camera_from_mattes(const TurntableCamera& start, const std::vector<Pho
     double best = -1;
     std::vector<double> chosen = p;
     for (const std::vector<PhotoView>* turn : {&views, static_cast<const std::vector<PhotoView>*>(&mirrored)}) {
-      const Part part = rows_below(1, *turn);
+      const Part part = rows_below(1, *turn, rough);
       for (const double scale : {1.0, 0.5, 2.0, 0.25, 4.0, 8.0}) {
         std::vector<double> q = p;
         q[0] += std::log(scale);
-        if (const double s = score(q, part, kSearchCells); s > best + (scale == 1.0 ? 1e-6 : kClearlyBetter)) best = s, chosen = q, fit.views = *turn;
+        if (const double s = score(q, part); s > best + (scale == 1.0 ? 1e-6 : kClearlyBetter)) best = s, chosen = q, fit.views = *turn;
       }
     }
     p = chosen;
     std::vector<bool> active(p.size(), false);
     active[0] = active[1] = active[1 + rows] = true;
-    descend(p, first_steps, active, rows_below(1, fit.views), kSearchCells);
+    descend(p, first_steps, active, rows_below(1, fit.views, rough));
   }
   // Each row above, its elevation first tried from the row below's up to looking straight down.
   for (size_t r = 1; r < rows; ++r) {
-    const Part part = rows_below(r + 1, fit.views);
+    const Part part = rows_below(r + 1, fit.views, rough);
     double best = -1, chosen = p[1 + r];
     std::vector<double> tries = {p[1 + r]};
     for (double e = p[r] + 5; e <= kSteepest; e += 5) tries.push_back(e);
     for (const double e : tries) {
       std::vector<double> q = p;
       q[1 + r] = e;
-      if (const double s = score(q, part, kSearchCells); s > best + 1e-6) best = s, chosen = e;
+      if (const double s = score(q, part); s > best + 1e-6) best = s, chosen = e;
     }
     p[1 + r] = chosen;
     std::vector<bool> active(p.size(), false);
     for (size_t i = 0; i <= 1 + r; ++i) active[i] = true;
     active[1 + rows] = true;
-    descend(p, first_steps, active, part, kSearchCells);
+    descend(p, first_steps, active, part);
   }
   // Every photo, finer hulls, smaller steps: a coarse hull's agreement moves in steps of its cells
   // and stops a fine search early.
   std::vector<double> fine_steps = first_steps;
   for (double& s : fine_steps) s *= 0.125;
-  fit.mean_iou = descend(p, fine_steps, std::vector<bool>(p.size(), true), rows_below(rows, fit.views), 2 * kSearchCells);
+  fit.mean_iou = descend(p, fine_steps, std::vector<bool>(p.size(), true), rows_below(rows, fit.views, fine));
   fit.camera = camera_of(p);
   return fit;
 }

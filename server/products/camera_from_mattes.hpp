@@ -14,7 +14,8 @@
 
 namespace inkwire {
 
-inline constexpr int kSearchSide = 256, kSearchCells = 48;
+inline constexpr int kRoughSide = 256, kRoughCells = 48;  // the row-by-row search's silhouettes and hulls
+inline constexpr int kSearchSide = 256, kSearchCells = 96;  // the final search's, every photo at once
 inline constexpr double kClearlyBetter = 0.02;  // mean IoU by which another focal length must beat the guess's
 inline constexpr double kSteepest = 89;  // degrees of elevation: a camera straight above has no level right-hand side
 

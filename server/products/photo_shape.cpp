@@ -11,6 +11,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "common/error.hpp"
+#include "server/products/depth_refinement.hpp"
 
 namespace inkwire {
 
@@ -53,6 +54,9 @@ PhotoShape shape_from_photos(const PhotoFolder& photos, float field_of_view) {
     shape.depth.emplace_back();
     shape.iou.push_back(silhouette_iou(hull_silhouette(shape.hull, shape.camera, shape.views[v], &shape.depth.back()), silhouettes[v]));
   }
+  std::vector<const Image*> pictures;
+  for (const Image& photo : photos.photos) pictures.push_back(&photo);
+  refine_depth(shape.depth, shape.camera, shape.views, pictures, columns, shape.hull.voxel);
   return shape;
 }
 

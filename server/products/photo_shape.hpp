@@ -2,7 +2,8 @@
 // A turntable's camera and the object's shape from its keyed photos (SPEC T24, T25, T27): the
 // photos' mattes as silhouettes, their azimuths and rows as read (or found from the matches), the
 // camera found by making the silhouettes agree (camera_from_mattes.hpp), the visual hull carved
-// under it and every photo's depth map from the hull; written out for a person to look at as
+// under it and every photo's depth map from the hull, taken in where the photos agree better
+// deeper (depth_refinement.hpp); written out for a person to look at as
 // `hull.ply`, `depth-N.png` and `camera.json` (names in CONTRACTS.md).
 #include <filesystem>
 #include <string>
@@ -22,7 +23,7 @@ struct PhotoShape {
   std::vector<PhotoView> views;
   VisualHull hull;
   std::vector<double> iou;                 // per photo: the hull's silhouette against its matte
-  std::vector<std::vector<float>> depth;   // per photo: distance ahead of the camera, 0 off the object
+  std::vector<std::vector<float>> depth;   // per photo: distance ahead of the camera, 0 off the object (the hull's, refined)
   int evaluations = 0;                     // hulls carved while finding the camera
 };
 

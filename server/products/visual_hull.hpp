@@ -2,8 +2,7 @@
 // The object's visual hull (SPEC T25): what every matte allows, carved from a grid of voxels
 // (shape from silhouette: a voxel stays when it falls inside the object in every photo), seen
 // again from each photo as its silhouette (how well the hull explains that photo's matte: IoU)
-// and as a depth map. Photo-consistency between neighbours, which takes the hull in where it
-// bulges over a concavity, is not applied yet: the depth maps are the hull's.
+// and as a depth map (which depth_refinement.hpp then takes in where the hull bulges).
 #include <cstdint>
 #include <filesystem>
 #include <vector>

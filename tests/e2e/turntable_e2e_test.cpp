@@ -227,8 +227,11 @@ TEST_F(TurntableE2ETest, RowsOfPhotosTurnUpAndDownAClientTurnedUpSeesTheUpperRow
   Process add("inkwire-server", {"add-product", "duck", "--photos", (dir / "photos").string(), "--step", "-30", "--elevations", "0,25,50",
                                  "--data", (dir / "data").string()},
               dir / "add.log");
-  ASSERT_EQ(add.wait(), 0) << add.output();
+  // Finding the shape of 36 photos takes half a minute alone on this machine's two cores, longer
+  // beside other tests.
+  ASSERT_EQ(add.wait(std::chrono::seconds(240)), 0) << add.output();
   EXPECT_EQ(count_lines_starting(add.output(), "pair "), 2 * 2 * 12) << add.output();  // two triangles a quad
+  EXPECT_NE(add.output().find("shape from the mattes"), std::string::npos) << add.output();
   EXPECT_NE(add.output().find("stored product 'duck': 36 photos 256x256"), std::string::npos) << add.output();
 
   ServerUnderTest server(dir, {{"sessions", nlohmann::json::array()}});
