@@ -3,10 +3,12 @@
 // and the axis's column under which the silhouettes agree best, that is under which the visual
 // hull they carve (visual_hull.hpp) explains every matte (the mean IoU of the hull's silhouettes
 // against them). The turn angles are given (turn_angles.hpp finds them from the matches). The
-// search: coordinate descent from a first guess, each step halved when no parameter improves,
-// on silhouettes scaled to at most kSearchSide pixels and a hull of kSearchCells cells a side;
-// the turn read both ways round first (the silhouettes of a turn and of its mirror differ only
-// by perspective).
+// search: coordinate descent from a first guess, each step halved when no parameter improves.
+// The lowest row first, alone: the turn read both ways round (the silhouettes of a turn and of
+// its mirror differ only by perspective) and the focal length tried at a few scales of the guess
+// (one far off carves nothing and leaves nothing to descend); then each row above, its elevation
+// first tried from the row below's up to straight down (kRoughSide, kRoughCells); then every photo
+// at once on finer hulls with smaller steps (kSearchSide, kSearchCells).
 #include <vector>
 
 #include "server/products/turntable_camera.hpp"
