@@ -216,6 +216,7 @@ void Publisher::send_crop(const Image& frame) {
 // 160 x 160; until the face is found, the whole frame scaled to at most 320 a side. A new picture size, a
 // jump of the crop or the server's asking starts the video again with a key frame.
 void Publisher::send_video(const Image& frame) {
+  const uint64_t connection = client_.connections();
   bool key = client_.take_key_frame_request() || video_restart_.exchange(false);
   if (const auto reported = usable_region(frame)) {
     const FaceCropChoice choice = follow_face(video_crop_, *reported, frame.width, frame.height);
@@ -237,6 +238,12 @@ void Publisher::send_video(const Image& frame) {
   const uint32_t time = now_ms();
   FaceVideoEncoder::Frame encoded = video_encoder_->encode(picture, time, key);
   if (encoded.vp8.empty()) return;
+  // Joined again while this frame was made: the server starts her stream afresh and would drop a
+  // frame that is not a key frame, so the next one is.
+  if (client_.connections() != connection && !encoded.key) {
+    video_restart_ = true;
+    return;
+  }
   bytes_ += encoded.vp8.size();
   ++crops_;
   client_.send(protocol::FaceVideo{.time_ms = time, .sequence = ++video_sequence_, .frame_width = uint16_t(frame.width),

@@ -253,8 +253,10 @@ try:
             else:
                 print(f"{name}: this engine held packets back {after['voiceGapMs']} ms before its worker saw them, past the jitter rule's "
                       f"{MAX_DELAY_MS} ms: its worker's fetch and socket wait for the page's thread")
-                # (a packet or two may be between the worker and the worklet as the figures are read)
-                checks.check(played + late >= received - 2 and played >= 0.9 * received,
+                # (a packet or two may be between the worker and the worklet as the figures are read;
+                # a stall holds up to ~450 ms of packets, of which what waits past the largest delay,
+                # counted from the quickest packet, is late: about 7 of every 100 a stall, 8 stalls)
+                checks.check(played + late >= received - 2 and played >= 0.75 * received,
                              f"{name}: every packet that arrived was played or, held back past the rule by the engine, counted late "
                              f"({played} + {late} of {received})")
             # What the browser played is Nat's speech: its envelope (50 a second, in dB, made in the
