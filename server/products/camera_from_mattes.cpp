@@ -48,18 +48,9 @@ double hull_agreement(const TurntableCamera& camera, const std::vector<PhotoView
 }
 
 CameraFit camera_from_mattes(const TurntableCamera& start, const std::vector<PhotoView>& views, const std::vector<Silhouette>& silhouettes) {
-  // The silhouettes as two searches see them: the rough one (row by row), the fine one (all at once).
-  struct Level {
-    float factor;
-    int cells;
-    std::vector<Silhouette> silhouettes;
-  };
-  const auto level = [&](int side, int cells) {
-    Level l{.factor = std::min(1.0f, float(side) / float(std::max(start.width, start.height))), .cells = cells};
-    for (const Silhouette& s : silhouettes) l.silhouettes.push_back(scaled_silhouette(s, l.factor));
-    return l;
-  };
-  const Level rough = level(kRoughSide, kRoughCells), fine = level(kSearchSide, kSearchCells);
+  const float factor = std::min(1.0f, float(kSearchSide) / float(std::max(start.width, start.height)));
+  std::vector<Silhouette> small;
+  for (const Silhouette& s : silhouettes) small.push_back(scaled_silhouette(s, factor));
   const size_t rows = start.elevations_deg.size();
   CameraFit fit{.camera = start, .views = views};
 
@@ -71,30 +62,28 @@ CameraFit camera_from_mattes(const TurntableCamera& start, const std::vector<Pho
     c.axis_x = float(q[1 + rows]);
     return c;
   };
-  // The photos of rows below `up_to` at one level.
+  // The photos of rows below `up_to`, on hulls of `cells` cells a side.
   struct Part {
-    const Level* level;
+    int cells;
     std::vector<PhotoView> views;
     std::vector<Silhouette> silhouettes;
   };
-  const auto rows_below = [&](size_t up_to, const std::vector<PhotoView>& turn, const Level& at) {
-    Part part{.level = &at};
+  const auto rows_below = [&](size_t up_to, const std::vector<PhotoView>& turn, int cells) {
+    Part part{.cells = cells};
     for (size_t v = 0; v < turn.size(); ++v)
-      if (size_t(turn[v].row) < up_to) part.views.push_back(turn[v]), part.silhouettes.push_back(at.silhouettes[v]);
+      if (size_t(turn[v].row) < up_to) part.views.push_back(turn[v]), part.silhouettes.push_back(small[v]);
     return part;
   };
   const auto score = [&](const std::vector<double>& q, const Part& part) {
     ++fit.evaluations;
-    const Level& l = *part.level;
-    return hull_agreement(scaled_camera(camera_of(q), l.factor, l.silhouettes[0].width, l.silhouettes[0].height), part.views, part.silhouettes,
-                          l.cells);
+    return hull_agreement(scaled_camera(camera_of(q), factor, small[0].width, small[0].height), part.views, part.silhouettes, part.cells);
   };
   // Coordinate descent over the parameters marked `active`, each step halved when none improves
-  // (the axis's down to a quarter of the level's pixel).
+  // (the axis's down to a quarter of a searched pixel).
+  std::vector<double> finest = {0.004};
+  for (size_t r = 0; r < rows; ++r) finest.push_back(0.2);
+  finest.push_back(0.25 / factor);
   const auto descend = [&](std::vector<double>& p, std::vector<double> step, const std::vector<bool>& active, const Part& part) {
-    std::vector<double> finest = {0.004};
-    for (size_t r = 0; r < rows; ++r) finest.push_back(0.2);
-    finest.push_back(0.25 / part.level->factor);
     double best = score(p, part);
     for (int round = 0; round < 60; ++round) {
       bool improved = false;
@@ -136,7 +125,7 @@ CameraFit camera_from_mattes(const TurntableCamera& start, const std::vector<Pho
     double best = -1;
     std::vector<double> chosen = p;
     for (const std::vector<PhotoView>* turn : {&views, static_cast<const std::vector<PhotoView>*>(&mirrored)}) {
-      const Part part = rows_below(1, *turn, rough);
+      const Part part = rows_below(1, *turn, kRoughCells);
       for (const double scale : {1.0, 0.5, 2.0, 0.25, 4.0, 8.0}) {
         std::vector<double> q = p;
         q[0] += std::log(scale);
@@ -146,11 +135,11 @@ CameraFit camera_from_mattes(const TurntableCamera& start, const std::vector<Pho
     p = chosen;
     std::vector<bool> active(p.size(), false);
     active[0] = active[1] = active[1 + rows] = true;
-    descend(p, first_steps, active, rows_below(1, fit.views, rough));
+    descend(p, first_steps, active, rows_below(1, fit.views, kRoughCells));
   }
   // Each row above, its elevation first tried from the row below's up to looking straight down.
   for (size_t r = 1; r < rows; ++r) {
-    const Part part = rows_below(r + 1, fit.views, rough);
+    const Part part = rows_below(r + 1, fit.views, kRoughCells);
     double best = -1, chosen = p[1 + r];
     std::vector<double> tries = {p[1 + r]};
     for (double e = p[r] + 5; e <= kSteepest; e += 5) tries.push_back(e);
@@ -169,7 +158,7 @@ CameraFit camera_from_mattes(const TurntableCamera& start, const std::vector<Pho
   // and stops a fine search early.
   std::vector<double> fine_steps = first_steps;
   for (double& s : fine_steps) s *= 0.125;
-  fit.mean_iou = descend(p, fine_steps, std::vector<bool>(p.size(), true), rows_below(rows, fit.views, fine));
+  fit.mean_iou = descend(p, fine_steps, std::vector<bool>(p.size(), true), rows_below(rows, fit.views, kFineCells));
   fit.camera = camera_of(p);
   return fit;
 }

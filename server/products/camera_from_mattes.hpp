@@ -7,8 +7,8 @@
 // The lowest row first, alone: the turn read both ways round (the silhouettes of a turn and of
 // its mirror differ only by perspective) and the focal length tried at a few scales of the guess
 // (one far off carves nothing and leaves nothing to descend); then each row above, its elevation
-// first tried from the row below's up to straight down (kRoughSide, kRoughCells); then every photo
-// at once on finer hulls with smaller steps (kSearchSide, kSearchCells).
+// first tried from the row below's up to straight down (kRoughCells); then every photo at once on
+// finer hulls with smaller steps (kFineCells). Silhouettes at most kSearchSide pixels a side.
 #include <vector>
 
 #include "server/products/turntable_camera.hpp"
@@ -16,8 +16,8 @@
 
 namespace inkwire {
 
-inline constexpr int kRoughSide = 256, kRoughCells = 48;  // the row-by-row search's silhouettes and hulls
-inline constexpr int kSearchSide = 256, kSearchCells = 96;  // the final search's, every photo at once
+inline constexpr int kSearchSide = 256;                   // silhouettes are searched at most this many pixels a side
+inline constexpr int kRoughCells = 48, kFineCells = 96;   // hulls' cells a side: row by row, then every photo at once
 inline constexpr double kClearlyBetter = 0.02;  // mean IoU by which another focal length must beat the guess's
 inline constexpr double kSteepest = 89;  // degrees of elevation: a camera straight above has no level right-hand side
 

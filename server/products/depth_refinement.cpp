@@ -12,8 +12,7 @@ namespace inkwire {
 namespace {
 
 // How far photo `to` warped onto photo `from` disagrees with it at every pixel, when each pixel of
-// `from` is taken to lie `behind` further along its ray than `depth` says (5 x 5 mean of grey
-// differences; a large value where the point falls outside `to`).
+// `from` is taken to lie `behind` further along its ray than `depth` says.
 cv::Mat disagreement_at(const std::vector<float>& depth, float behind, const TurntableCamera& camera, const PhotoView& from_view,
                         const PhotoView& to_view, const cv::Mat& from, const cv::Mat& to) {
   cv::Mat map(from.size(), CV_32FC2, cv::Scalar(-1, -1));
@@ -21,22 +20,23 @@ cv::Mat disagreement_at(const std::vector<float>& depth, float behind, const Tur
     for (int x = 0; x < from.cols; ++x) {
       const float z = depth[size_t(y * from.cols + x)];
       if (z <= 0) continue;
-      // A ray's point at depth z: its pixel's offset from the principal point times z / f.
-      const float d = z + behind;
-      const glm::vec3 in_from((float(x) + 0.5f - camera.axis_x) * d / camera.focal_px, (float(y) + 0.5f - 0.5f * float(camera.height)) * d / camera.focal_px, d);
-      const glm::vec3 in_to = to_camera(camera, to_view, from_camera(camera, from_view, in_from));
+      const glm::vec3 in_to = seen_from(camera, from_view, glm::vec2(float(x) + 0.5f, float(y) + 0.5f), z + behind, to_view);
       if (in_to.z <= 1e-3f) continue;
       const glm::vec2 there = to_pixel(camera, in_to);
       map.at<cv::Vec2f>(y, x) = cv::Vec2f(there.x - 0.5f, there.y - 0.5f);
     }
+  return warp_disagreement(from, to, map);
+}
+
+}  // namespace
+
+cv::Mat warp_disagreement(const cv::Mat& from, const cv::Mat& to, const cv::Mat& map) {
   cv::Mat warped, error;
   cv::remap(to, warped, map, cv::noArray(), cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar(-10));
   cv::absdiff(from, warped, error);
   cv::blur(error, error, cv::Size(5, 5));
   return error;
 }
-
-}  // namespace
 
 void refine_depth(std::vector<std::vector<float>>& depth, const TurntableCamera& camera, const std::vector<PhotoView>& views,
                   const std::vector<const Image*>& photos, int columns, float cell) {

@@ -9,6 +9,8 @@
 // the hull's depth unless another agrees clearly better (plain paint agrees at every depth).
 #include <vector>
 
+#include <opencv2/core.hpp>
+
 #include "common/image.hpp"
 #include "server/products/turntable_camera.hpp"
 
@@ -16,6 +18,11 @@ namespace inkwire {
 
 inline constexpr float kSweepCells = 8, kSweepStep = 0.5f;  // how far behind the hull, in steps of its cells
 inline constexpr float kClearlyAgrees = 0.8f;               // a depth's disagreement against the hull depth's
+
+// How far `to` (grey), warped onto `from` by `map` (per pixel of `from`, where to read `to`; off
+// `to` reads as far off any grey), disagrees with `from` at each pixel: the 5 x 5 mean of the
+// absolute differences.
+cv::Mat warp_disagreement(const cv::Mat& from, const cv::Mat& to, const cv::Mat& map);
 
 // `depth[v]` (distance ahead of photo v's camera, 0 off the object) refined against the photos'
 // row neighbours; `cell` the hull's cell size. Photos RGBA, of the camera's size.

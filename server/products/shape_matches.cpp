@@ -4,6 +4,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "server/products/depth_refinement.hpp"
 #include "server/tween/landmarks.hpp"
 
 namespace inkwire {
@@ -23,8 +24,7 @@ void follow_shape(const PhotoShape& shape, size_t from, size_t to, cv::Mat& flow
       const float z = depth[size_t(y * c.width + x)];
       if (z <= 0) continue;
       const glm::vec2 pixel(float(x) + 0.5f, float(y) + 0.5f);
-      const glm::vec3 in_from((pixel.x - c.axis_x) * z / c.focal_px, (pixel.y - 0.5f * float(c.height)) * z / c.focal_px, z);
-      const glm::vec3 in_to = to_camera(c, shape.views[to], from_camera(c, shape.views[from], in_from));
+      const glm::vec3 in_to = seen_from(c, shape.views[from], pixel, z, shape.views[to]);
       if (in_to.z <= 1e-3f) continue;
       const glm::vec2 there = to_pixel(c, in_to);
       const int tx = int(std::floor(there.x)), ty = int(std::floor(there.y));
@@ -35,8 +35,7 @@ void follow_shape(const PhotoShape& shape, size_t from, size_t to, cv::Mat& flow
     }
 }
 
-// How far `from` and `to` warped onto it by `flow` disagree about each pixel of `from`, averaged
-// over a 5 x 5 window.
+// How far `to` warped onto `from` by `flow` disagrees with it at each pixel (depth_refinement.hpp).
 cv::Mat disagreement(const cv::Mat& from, const cv::Mat& to, const cv::Mat& flow) {
   cv::Mat map(flow.size(), CV_32FC2);
   for (int y = 0; y < flow.rows; ++y)
@@ -44,11 +43,7 @@ cv::Mat disagreement(const cv::Mat& from, const cv::Mat& to, const cv::Mat& flow
       const cv::Vec2f f = flow.at<cv::Vec2f>(y, x);
       map.at<cv::Vec2f>(y, x) = cv::Vec2f(float(x) + f[0], float(y) + f[1]);
     }
-  cv::Mat warped, error;
-  cv::remap(to, warped, map, cv::noArray(), cv::INTER_LINEAR, cv::BORDER_REPLICATE);
-  cv::absdiff(from, warped, error);
-  cv::blur(error, error, cv::Size(5, 5));
-  return error;
+  return warp_disagreement(from, to, map);
 }
 
 // One direction of merged_matches; returns how many of the kept pixels came from the shape.

@@ -37,6 +37,11 @@ glm::vec3 from_camera(const TurntableCamera& camera, const PhotoView& view, cons
   return f.centre + in_camera.x * f.right + in_camera.y * f.down + in_camera.z * f.ahead;
 }
 
+glm::vec3 seen_from(const TurntableCamera& camera, const PhotoView& from, const glm::vec2& pixel, float depth, const PhotoView& to) {
+  const glm::vec3 in_from((pixel.x - camera.axis_x) * depth / camera.focal_px, (pixel.y - 0.5f * float(camera.height)) * depth / camera.focal_px, depth);
+  return to_camera(camera, to, from_camera(camera, from, in_from));
+}
+
 glm::vec2 to_pixel(const TurntableCamera& camera, const glm::vec3& in_camera) {
   return {camera.axis_x + camera.focal_px * in_camera.x / in_camera.z, 0.5f * float(camera.height) + camera.focal_px * in_camera.y / in_camera.z};
 }

@@ -30,6 +30,8 @@ struct PhotoView {
 glm::vec3 to_camera(const TurntableCamera& camera, const PhotoView& view, const glm::vec3& point);
 // A point of the camera's frame of `view` back in the object frame.
 glm::vec3 from_camera(const TurntableCamera& camera, const PhotoView& view, const glm::vec3& in_camera);
+// Where the point `depth` ahead of `from`'s camera at `pixel` lies in `to`'s camera frame.
+glm::vec3 seen_from(const TurntableCamera& camera, const PhotoView& from, const glm::vec2& pixel, float depth, const PhotoView& to);
 // The pixel of a point in front of the camera (z > 0).
 glm::vec2 to_pixel(const TurntableCamera& camera, const glm::vec3& in_camera);
 

@@ -33,6 +33,13 @@ glm::vec3 direction_at(float azimuth_degrees, float elevation_degrees = 0) {
   return {std::sin(a) * std::cos(e), std::sin(e), std::cos(a) * std::cos(e)};
 }
 
+// `n` azimuths evenly round a full turn, from 0 (degrees).
+std::vector<float> evenly_round(int n) {
+  std::vector<float> azimuths;
+  for (int i = 0; i < n; ++i) azimuths.push_back(float(i) * 360.0f / float(n));
+  return azimuths;
+}
+
 // A soft shadow on the floor under a rendered object (its render's alpha): an ellipse under its
 // foot as wide as the object, darkest (0.5) where the object stands, fading over `depth` pixels.
 std::vector<float> ground_shadow(const Image& render, float depth = 14.0f) {
@@ -116,8 +123,7 @@ TEST(RealPhotosGLTest, MidwayViewsOfAPhotographedProductMoveDetailInsteadOfFadin
   INKWIRE_REQUIRE_FILE(kTruck);
   const SceneObject truck = load_scene_object(kTruck);
   const int size = 256, kept = 12;
-  std::vector<float> azimuths;
-  for (int i = 0; i < kept; ++i) azimuths.push_back(float(i) * 360.0f / float(kept));
+  const std::vector<float> azimuths = evenly_round(kept);
   PhotoProductOptions options;
   options.layout.step_degrees = 360.0f / float(kept);  // evenly spaced: this test is about the warp
   const Product product = product_from_photos(photograph(truck, azimuths, size, "photos"), options);
@@ -158,8 +164,7 @@ TEST(RealPhotosGLTest, MidwayViewsKeepTheProductsShadowAndDropTheBackdrop) {
   // Photographed on light grey with a soft shadow under it; shown on a dark blue backdrop.
   const int size = 256, kept = 12;
   const glm::u8vec3 studio(226, 224, 220), shown(40, 60, 90);
-  std::vector<float> azimuths;
-  for (int i = 0; i < kept; ++i) azimuths.push_back(float(i) * 360.0f / float(kept));
+  const std::vector<float> azimuths = evenly_round(kept);
   PhotoProductOptions options;
   options.layout.step_degrees = 360.0f / float(kept);
   const Product product = product_from_photos(photograph(truck, azimuths, size, "shadowed", studio, true), options);
@@ -346,8 +351,7 @@ TEST(RealPhotosGLTest, TheTrucksMattesGiveBackItsCameraAndAHullThatExplainsEvery
   INKWIRE_REQUIRE_FILE(kTruck);
   const SceneObject truck = load_scene_object(kTruck);
   constexpr int kSize = 256;
-  std::vector<float> azimuths;
-  for (int i = 0; i < 18; ++i) azimuths.push_back(20.0f * float(i));
+  const std::vector<float> azimuths = evenly_round(18);
   const std::vector<float> elevations = {10, 30};
   for (size_t r = 0; r < elevations.size(); ++r)
     photograph(truck, azimuths, kSize, "shape/row" + std::to_string(r + 1), kBlueBackdrop, false, 0, elevations[r]);
@@ -378,8 +382,7 @@ TEST(RealPhotosGLTest, AlongTheShapeTheTrucksMidwayViewsAreCloserThanAlongTheMat
   INKWIRE_REQUIRE_FILE(kTruck);
   const SceneObject truck = load_scene_object(kTruck);
   const int size = 256, kept = 12;
-  std::vector<float> azimuths;
-  for (int i = 0; i < kept; ++i) azimuths.push_back(float(i) * 360.0f / float(kept));
+  const std::vector<float> azimuths = evenly_round(kept);
   const fs::path folder = photograph(truck, azimuths, size, "shape-ring", kBlueBackdrop);
   double sums[2] = {0, 0};
   std::vector<Image> panels;
