@@ -161,5 +161,26 @@ TEST(ExpressionSelection, ASmileShowingTeethIsASmileAndAWideOpenOneALaugh) {
   EXPECT_EQ(classify(smiling, neutral).expression, Expression::Laugh);
 }
 
+TEST(ExpressionSelection, ASmileThatNarrowsBothEyesIsNoWinkButOneShutEyeStillWinks) {
+  FaceFeatures neutral;
+  neutral.eye_open_left = neutral.eye_open_right = 0.3f;
+  neutral.mouth_width = 1.0f;
+  // Yale subject 15's happy photo: eyes at 0.74 and 0.83 of neutral, the mouth 24% wider, closed.
+  FaceFeatures smiling = neutral;
+  smiling.mouth_width = 1.24f;
+  smiling.eye_open_left = 0.74f * 0.3f;
+  smiling.eye_open_right = 0.83f * 0.3f;
+  EXPECT_EQ(classify(smiling, neutral).expression, Expression::Smile);
+  // The same mouth with one eye clearly shut is a wink.
+  smiling.eye_open_left = 0.5f * 0.3f;
+  smiling.eye_open_right = 0.9f * 0.3f;
+  EXPECT_EQ(classify(smiling, neutral).expression, Expression::WinkLeft);
+  // Without the widened mouth the narrower eye alone decides, as before.
+  FaceFeatures squint = neutral;
+  squint.eye_open_left = 0.74f * 0.3f;
+  squint.eye_open_right = 0.83f * 0.3f;
+  EXPECT_EQ(classify(squint, neutral).expression, Expression::WinkLeft);
+}
+
 }  // namespace
 }  // namespace inkwire
