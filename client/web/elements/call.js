@@ -87,6 +87,10 @@ export class InkwireCall extends FacesMixin(PublishingMixin(MembershipMixin(Prej
 
   now() { return this.link.now(); }
 
+  // The grid is drawn by the call's own loop (faces.js) whenever something changed; a new size
+  // (SessionElement's observer asks for this) is such a change.
+  redraw() { this.tiles.changed = true; }
+
   disconnectedCallback() {
     this.hangUp();
     this.link?.close();
