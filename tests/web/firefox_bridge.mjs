@@ -34,6 +34,12 @@ const page = (await browser.pages())[0] ?? (await browser.newPage());
 page.on('console', (m) => process.stderr.write(`console: ${m.text()}\n`));
 page.on('pageerror', (e) => process.stderr.write(`page error: ${e.message}\n`));
 
+// As selenium's script timeout (30 s): Firefox's BiDi at times never answers one evaluation
+// (a page that is busy answers the next), which puppeteer would wait 180 s for.
+const SCRIPT_TIMEOUT_MS = 30000;
+const withinScriptTimeout = (promise) => Promise.race([promise, new Promise((resolve, reject) => {
+  setTimeout(() => reject(new Error(`script timed out after ${SCRIPT_TIMEOUT_MS / 1000} s`)), SCRIPT_TIMEOUT_MS).unref();
+})]);
 const answer = (value) => process.stdout.write(`${JSON.stringify(value)}\n`);
 for await (const line of createInterface({ input: process.stdin })) {
   let request;
@@ -44,7 +50,7 @@ for await (const line of createInterface({ input: process.stdin })) {
       answer({ ok: null });
     } else if (request.script !== undefined) {
       // eslint-disable-next-line no-new-func
-      const value = await page.evaluate(`(async () => { ${request.script} })()`);
+      const value = await withinScriptTimeout(page.evaluate(`(async () => { ${request.script} })()`));
       answer({ ok: value === undefined ? null : value });
     } else if (request.screenshot) {
       await page.screenshot({ path: request.screenshot });
