@@ -15,6 +15,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <map>
 #include <numeric>
 #include <sstream>
 #include <thread>
@@ -244,6 +246,7 @@ std::vector<Result> run_call_suite(Harness& harness) {
     std::vector<double> uplink_bps, latency;
     uint64_t samples = 0, matched = 0, analysed = 0;
     double analysis_seconds = 0;
+    std::map<std::string, double> per_subject;
     for (const std::string& subject : subjects) {
       const fs::path folder = face_clip(dir / "uplink", subject, 8.0);
       ServerThread up(dir / ("data-uplink-" + subject));
@@ -278,15 +281,24 @@ std::vector<Result> run_call_suite(Harness& harness) {
       // The face shown at t: the newest received whose picture is not later than t.
       const std::vector<std::vector<Expression>> wanted = {{Expression::Neutral}, {Expression::Smile, Expression::Laugh}, {Expression::Surprise},
                                                            {Expression::Neutral}};
+      uint64_t subject_samples = 0, subject_matched = 0;
+      std::string shown_names;
       for (int t = 0; t < 8000; t += 100) {
         if (t % 2000 < 700) continue;
         std::optional<Expression> shown;
         for (const auto& f : faces)
           if (f.time_ms <= uint32_t(t)) shown = expression_from_code(f.expression.code);
         const auto& want = wanted[size_t(t / 2000)];
-        ++samples;
-        matched += shown && std::find(want.begin(), want.end(), *shown) != want.end();
+        ++subject_samples;
+        subject_matched += shown && std::find(want.begin(), want.end(), *shown) != want.end();
+        shown_names += std::string(t % 2000 == 700 ? " |" : " ") + (shown ? name_of(*shown) : "-");
       }
+      samples += subject_samples;
+      matched += subject_matched;
+      per_subject["accuracy_subject" + subject] = double(subject_matched) / double(subject_samples);
+      // What the listener showed, a word each 100 ms, the expressions apart by "|": which subject and
+      // which expression lose.
+      std::cerr << "uplink " << (crops == PublisherOptions::Crops::Vp8 ? "vp8" : "jpeg") << " subject" << subject << " shown:" << shown_names << "\n";
     }
     Result r{.suite = "call", .renderer = "call",
              .variant = std::string("uplink,crops=") + (crops == PublisherOptions::Crops::Vp8 ? "vp8" : "jpeg") + (set_name == "yale09-15" ? ",held-out" : ""),
@@ -294,6 +306,7 @@ std::vector<Result> run_call_suite(Harness& harness) {
     r.counters = {{"uplink_bps", percentile(uplink_bps, 0.5)}, {"uplink_bps_max", *std::max_element(uplink_bps.begin(), uplink_bps.end())},
                   {"expression_accuracy", samples ? double(matched) / double(samples) : 0}, {"face_latency_ms_p99", percentile(latency, 0.99)},
                   {"face_latency_ms_p50", percentile(latency, 0.5)}, {"analysis_ms_mean", analysed ? analysis_seconds * 1000 / double(analysed) : 0}};
+    r.counters.insert(per_subject.begin(), per_subject.end());
     results.push_back(r);
   }
 
