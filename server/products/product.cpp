@@ -74,16 +74,13 @@ std::vector<Track> outline_tracks(const Image& a, const Image& b, const std::vec
   return out;
 }
 
-// A pair's points go straight from a to b (halfway on the line); a triangle's are where they are
-// in each of its three photos.
+// A pair's points go from a to b, halfway on the straight line unless the shape bent it; a
+// triangle's are where they are in each of its three photos.
 TweenCell cell_from_tracks(const std::vector<Track>& tracks, const std::vector<uint16_t>& samples) {
-  if (samples.size() == 2) {
-    std::vector<Landmark> landmarks;
-    for (const Track& t : tracks) landmarks.push_back({.source = t.source, .target = t.targets[0], .match = 1.0f});
-    return cell_from_landmarks(landmarks, samples[0], samples[1]);
-  }
   TweenCell cell{.samples = samples, .points = {}};
-  for (const Track& t : tracks) cell.points.push_back({t.source, t.targets[0], t.targets[1]});
+  for (const Track& t : tracks)
+    cell.points.push_back(samples.size() == 2 ? ControlPoint{t.source, 0.5f * (t.source + t.targets[0]) + t.bulge, t.targets[0]}
+                                              : ControlPoint{t.source, t.targets[0], t.targets[1]});
   return cell;
 }
 
@@ -276,7 +273,9 @@ Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions&
     std::vector<Track> outline;
     if (product.matted) outline = outline_tracks(a, photos.photos[cell[1]], flows);
     const size_t on_outline = outline.size();
-    const std::vector<Track> points = distil_tracks(flow_pointers, a, std::move(outline), distil);
+    std::vector<Track> points = distil_tracks(flow_pointers, a, std::move(outline), distil);
+    if (shape && cell.size() == 2)
+      for (Track& t : points) t.bulge = arc_bulge(*shape, cell[0], cell[1], t.source);
     tracks.push_back(points);
     outline_points.push_back(on_outline);
     if (progress) {

@@ -88,4 +88,19 @@ MergedMatches merged_matches(const DenseMatches& matched, const DenseMatches& sh
   return out;
 }
 
+glm::vec2 arc_bulge(const PhotoShape& shape, size_t a, size_t b, glm::vec2 source) {
+  const TurntableCamera& c = shape.camera;
+  const PhotoView& from = shape.views[a];
+  const PhotoView& to = shape.views[b];
+  const int x = int(std::floor(source.x)), y = int(std::floor(source.y));
+  if (from.row != to.row || x < 0 || y < 0 || x >= c.width || y >= c.height) return glm::vec2(0.0f);
+  const float z = shape.depth[a][size_t(y * c.width + x)];
+  if (z <= 0) return glm::vec2(0.0f);
+  const float turn = std::remainder(to.azimuth_deg - from.azimuth_deg, 360.0f);
+  const PhotoView halfway{.azimuth_deg = from.azimuth_deg + 0.5f * turn, .row = from.row};
+  const glm::vec3 in_b = seen_from(c, from, source, z, to), in_halfway = seen_from(c, from, source, z, halfway);
+  if (in_b.z <= 1e-3f || in_halfway.z <= 1e-3f) return glm::vec2(0.0f);
+  return to_pixel(c, in_halfway) - 0.5f * (source + to_pixel(c, in_b));
+}
+
 }  // namespace inkwire

@@ -25,4 +25,10 @@ struct MergedMatches {
 // photos agree better, where the motion is reliable; reliable where the one kept is.
 MergedMatches merged_matches(const DenseMatches& matched, const DenseMatches& shape, const Image& a, const Image& b);
 
+// Where the shape puts photo a's pixel `source` halfway between photos a and b (of one row),
+// against the straight line's midpoint from its place in a to its place in b: a point turning
+// about the axis moves on an arc, and the tween data's middle point can say so. Zero off the
+// object, or for photos of different rows.
+glm::vec2 arc_bulge(const PhotoShape& shape, size_t a, size_t b, glm::vec2 source);
+
 }  // namespace inkwire

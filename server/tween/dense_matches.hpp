@@ -54,6 +54,7 @@ struct DistilOptions {
 struct Track {
   glm::vec2 source;
   std::vector<glm::vec2> targets;  // one per flow, in the flows' order
+  glm::vec2 bulge{0.0f};           // a pair's: its halfway place off the straight line's midpoint (from a shape)
 };
 // Control points for a cell from a's verified flows into its other photos: `anchors` (outline
 // points, kept as they are, first) plus points where the warps through the points so far err
