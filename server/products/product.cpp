@@ -266,24 +266,40 @@ Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions&
       flows.push_back(matches.get(cell[0], cell[k]));
       if (!shape) continue;
       MergedMatches merged = merged_matches(flows.back(), shape_matches(*shape, cell[0], cell[k]), a, photos.photos[cell[k]]);
-      flows.back() = std::move(merged.matches);
       from_shape += merged.from_shape / double(cell.size() - 1);
+      if (cell.size() > 2) flows.back() = std::move(merged.matches);
     }
-    for (const DenseMatches& f : flows) flow_pointers.push_back(&f);
-    std::vector<Track> outline;
-    if (product.matted) outline = outline_tracks(a, photos.photos[cell[1]], flows);
-    const size_t on_outline = outline.size();
-    std::vector<Track> points = distil_tracks(flow_pointers, a, std::move(outline), distil);
-    if (shape && cell.size() == 2)
-      for (Track& t : points) t.bulge = arc_bulge(*shape, cell[0], cell[1], t.source);
+    // A pair the shape explains takes its points from the shape alone (the tween data's middle
+    // point where the halfway view sees each); a triangle of rows, from the matches merged with
+    // the shape's motion pixel by pixel.
+    const bool points_from_shape = shape && cell.size() == 2 && from_shape >= kShapeTrusted;
+    std::vector<Track> points;
+    size_t on_outline = 0;
+    if (points_from_shape) {
+      ShapeTracks exact = shape_tracks(*shape, cell[0], cell[1], o.control_points / 2);
+      points = std::move(exact.tracks);
+      on_outline = exact.outline;
+    } else {
+      for (const DenseMatches& f : flows) flow_pointers.push_back(&f);
+      std::vector<Track> outline;
+      if (product.matted) outline = outline_tracks(a, photos.photos[cell[1]], flows);
+      on_outline = outline.size();
+      points = distil_tracks(flow_pointers, a, std::move(outline), distil);
+    }
     tracks.push_back(points);
     outline_points.push_back(on_outline);
     if (progress) {
       std::string names = photos.names[cell[0]];
       for (size_t k = 1; k < cell.size(); ++k) names += (k == 1 ? " -> " : ", ") + photos.names[cell[k]];
-      progress(i + 1, total, names + ": " + std::to_string(points.size() - on_outline) + " points from matches" +
-                                 (shape ? " (" + std::to_string(int(std::lround(100 * from_shape))) + "% of the motion from the shape)" : "") +
-                                 (product.matted ? ", " + std::to_string(on_outline) + " outline points" : ""));
+      const std::string shape_share = std::to_string(int(std::lround(100 * from_shape))) + "%";
+      std::string line = names + ": " + std::to_string(points.size() - on_outline) + " points from " + (points_from_shape ? "the shape" : "matches");
+      if (shape && cell.size() == 2)
+        line += points_from_shape ? " (it explains " + shape_share + " of the pair better than the matches)"
+                                  : " (the shape explains only " + shape_share + " of the pair better than them: not used here)";
+      else if (shape)
+        line += " (" + shape_share + " of the motion from the shape)";
+      if (product.matted) line += ", " + std::to_string(on_outline) + " outline points";
+      progress(i + 1, total, line);
     }
   }
   const CameraGains camera = row_gains(backdrops, photos);

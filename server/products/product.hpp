@@ -37,7 +37,9 @@ struct PhotoProductOptions {
   // (photo_shape.hpp), and control points moved along the shape where the photos agree better
   // under it than under the matches (shape_matches.hpp); off: matched points only
   std::string shape = "auto";
-  int control_points = 130;  // per pair at most, outline included (12 bytes each; 160 bought 0.1 dB for 20% more)
+  // Per pair at most, outline included (12 bytes each; 160 bought 0.1 dB for 20% more); a pair
+  // whose points come from the shape takes half, as a mesh product takes 65 exact points.
+  int control_points = 130;
   // The tween data at most this share of what a first view fetches (photos, mattes, tween data).
   // Over it, every cell gives up its last-chosen points (those that mended the least) down to one
   // cap, its outline kept: a 6 x 20 rows product needs two triangles a photo where a ring needs one

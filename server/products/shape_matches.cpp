@@ -2,8 +2,10 @@
 
 #include <cmath>
 
+#include <glm/geometric.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "common/tween/point_spread.hpp"
 #include "server/products/depth_refinement.hpp"
 #include "server/tween/landmarks.hpp"
 
@@ -88,19 +90,53 @@ MergedMatches merged_matches(const DenseMatches& matched, const DenseMatches& sh
   return out;
 }
 
-glm::vec2 arc_bulge(const PhotoShape& shape, size_t a, size_t b, glm::vec2 source) {
+ShapeTracks shape_tracks(const PhotoShape& shape, size_t a, size_t b, int count) {
   const TurntableCamera& c = shape.camera;
-  const PhotoView& from = shape.views[a];
-  const PhotoView& to = shape.views[b];
-  const int x = int(std::floor(source.x)), y = int(std::floor(source.y));
-  if (from.row != to.row || x < 0 || y < 0 || x >= c.width || y >= c.height) return glm::vec2(0.0f);
-  const float z = shape.depth[a][size_t(y * c.width + x)];
-  if (z <= 0) return glm::vec2(0.0f);
-  const float turn = std::remainder(to.azimuth_deg - from.azimuth_deg, 360.0f);
-  const PhotoView halfway{.azimuth_deg = from.azimuth_deg + 0.5f * turn, .row = from.row};
-  const glm::vec3 in_b = seen_from(c, from, source, z, to), in_halfway = seen_from(c, from, source, z, halfway);
-  if (in_b.z <= 1e-3f || in_halfway.z <= 1e-3f) return glm::vec2(0.0f);
-  return to_pixel(c, in_halfway) - 0.5f * (source + to_pixel(c, in_b));
+  const float turn = std::remainder(shape.views[b].azimuth_deg - shape.views[a].azimuth_deg, 360.0f);
+  const PhotoView halfway{.azimuth_deg = shape.views[a].azimuth_deg + 0.5f * turn, .row = shape.views[a].row};
+  const float near = 2.0f * shape.hull.voxel;  // a point is seen where the photo's nearest surface is this near it
+  const auto depth_at = [&](size_t photo, glm::vec2 p) {
+    const int x = int(std::floor(p.x)), y = int(std::floor(p.y));
+    return x < 0 || y < 0 || x >= c.width || y >= c.height ? 0.0f : shape.depth[photo][size_t(y * c.width + x)];
+  };
+  const auto near_background = [&](size_t photo, glm::vec2 p) {
+    for (int dy = -2; dy <= 2; ++dy)
+      for (int dx = -2; dx <= 2; ++dx)
+        if (depth_at(photo, p + glm::vec2(dx, dy)) <= 0) return true;
+    return false;
+  };
+  std::vector<Track> candidates;
+  std::vector<glm::vec2> layout;  // where each sits in the warp: halfway where both see it, else where it is seen
+  std::vector<bool> on_outline;
+  const int step = std::max(2, std::min(c.width, c.height) / 96);
+  for (const auto& [from, to] : {std::pair{a, b}, std::pair{b, a}})
+    for (int y = step / 2; y < c.height; y += step)
+      for (int x = step / 2; x < c.width; x += step) {
+        const glm::vec2 pixel(float(x) + 0.5f, float(y) + 0.5f);
+        const float z = depth_at(from, pixel);
+        if (z <= 0) continue;
+        const glm::vec3 in_to = seen_from(c, shape.views[from], pixel, z, shape.views[to]);
+        const glm::vec3 in_halfway = seen_from(c, shape.views[from], pixel, z, halfway);
+        if (in_to.z <= 1e-3f || in_halfway.z <= 1e-3f) continue;
+        const glm::vec2 there = to_pixel(c, in_to), middle = to_pixel(c, in_halfway);
+        if (there.x < 0 || there.y < 0 || there.x >= float(c.width) || there.y >= float(c.height)) continue;
+        const float other = depth_at(to, there);
+        const bool seen = other > 0 && std::abs(other - in_to.z) <= near;
+        const bool outline = near_background(from, pixel) || (seen && near_background(to, there));
+        // A point both see comes from a's grid alone (b's would repeat it); one the other photo
+        // does not see only from an outline, where it turns into or out of sight.
+        if (seen ? from != a : !outline) continue;
+        const glm::vec2 in_a = from == a ? pixel : there, in_b = from == a ? there : pixel;
+        candidates.push_back({.source = in_a, .targets = {in_b}, .bulge = middle - 0.5f * (in_a + in_b)});
+        layout.push_back(seen ? middle : pixel);
+        on_outline.push_back(outline);
+      }
+  ShapeTracks out;
+  for (const size_t i : spread_points(layout, on_outline, size_t(count) * 3 / 5, size_t(count))) {
+    if (out.outline == out.tracks.size() && on_outline[i]) ++out.outline;  // the outline's, first
+    out.tracks.push_back(candidates[i]);
+  }
+  return out;
 }
 
 }  // namespace inkwire

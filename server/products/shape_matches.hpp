@@ -25,10 +25,20 @@ struct MergedMatches {
 // photos agree better, where the motion is reliable; reliable where the one kept is.
 MergedMatches merged_matches(const DenseMatches& matched, const DenseMatches& shape, const Image& a, const Image& b);
 
-// Where the shape puts photo a's pixel `source` halfway between photos a and b (of one row),
-// against the straight line's midpoint from its place in a to its place in b: a point turning
-// about the axis moves on an arc, and the tween data's middle point can say so. Zero off the
-// object, or for photos of different rows.
-glm::vec2 arc_bulge(const PhotoShape& shape, size_t a, size_t b, glm::vec2 source);
+// A pair's control points from the shape alone, made as a mesh product's exact points are
+// (exact_cell): points of the surface on a grid over both photos, each seen by both (at its place
+// in each, and in the middle where the halfway view sees it) or, seen by one, on an outline; up to
+// `count`, three fifths from the outline first, spread as common/tween/point_spread.hpp spreads.
+struct ShapeTracks {
+  std::vector<Track> tracks;
+  size_t outline = 0;  // the first this many are the outline's
+};
+ShapeTracks shape_tracks(const PhotoShape& shape, size_t a, size_t b, int count);
+
+// The share of a pair's pixels whose motion the shape explains better than the matches
+// (merged_matches' from_shape) for the pair's points to come from the shape: on the rendered
+// truck every pair's is 30-79%; a shape that is not the object's (a hull over what the mattes
+// miss) explains little.
+inline constexpr double kShapeTrusted = 0.2;
 
 }  // namespace inkwire

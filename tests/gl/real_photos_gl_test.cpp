@@ -475,5 +475,6 @@ TEST(RealPhotosGLTest, AlongTheShapeTheTrucksMidwayViewsAreCloserThanAlongTheMat
   const double matched = sums[0] / kept, shaped = sums[1] / kept;
   std::printf("mean over %d midway views: tween along the matches %.2f dB, along the shape %.2f dB (%+.2f), along the true geometry %.2f dB (%+.2f)\n",
               kept, matched, shaped, shaped - matched, exact, exact - matched);
-  EXPECT_GT(shaped, matched);
+  // Measured 2026-11-28: 19.25 along the matches, 21.44 along the shape (the target: 2 dB better).
+  EXPECT_GE(shaped, matched + 2.0);
 }

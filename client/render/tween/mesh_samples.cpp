@@ -9,6 +9,7 @@
 
 #include "client/gl/canvas.hpp"
 #include "client/render/styles.hpp"
+#include "common/tween/point_spread.hpp"
 #include "common/tween/view_sphere.hpp"
 
 namespace inkwire {
@@ -252,35 +253,7 @@ TweenCell exact_cell(const MeshSamples& samples, const SceneObject& object, cons
     layout.push_back(at);
     on_outline.push_back(outline);
   }
-  if (candidates.empty()) return out;
-  // Outline points first (the silhouette is where a warp shows its errors: a ghost of the edge
-  // wherever the samples disagree), then the rest, each group spread by farthest-point sampling
-  // from what is already chosen; the first pick is the candidate farthest from the centroid.
-  glm::vec2 centroid(0.0f);
-  for (const glm::vec2& l : layout) centroid += l;
-  centroid /= float(layout.size());
-  std::vector<float> distance(layout.size(), std::numeric_limits<float>::max());
-  auto choose = [&](size_t i) {
-    out.points.push_back(candidates[i]);
-    for (size_t j = 0; j < layout.size(); ++j) distance[j] = std::min(distance[j], glm::length(layout[j] - layout[i]));
-  };
-  auto spread = [&](size_t until, const std::vector<bool>& eligible) {
-    while (out.points.size() < until) {
-      size_t next = layout.size();
-      for (size_t i = 0; i < layout.size(); ++i) {
-        if (!eligible[i]) continue;
-        const float d = out.points.empty() ? glm::length(layout[i] - centroid) : distance[i];
-        const float best = next == layout.size() ? -1.0f
-                           : (out.points.empty() ? glm::length(layout[next] - centroid) : distance[next]);
-        if (d > best) next = i;
-      }
-      // Stop when nothing is left that is not on top of a chosen point.
-      if (next == layout.size() || (!out.points.empty() && distance[next] < 0.5f)) return;
-      choose(next);
-    }
-  };
-  spread(size_t(count) * 3 / 5, on_outline);
-  spread(size_t(count), std::vector<bool>(layout.size(), true));
+  for (const size_t i : spread_points(layout, on_outline, size_t(count) * 3 / 5, size_t(count))) out.points.push_back(candidates[i]);
   return out;
 }
 
