@@ -66,6 +66,7 @@ set(INKWIRE_SHARED_COMMON_SOURCES
   orientation.cpp
   style_params.cpp
   topology.cpp
+  tween/point_spread.cpp
   tween/tween_data.cpp
   tween/view_sphere.cpp
   tween/warp_mesh.cpp)
