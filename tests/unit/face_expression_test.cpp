@@ -147,10 +147,16 @@ TEST(ExpressionTemplates, MalformedFilesAreRejectedWithAReason) {
 
 // A smile that shows its teeth (the development subjects' happy photos open the lips 0.10-0.21
 // inter-ocular units) is a smile; only a mouth opened further laughs.
-TEST(ExpressionSelection, ASmileShowingTeethIsASmileAndAWideOpenOneALaugh) {
+// A neutral face's features: eyes 0.3 open, the mouth 1 wide, the rest 0.
+FaceFeatures plain_neutral() {
   FaceFeatures neutral;
   neutral.eye_open_left = neutral.eye_open_right = 0.3f;
   neutral.mouth_width = 1.0f;
+  return neutral;
+}
+
+TEST(ExpressionSelection, ASmileShowingTeethIsASmileAndAWideOpenOneALaugh) {
+  const FaceFeatures neutral = plain_neutral();
   FaceFeatures smiling = neutral;
   smiling.mouth_width = 1.2f;
   for (const float open : {0.12f, 0.18f}) {
@@ -162,9 +168,7 @@ TEST(ExpressionSelection, ASmileShowingTeethIsASmileAndAWideOpenOneALaugh) {
 }
 
 TEST(ExpressionSelection, ASmileThatNarrowsBothEyesIsNoWinkButOneShutEyeStillWinks) {
-  FaceFeatures neutral;
-  neutral.eye_open_left = neutral.eye_open_right = 0.3f;
-  neutral.mouth_width = 1.0f;
+  const FaceFeatures neutral = plain_neutral();
   // Yale subject 15's happy photo: eyes at 0.74 and 0.83 of neutral, the mouth 24% wider, closed.
   FaceFeatures smiling = neutral;
   smiling.mouth_width = 1.24f;
