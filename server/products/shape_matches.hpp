@@ -7,6 +7,8 @@
 // points are not the object's; so per pixel, the shape's motion and the matched one (verified
 // optical flow) each warp b onto a, and the one under which the two pictures agree better
 // (photo-consistency, over a small window) is kept: where the shape is unsure, the matches stay.
+// How often the shape wins says whether a pair trusts it; a pair that does takes its control
+// points from the shape alone (shape_tracks), a triangle of rows the merged motion.
 #include "server/products/photo_shape.hpp"
 #include "server/tween/dense_matches.hpp"
 
