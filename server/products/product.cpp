@@ -4,85 +4,22 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <deque>
 #include <optional>
-
-#include <glm/geometric.hpp>
 
 #include "common/error.hpp"
 #include "protocol/messages.hpp"
+#include "server/products/control_points.hpp"
 #include "server/products/exposure.hpp"
 #include "server/products/matte.hpp"
 #include "server/products/photo_folder.hpp"
 #include "server/products/photo_shape.hpp"
-#include "server/products/shape_matches.hpp"
 #include "server/products/turn_angles.hpp"
-#include "server/tween/dense_matches.hpp"
-#include "server/tween/landmarks.hpp"
-#include "server/tween/outline.hpp"
+#include "server/products/tween_budget.hpp"
 
 namespace inkwire {
 namespace fs = std::filesystem;
 
 namespace {
-
-// Verified dense matches between photos, each pair computed once while it is needed: between two
-// rows, a quad's second triangle and the next quad's first share the pair up the column between
-// them, read the other way (the same matches reversed). Only the last two pairs are kept: at 2048
-// pixels a side a pair's flows and masks take 75 MB.
-class MatchCache {
- public:
-  MatchCache(const std::vector<Image>& photos, const DenseMatchOptions& options) : photos_(photos), options_(options) {}
-
-  DenseMatches get(int a, int b) {
-    for (const Entry& e : recent_) {
-      if (e.a == a && e.b == b) return e.matches;
-      if (e.a == b && e.b == a) return reversed(e.matches);
-    }
-    recent_.push_back({a, b, dense_matches(photos_[size_t(a)], photos_[size_t(b)], options_)});
-    if (recent_.size() > kKept) recent_.pop_front();
-    return recent_.back().matches;
-  }
-
- private:
-  static constexpr size_t kKept = 2;  // a triangle's two pairs
-  struct Entry {
-    int a, b;
-    DenseMatches matches;
-  };
-  const std::vector<Image>& photos_;
-  DenseMatchOptions options_;
-  std::deque<Entry> recent_;
-};
-
-// The outline points of a cell's first two photos (row neighbours: the object's ends at one
-// height stay at that height), followed into a triangle's third photo by its verified flow;
-// an end the flow there does not vouch for is left out.
-std::vector<Track> outline_tracks(const Image& a, const Image& b, const std::vector<DenseMatches>& flows) {
-  std::vector<Track> out;
-  for (const Landmark& l : outline_landmarks(a, b, std::max(8, a.height / 32))) {
-    Track t{.source = l.source, .targets = {l.target}};
-    bool followed = true;
-    for (size_t k = 1; k < flows.size() && followed; ++k) {
-      const cv::Point p(int(std::lround(l.source.x)), int(std::lround(l.source.y)));
-      followed = flows[k].reliable.at<uint8_t>(p) != 0;
-      const cv::Point2f there = flow_at(flows[k].forward, {l.source.x, l.source.y});
-      t.targets.push_back({there.x, there.y});
-    }
-    if (followed) out.push_back(std::move(t));
-  }
-  return out;
-}
-
-// A pair's points go from a to b, halfway on the straight line unless the shape bent it; a
-// triangle's are where they are in each of its three photos.
-TweenCell cell_from_tracks(const std::vector<Track>& tracks, const std::vector<uint16_t>& samples) {
-  TweenCell cell{.samples = samples, .points = {}};
-  for (const Track& t : tracks)
-    cell.points.push_back(samples.size() == 2 ? ControlPoint{t.source, 0.5f * (t.source + t.targets[0]) + t.bulge, t.targets[0]}
-                                              : ControlPoint{t.source, t.targets[0], t.targets[1]});
-  return cell;
-}
 
 // Per photo, the camera's gain (exposure.hpp), each row on its own: light differs between camera
 // heights (the top row sees the lit top), which is the product's look. Empty `backdrops` (no
@@ -109,39 +46,6 @@ std::string degrees_list(const std::vector<float>& degrees) {
     out += text;
   }
   return out;
-}
-
-// Each cell's tracks (its outline's first) as the tween data carries them, every cell cut to its
-// first `cap` points but never below its outline.
-std::vector<TweenCell> cells_capped(const std::vector<std::vector<Track>>& tracks, const std::vector<size_t>& outline,
-                                    const std::vector<std::vector<uint16_t>>& cells, size_t cap) {
-  std::vector<TweenCell> out;
-  for (size_t i = 0; i < tracks.size(); ++i) {
-    const size_t keep = std::min(tracks[i].size(), std::max(cap, outline[i]));
-    out.push_back(cell_from_tracks({tracks[i].begin(), tracks[i].begin() + std::ptrdiff_t(keep)}, cells[i]));
-  }
-  return out;
-}
-
-// The largest cap on every cell's points that keeps `data`'s encoded form within `max_bytes`
-// (what the cells' own sizes give when nothing need go), and the cells at it. Points were chosen
-// greedily, so a cell's last are those that mended the least: cutting them costs least.
-size_t fit_tween_budget(TweenData& data, const std::vector<std::vector<Track>>& tracks, const std::vector<size_t>& outline,
-                        const std::vector<std::vector<uint16_t>>& cells, size_t max_bytes) {
-  size_t most = 0;
-  for (const auto& t : tracks) most = std::max(most, t.size());
-  auto fits = [&](size_t cap) {
-    data.cells = cells_capped(tracks, outline, cells, cap);
-    return encode_tween(data).size() <= max_bytes;
-  };
-  if (fits(most)) return most;
-  size_t low = 0, high = most;  // high does not fit; low = 0 (the outlines alone) is the floor, fitting or not
-  while (high - low > 1) {
-    const size_t mid = (low + high) / 2;
-    (fits(mid) ? low : high) = mid;
-  }
-  fits(low);
-  return low;
 }
 
 }  // namespace
@@ -244,64 +148,11 @@ Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions&
     }
   }
 
-  // Per cell, verified dense matches (SPEC T15) from its first photo to the others, and from them:
-  // control points (the outline where there are mattes, what a view between two photos shows
-  // first when it is wrong, then points wherever the warp through the points so far would
-  // double detail).
-  DistilOptions distil;
-  distil.max_points = o.control_points;
-  DenseMatchOptions match_options;
-  match_options.use_mattes = product.matted;
-  MatchCache matches(photos.photos, match_options);
-  std::vector<std::vector<Track>> tracks;  // per cell, in the order chosen (outline first)
-  std::vector<size_t> outline_points;      // per cell
+  // Control points per cell (control_points.hpp), from the matches or the shape.
+  const CellTracks tracks = control_points(photos, product.matted, shape ? &*shape : nullptr, o.control_points, progress);
+
+  // Exposure: the camera's gain evened on the backdrop, row by row.
   const int total = int(photos.cells.size());
-  for (int i = 0; i < total; ++i) {
-    const std::vector<uint16_t>& cell = photos.cells[size_t(i)];
-    const Image& a = photos.photos[cell[0]];
-    std::vector<DenseMatches> flows;
-    std::vector<const DenseMatches*> flow_pointers;
-    double from_shape = 0;
-    for (size_t k = 1; k < cell.size(); ++k) {
-      flows.push_back(matches.get(cell[0], cell[k]));
-      if (!shape) continue;
-      MergedMatches merged = merged_matches(flows.back(), shape_matches(*shape, cell[0], cell[k]), a, photos.photos[cell[k]]);
-      from_shape += merged.from_shape / double(cell.size() - 1);
-      if (cell.size() > 2) flows.back() = std::move(merged.matches);
-    }
-    // A pair the shape explains takes its points from the shape alone (the tween data's middle
-    // point where the halfway view sees each); a triangle of rows, from the matches merged with
-    // the shape's motion pixel by pixel.
-    const bool points_from_shape = shape && cell.size() == 2 && from_shape >= kShapeTrusted;
-    std::vector<Track> points;
-    size_t on_outline = 0;
-    if (points_from_shape) {
-      ShapeTracks exact = shape_tracks(*shape, cell[0], cell[1], o.control_points / 2);
-      points = std::move(exact.tracks);
-      on_outline = exact.outline;
-    } else {
-      for (const DenseMatches& f : flows) flow_pointers.push_back(&f);
-      std::vector<Track> outline;
-      if (product.matted) outline = outline_tracks(a, photos.photos[cell[1]], flows);
-      on_outline = outline.size();
-      points = distil_tracks(flow_pointers, a, std::move(outline), distil);
-    }
-    tracks.push_back(points);
-    outline_points.push_back(on_outline);
-    if (progress) {
-      std::string names = photos.names[cell[0]];
-      for (size_t k = 1; k < cell.size(); ++k) names += (k == 1 ? " -> " : ", ") + photos.names[cell[k]];
-      const std::string shape_share = std::to_string(int(std::lround(100 * from_shape))) + "%";
-      std::string line = names + ": " + std::to_string(points.size() - on_outline) + " points from " + (points_from_shape ? "the shape" : "matches");
-      if (shape && cell.size() == 2)
-        line += points_from_shape ? " (it explains " + shape_share + " of the pair better than the matches)"
-                                  : " (the shape explains only " + shape_share + " of the pair better than them: not used here)";
-      else if (shape)
-        line += " (" + shape_share + " of the motion from the shape)";
-      if (product.matted) line += ", " + std::to_string(on_outline) + " outline points";
-      progress(i + 1, total, line);
-    }
-  }
   const CameraGains camera = row_gains(backdrops, photos);
   const std::vector<glm::vec3>& gains = camera.gains;
   float largest_change = 0;
@@ -313,27 +164,26 @@ Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions&
     progress(0, total, !camera.unmeasured.empty()
                            ? "exposure left as it was: " + camera.unmeasured
                            : "the camera's exposure evened on the backdrop: the largest change " + std::to_string(int(std::lround(largest_change * 100))) + "%");
-  // The tween data's share of the first view (the photos' bytes as they will be stored, after
-  // the exposure is evened): tween <= share x (photos + mattes + tween).
+
+  // The budget (tween_budget.hpp): the tween data's share of the first view (the photos' bytes as
+  // they will be stored, after the exposure is evened): tween <= share x (photos + mattes + tween).
   size_t photo_bytes = 0;
   for (const Image& photo : photos.photos)
     photo_bytes += stored_photo(photo, product.matted).size() + (product.matted ? stored_matte(photo).size() : 0);
   const double share = std::clamp(double(o.max_tween_share), 0.0, 0.99);
   const size_t budget = size_t(share / (1.0 - share) * double(photo_bytes));
-  product.data.cells = cells_capped(tracks, outline_points, photos.cells, SIZE_MAX);
-  const size_t before = encode_tween(product.data).size();
-  const size_t cap = fit_tween_budget(product.data, tracks, outline_points, photos.cells, budget);
-  const size_t after = encode_tween(product.data).size();
+  const BudgetFit fit = fit_tween_budget(product.data, tracks, photos.cells, budget);
   if (progress) {
     const auto percent = [&](size_t bytes) {
       char text[16];
       std::snprintf(text, sizeof text, "%.1f%%", 100.0 * double(bytes) / double(bytes + photo_bytes));
       return std::string(text);
     };
-    std::string line = "tween data: " + std::to_string(after) + " bytes, " + percent(after) + " of the first view";
-    if (after < before)
-      line += " (every cell cut to " + std::to_string(cap) + " points, its outline kept, from " + std::to_string(before) + " bytes, " + percent(before) + ")";
-    if (after > budget) line += ", over the " + percent(budget) + " kept to: the outlines alone are more";
+    std::string line = "tween data: " + std::to_string(fit.after) + " bytes, " + percent(fit.after) + " of the first view";
+    if (fit.after < fit.before)
+      line += " (every cell cut to " + std::to_string(fit.cap) + " points, its outline kept, from " + std::to_string(fit.before) + " bytes, " +
+              percent(fit.before) + ")";
+    if (fit.after > budget) line += ", over the " + percent(budget) + " kept to: the outlines alone are more";
     progress(0, total, line);
   }
   product.images = std::move(photos.photos);
