@@ -34,8 +34,8 @@ struct PhotoProductOptions {
   PhotoLayout layout;      // rows, turn, elevations, size
   std::string matte = "auto";  // auto: key a plain backdrop when there is one; key: refuse if not; none
   // auto: with mattes, the turntable's camera and the object's shape found from them
-  // (photo_shape.hpp), and control points moved along the shape where the photos agree better
-  // under it than under the matches (shape_matches.hpp); off: matched points only
+  // (photo_shape.hpp), and a pair's control points taken from the shape where the photos agree
+  // better under it than under the matches (control_points.hpp); off: matched points only
   std::string shape = "auto";
   // Per pair at most, outline included (12 bytes each; 160 bought 0.1 dB for 20% more); a pair
   // whose points come from the shape takes half, as a mesh product takes 65 exact points.
