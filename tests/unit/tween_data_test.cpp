@@ -1,6 +1,6 @@
 // Tween data (SPEC T3, T6): the codec round-trips exactly to its quantisation and refuses
 // truncated, oversized, malformed and random input; 65 points per pair fit in 500 bytes; paths,
-// view location and the Delaunay warp mesh behave.
+// view location, the Delaunay warp mesh and the spreading of exact points behave.
 #include <cmath>
 #include <cstdio>
 
@@ -10,6 +10,7 @@
 
 #include "common/error.hpp"
 #include "common/random.hpp"
+#include "common/tween/point_spread.hpp"
 #include "common/tween/tween_data.hpp"
 #include "common/tween/view_sphere.hpp"
 #include "common/tween/warp_mesh.hpp"
@@ -222,4 +223,22 @@ TEST(TweenDataTest, ACellAloneRoundTripsAndIsCheckedAgainstItsProduct) {
     EXPECT_THROW(decode_tween_cell(longer, d.width, d.height, d.sample_count()), Error);
   }
   EXPECT_THROW(decode_tween_cell(std::vector<uint8_t>(kMaxTweenCellBytes + 1, 0), 256, 256, 24), Error);
+}
+
+TEST(PointSpreadTest, OutlineFirstThenFarthestPointsAndNoneOnTopOfAnother) {
+  // A square's corners and a side's midpoint on the outline; its middle, and a point 0.3 px from a
+  // corner, inside.
+  const std::vector<glm::vec2> layout = {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {5, 0}, {5, 5}, {0.3f, 0}};
+  const std::vector<bool> outline = {true, true, true, true, true, false, false};
+  // The first is the one farthest from the centroid, the next the outline point farthest from it.
+  const std::vector<size_t> two = spread_points(layout, outline, 2, 2);
+  ASSERT_EQ(two.size(), 2u);
+  EXPECT_EQ(two[0], 2u);
+  EXPECT_EQ(two[1], 0u);
+  // The five outline points first, then the middle; the point 0.3 px from a chosen corner never.
+  const std::vector<size_t> all = spread_points(layout, outline, 5, 10);
+  ASSERT_EQ(all.size(), 6u);
+  for (size_t k = 0; k < 5; ++k) EXPECT_TRUE(outline[all[k]]) << k;
+  EXPECT_EQ(all[5], 5u);
+  EXPECT_TRUE(spread_points({}, {}, 3, 5).empty());
 }
