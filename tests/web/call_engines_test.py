@@ -209,11 +209,7 @@ try:
                 plays_at, scheduled_at, earliest = [], [], None
                 while time.time() < end:
                     seen |= {m["expression"] for m in driver.execute_script(f"return {element}.members") if m["name"] == "Nat"}
-                    try:
-                        at = driver.execute_script(PLAYS_AT.replace("ELEMENT", element))
-                    except RuntimeError as error:  # a sample lost (Firefox's BiDi at times never answers one)
-                        print(f"{name}: a sample of when Nat's voice plays is lost: {error}")
-                        at = None
+                    at = driver.execute_script(PLAYS_AT.replace("ELEMENT", element))
                     if at is not None:
                         if at[0] is not None:
                             plays_at.append(at[0])

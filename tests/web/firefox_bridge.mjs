@@ -34,8 +34,8 @@ const page = (await browser.pages())[0] ?? (await browser.newPage());
 page.on('console', (m) => process.stderr.write(`console: ${m.text()}\n`));
 page.on('pageerror', (e) => process.stderr.write(`page error: ${e.message}\n`));
 
-// As selenium's script timeout (30 s): Firefox's BiDi at times never answers one evaluation
-// (a page that is busy answers the next), which puppeteer would wait 180 s for.
+// As selenium's script timeout (30 s): a page that stops answering fails its test in 30 s, where
+// puppeteer would wait 180 s for each evaluation.
 const SCRIPT_TIMEOUT_MS = 30000;
 const withinScriptTimeout = (promise) => Promise.race([promise, new Promise((resolve, reject) => {
   setTimeout(() => reject(new Error(`script timed out after ${SCRIPT_TIMEOUT_MS / 1000} s`)), SCRIPT_TIMEOUT_MS).unref();
