@@ -1,6 +1,7 @@
 #include "server/products/shape_matches.hpp"
 
 #include <cmath>
+#include <optional>
 
 #include <glm/geometric.hpp>
 #include <opencv2/imgproc.hpp>
@@ -12,28 +13,41 @@
 namespace inkwire {
 namespace {
 
+// Where photo `from`'s surface at `pixel` (its depth map's) lands in photo `to`, and whether `to`
+// sees it there: its own nearest surface is within two hull cells of the point, not in front of
+// it. Nothing where `from` has no surface there, or the point is behind or beside `to`'s picture.
+struct Sighting {
+  glm::vec2 there;
+  bool seen = false;
+};
+std::optional<Sighting> sighting(const PhotoShape& shape, size_t from, glm::vec2 pixel, size_t to) {
+  const TurntableCamera& c = shape.camera;
+  const auto depth_at = [&](size_t photo, glm::vec2 p) {
+    const int x = int(std::floor(p.x)), y = int(std::floor(p.y));
+    return x < 0 || y < 0 || x >= c.width || y >= c.height ? -1.0f : shape.depth[photo][size_t(y * c.width + x)];
+  };
+  const float z = depth_at(from, pixel);
+  if (z <= 0) return std::nullopt;
+  const glm::vec3 in_to = seen_from(c, shape.views[from], pixel, z, shape.views[to]);
+  if (in_to.z <= 1e-3f) return std::nullopt;
+  const glm::vec2 there = to_pixel(c, in_to);
+  const float other = depth_at(to, there);
+  if (other < 0) return std::nullopt;
+  return Sighting{.there = there, .seen = other > 0 && std::abs(other - in_to.z) <= 2.0f * shape.hull.voxel};
+}
+
 // One direction of shape_matches: `from`'s pixels into `to`.
 void follow_shape(const PhotoShape& shape, size_t from, size_t to, cv::Mat& flow, cv::Mat& reliable) {
   const TurntableCamera& c = shape.camera;
   flow = cv::Mat(c.height, c.width, CV_32FC2, cv::Scalar(0, 0));
   reliable = cv::Mat(c.height, c.width, CV_8U, cv::Scalar(0));
-  const std::vector<float>& depth = shape.depth[from];
-  const std::vector<float>& seen = shape.depth[to];
-  // A point is seen by the other photo when that photo's nearest surface there is within this of it.
-  const float near = 2.0f * shape.hull.voxel;
   for (int y = 0; y < c.height; ++y)
     for (int x = 0; x < c.width; ++x) {
-      const float z = depth[size_t(y * c.width + x)];
-      if (z <= 0) continue;
       const glm::vec2 pixel(float(x) + 0.5f, float(y) + 0.5f);
-      const glm::vec3 in_to = seen_from(c, shape.views[from], pixel, z, shape.views[to]);
-      if (in_to.z <= 1e-3f) continue;
-      const glm::vec2 there = to_pixel(c, in_to);
-      const int tx = int(std::floor(there.x)), ty = int(std::floor(there.y));
-      if (tx < 0 || ty < 0 || tx >= c.width || ty >= c.height) continue;
-      const float other = seen[size_t(ty * c.width + tx)];
-      flow.at<cv::Vec2f>(y, x) = cv::Vec2f(there.x - pixel.x, there.y - pixel.y);
-      if (other > 0 && std::abs(other - in_to.z) <= near) reliable.at<uint8_t>(y, x) = 255;
+      const std::optional<Sighting> s = sighting(shape, from, pixel, to);
+      if (!s) continue;
+      flow.at<cv::Vec2f>(y, x) = cv::Vec2f(s->there.x - pixel.x, s->there.y - pixel.y);
+      if (s->seen) reliable.at<uint8_t>(y, x) = 255;
     }
 }
 
@@ -94,15 +108,12 @@ ShapeTracks shape_tracks(const PhotoShape& shape, size_t a, size_t b, int count)
   const TurntableCamera& c = shape.camera;
   const float turn = std::remainder(shape.views[b].azimuth_deg - shape.views[a].azimuth_deg, 360.0f);
   const PhotoView halfway{.azimuth_deg = shape.views[a].azimuth_deg + 0.5f * turn, .row = shape.views[a].row};
-  const float near = 2.0f * shape.hull.voxel;  // a point is seen where the photo's nearest surface is this near it
-  const auto depth_at = [&](size_t photo, glm::vec2 p) {
-    const int x = int(std::floor(p.x)), y = int(std::floor(p.y));
-    return x < 0 || y < 0 || x >= c.width || y >= c.height ? 0.0f : shape.depth[photo][size_t(y * c.width + x)];
-  };
   const auto near_background = [&](size_t photo, glm::vec2 p) {
     for (int dy = -2; dy <= 2; ++dy)
-      for (int dx = -2; dx <= 2; ++dx)
-        if (depth_at(photo, p + glm::vec2(dx, dy)) <= 0) return true;
+      for (int dx = -2; dx <= 2; ++dx) {
+        const int x = int(std::floor(p.x)) + dx, y = int(std::floor(p.y)) + dy;
+        if (x < 0 || y < 0 || x >= c.width || y >= c.height || shape.depth[photo][size_t(y * c.width + x)] <= 0) return true;
+      }
     return false;
   };
   std::vector<Track> candidates;
@@ -113,22 +124,18 @@ ShapeTracks shape_tracks(const PhotoShape& shape, size_t a, size_t b, int count)
     for (int y = step / 2; y < c.height; y += step)
       for (int x = step / 2; x < c.width; x += step) {
         const glm::vec2 pixel(float(x) + 0.5f, float(y) + 0.5f);
-        const float z = depth_at(from, pixel);
-        if (z <= 0) continue;
-        const glm::vec3 in_to = seen_from(c, shape.views[from], pixel, z, shape.views[to]);
-        const glm::vec3 in_halfway = seen_from(c, shape.views[from], pixel, z, halfway);
-        if (in_to.z <= 1e-3f || in_halfway.z <= 1e-3f) continue;
-        const glm::vec2 there = to_pixel(c, in_to), middle = to_pixel(c, in_halfway);
-        if (there.x < 0 || there.y < 0 || there.x >= float(c.width) || there.y >= float(c.height)) continue;
-        const float other = depth_at(to, there);
-        const bool seen = other > 0 && std::abs(other - in_to.z) <= near;
-        const bool outline = near_background(from, pixel) || (seen && near_background(to, there));
+        const std::optional<Sighting> s = sighting(shape, from, pixel, to);
+        if (!s) continue;
+        const bool outline = near_background(from, pixel) || (s->seen && near_background(to, s->there));
         // A point both see comes from a's grid alone (b's would repeat it); one the other photo
         // does not see only from an outline, where it turns into or out of sight.
-        if (seen ? from != a : !outline) continue;
-        const glm::vec2 in_a = from == a ? pixel : there, in_b = from == a ? there : pixel;
+        if (s->seen ? from != a : !outline) continue;
+        const glm::vec3 in_halfway = seen_from(c, shape.views[from], pixel, shape.depth[from][size_t(y * c.width + x)], halfway);
+        if (in_halfway.z <= 1e-3f) continue;
+        const glm::vec2 middle = to_pixel(c, in_halfway);
+        const glm::vec2 in_a = from == a ? pixel : s->there, in_b = from == a ? s->there : pixel;
         candidates.push_back({.source = in_a, .targets = {in_b}, .bulge = middle - 0.5f * (in_a + in_b)});
-        layout.push_back(seen ? middle : pixel);
+        layout.push_back(s->seen ? middle : pixel);
         on_outline.push_back(outline);
       }
   ShapeTracks out;

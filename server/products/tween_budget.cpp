@@ -28,34 +28,25 @@ std::vector<TweenCell> cells_capped(const std::vector<std::vector<Track>>& track
   return out;
 }
 
-// The largest cap on every cell's points that keeps `data`'s encoded form within `max_bytes`
-// (what the cells' own sizes give when nothing need go), and the cells at it.
-size_t largest_cap(TweenData& data, const std::vector<std::vector<Track>>& tracks, const std::vector<size_t>& outline,
-                   const std::vector<std::vector<uint16_t>>& cells, size_t max_bytes) {
-  size_t most = 0;
-  for (const auto& t : tracks) most = std::max(most, t.size());
-  auto fits = [&](size_t cap) {
-    data.cells = cells_capped(tracks, outline, cells, cap);
-    return encode_tween(data).size() <= max_bytes;
-  };
-  if (fits(most)) return most;
-  size_t low = 0, high = most;  // high does not fit; low = 0 (the outlines alone) is the floor, fitting or not
-  while (high - low > 1) {
-    const size_t mid = (low + high) / 2;
-    (fits(mid) ? low : high) = mid;
-  }
-  fits(low);
-  return low;
-}
-
 }  // namespace
 
 BudgetFit fit_tween_budget(TweenData& data, const CellTracks& tracks, const std::vector<std::vector<uint16_t>>& cells, size_t max_bytes) {
   BudgetFit fit;
-  data.cells = cells_capped(tracks.tracks, tracks.outline, cells, SIZE_MAX);
-  fit.before = encode_tween(data).size();
-  fit.cap = largest_cap(data, tracks.tracks, tracks.outline, cells, max_bytes);
-  fit.after = encode_tween(data).size();
+  for (const auto& t : tracks.tracks) fit.cap = std::max(fit.cap, t.size());
+  const auto size_at = [&](size_t cap) {
+    data.cells = cells_capped(tracks.tracks, tracks.outline, cells, cap);
+    return encode_tween(data).size();
+  };
+  fit.before = fit.after = size_at(fit.cap);
+  if (fit.before <= max_bytes) return fit;
+  // The largest cap that fits: fit.cap does not; 0 (the outlines alone) is the floor, fitting or not.
+  size_t low = 0, high = fit.cap;
+  while (high - low > 1) {
+    const size_t mid = (low + high) / 2;
+    (size_at(mid) <= max_bytes ? low : high) = mid;
+  }
+  fit.cap = low;
+  fit.after = size_at(low);
   return fit;
 }
 

@@ -82,9 +82,9 @@ PLAYS_AT = """const e = ELEMENT, l = e.link, nat = e.roster?.members.find((m) =>
   // for the stream's position on the page's thread, and with the tests' null PulseAudio sink the
   // page stopped answering at this script, for good, in about one run in three; the page's own
   // code never calls it.)
-  const ts = navigator.userAgent.includes('Firefox') ? { performanceTime: 0 } : l.context.getOutputTimestamp?.() ?? { performanceTime: 0 };
+  const ts = navigator.userAgent.includes('Firefox') ? null : l.context.getOutputTimestamp?.();
   const scheduled = performance.timeOrigin + performance.now() + (m.offsetMs + m.delayMs - l.context.currentTime * 1000);
-  const output = ts.performanceTime > 0 && Math.abs(performance.now() - ts.performanceTime) < 1000 ? performance.timeOrigin + ts.performanceTime + (m.offsetMs + m.delayMs - ts.contextTime * 1000) : null;
+  const output = ts?.performanceTime > 0 && Math.abs(performance.now() - ts.performanceTime) < 1000 ? performance.timeOrigin + ts.performanceTime + (m.offsetMs + m.delayMs - ts.contextTime * 1000) : null;
   return [output, scheduled, m.earliestMs];"""
 NAT_FRAME_MS = 60  # the native client's voice packets (client/call/publisher.hpp)
 
