@@ -28,6 +28,8 @@ namespace fs = std::filesystem;
 namespace {
 
 const fs::path kTruck = "/usr/share/assimp/models/glTF/CesiumMilkTruck/CesiumMilkTruck.gltf";
+// The shape tests' backdrop: no colour of the truck's, so the keyer leaves its cream and white alone.
+constexpr glm::u8vec3 kBlueBackdrop = {40, 90, 170};
 
 glm::vec3 direction_at(float azimuth_degrees, float elevation_degrees = 0) {
   const float a = glm::radians(azimuth_degrees), e = glm::radians(elevation_degrees);
@@ -347,7 +349,6 @@ TEST(RealPhotosGLTest, AKeptPhotosOwnViewIsThePhotoOnEverySet) {
 // 3%, each elevation within 2 degrees and the axis within 2 pixels, and the hull carved under
 // that camera explains every matte (IoU >= 0.97).
 TEST(RealPhotosGLTest, TheTrucksMattesGiveBackItsCameraAndAHullThatExplainsEveryPhoto) {
-  constexpr glm::u8vec3 kBlueBackdrop = {40, 90, 170};
   test::offscreen_context();
   INKWIRE_REQUIRE_FILE(kTruck);
   const SceneObject truck = load_scene_object(kTruck);
@@ -377,7 +378,6 @@ TEST(RealPhotosGLTest, TheTrucksMattesGiveBackItsCameraAndAHullThatExplainsEvery
 // gives its camera and a hull (the turn from the matches finds the gap), and a photo that cannot be
 // keyed is refused with its reason (add-product then shows the photos whole, without a shape).
 TEST(RealPhotosGLTest, ARingWithAPhotoMissingStillGivesItsCameraAndAnUnkeyablePhotoSaysWhy) {
-  constexpr glm::u8vec3 kBlueBackdrop = {40, 90, 170};
   test::offscreen_context();
   INKWIRE_REQUIRE_FILE(kTruck);
   const SceneObject truck = load_scene_object(kTruck);
@@ -421,7 +421,6 @@ TEST(RealPhotosGLTest, ARingWithAPhotoMissingStillGivesItsCameraAndAnUnkeyablePh
 // matched control points and with control points along the recovered shape; the midway views
 // against the truck rendered there.
 TEST(RealPhotosGLTest, AlongTheShapeTheTrucksMidwayViewsAreCloserThanAlongTheMatches) {
-  constexpr glm::u8vec3 kBlueBackdrop = {40, 90, 170};
   test::offscreen_context();
   INKWIRE_REQUIRE_FILE(kTruck);
   const SceneObject truck = load_scene_object(kTruck);
