@@ -49,8 +49,9 @@ ExpressionState classify(const FaceFeatures& face, const FaceFeatures& neutral, 
   const bool left_shut = shut_left < shut_right;
   const float shut = left_shut ? shut_left : shut_right, other_open = left_shut ? eye_right : eye_left;
   // A smile narrows both eyes; with the mouth widened, only an eye clearly more shut than the
-  // other winks (a smile under a moustache barely opens the mouth and lands here).
-  const bool smiling_squint = widening > t.smile_width && shut > t.wink_asymmetry * other_open;
+  // other winks (a smile under a moustache barely opens the mouth and lands here), and with it
+  // widened broadly, none does: a dark eye's shade is the first detail a face video loses.
+  const bool smiling_squint = widening > t.broad_smile || (widening > t.smile_width && shut > t.wink_asymmetry * other_open);
   if (shut < t.wink_closed && other_open > t.wink_open && !smiling_squint)
     return {left_shut ? Expression::WinkLeft : Expression::WinkRight, intensity_of(1.0f - shut, 0.8f)};
   if (eyes < t.eyes_closed_mean) return {Expression::EyesClosed, intensity_of(1.0f - eyes, 0.8f)};

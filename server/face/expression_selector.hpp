@@ -21,6 +21,7 @@ struct SelectionThresholds {
   float wink_closed = 0.8f;
   float wink_open = 0.8f;
   float wink_asymmetry = 0.8f;     // with a widened mouth, the shut eye under this much of the other's openness
+  float broad_smile = 0.2f;        // a mouth widened this much smiles whatever one eye does (the development faces' winks widen it 0.16 at most)
   float eyes_wide = 1.08f;
   float mouth_open = 0.10f;        // inner-lip gap grown by this much: the mouth is open
   float laugh_open = 0.22f;        // a widened mouth opened this far laughs; less is a smile showing teeth
