@@ -8,7 +8,6 @@
 
 #include "server/products/photo_folder.hpp"
 #include "server/products/photo_shape.hpp"
-#include "server/products/product.hpp"
 #include "server/tween/dense_matches.hpp"
 
 namespace inkwire {

@@ -5,6 +5,24 @@
 
 namespace inkwire {
 
+namespace {
+
+// Per photo, the camera's gain, each row on its own.
+CameraGains row_gains(const std::vector<glm::vec3>& backdrops, const PhotoFolder& photos) {
+  CameraGains all{std::vector<glm::vec3>(photos.photos.size(), glm::vec3(1.0f)), ""};
+  if (backdrops.size() != photos.photos.size()) return all.unmeasured = "no mattes, so no backdrop to read the camera on", all;
+  const int columns = photos.columns();
+  for (int r = 0; r < photos.rows; ++r) {
+    const auto first = backdrops.begin() + long(r * columns);
+    const CameraGains row = camera_gains({first, first + columns}, photos.closed);
+    if (!row.unmeasured.empty()) all.unmeasured = row.unmeasured;
+    std::copy(row.gains.begin(), row.gains.end(), all.gains.begin() + long(r * columns));
+  }
+  return all;
+}
+
+}  // namespace
+
 CameraGains camera_gains(const std::vector<glm::vec3>& backdrops, bool closed) {
   const int n = int(backdrops.size());
   CameraGains out{std::vector<glm::vec3>(size_t(n), glm::vec3(1.0f)), ""};
@@ -32,6 +50,21 @@ void apply_gain(Image& photo, const glm::vec3& gain) {
   for (size_t i = 0; i < photo.pixels.size(); i += 4)
     if (photo.pixels[i + 3] != 0)  // where a matte is 0 the floor layer is already on white
       for (int c = 0; c < 3; ++c) photo.pixels[i + size_t(c)] = uint8_t(std::clamp(std::lround(float(photo.pixels[i + size_t(c)]) * gain[c]), 0L, 255L));
+}
+
+CameraGains even_exposure(PhotoFolder& photos, const std::vector<glm::vec3>& backdrops, const PairProgress& progress) {
+  CameraGains camera = row_gains(backdrops, photos);
+  float largest_change = 0;
+  for (size_t i = 0; i < camera.gains.size(); ++i) {
+    apply_gain(photos.photos[i], camera.gains[i]);
+    for (int c = 0; c < 3; ++c) largest_change = std::max(largest_change, std::abs(camera.gains[i][c] - 1.0f));
+  }
+  if (progress)
+    progress(0, int(photos.cells.size()),
+             !camera.unmeasured.empty() ? "exposure left as it was: " + camera.unmeasured
+                                        : "the camera's exposure evened on the backdrop: the largest change " +
+                                              std::to_string(int(std::lround(largest_change * 100))) + "%");
+  return camera;
 }
 
 }  // namespace inkwire

@@ -15,6 +15,7 @@
 #include <glm/vec3.hpp>
 
 #include "common/image.hpp"
+#include "server/products/photo_folder.hpp"
 
 namespace inkwire {
 
@@ -32,5 +33,11 @@ CameraGains camera_gains(const std::vector<glm::vec3>& backdrops, bool closed);
 // Multiplies the colours (not the matte) by `gain`, clamped to 0-255, where the matte is not 0
 // (the floor layer there is already relative to the photo's own backdrop).
 void apply_gain(Image& photo, const glm::vec3& gain);
+
+// The pipeline's exposure stage, after keying (photo_keying.hpp): per photo, the camera's gain
+// evened on `backdrops` (one per photo; empty without mattes: nothing is evened), each row on its
+// own (light differs between camera heights: the top row sees the lit top, which is the product's
+// look), applied to `photos` and said in a line.
+CameraGains even_exposure(PhotoFolder& photos, const std::vector<glm::vec3>& backdrops, const PairProgress& progress);
 
 }  // namespace inkwire

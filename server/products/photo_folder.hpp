@@ -11,8 +11,11 @@
 // heights (elevations). Either sub-folders `row1`, `row2`, ... (the lowest camera first) or
 // `rows` over the files in order; every row the same count and turn. Neighbouring rows are
 // tweened in triangles (two samples of one row, one of the next), as a view sphere is.
+//
+// Reading is the first stage of making a product (product.hpp lists the rest in order).
 #include <algorithm>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -36,6 +39,11 @@ struct PhotoLayout {
 // levels, each twice the one before, up to the photos' own size at most max_side, fetched by
 // clients only when zoomed in or full screen.
 inline constexpr int kFirstSide = 512;
+
+// What each stage of making a product says as it goes, through to add-product's output: a line
+// per cell (`done` of `total` cells), or about the whole product (done = 0), e.g.
+// "pair 3/24 (photo_03.jpg -> photo_04.jpg): 61 landmarks".
+using PairProgress = std::function<void(int done, int total, const std::string& line)>;
 // The sizes of the finer levels above `first`, coarsest first, the last `finest`: doubling, and a
 // level within 1.25 times of the next left out (it would add bytes and little detail).
 std::vector<glm::ivec2> zoom_levels(glm::ivec2 first, glm::ivec2 finest);

@@ -102,4 +102,19 @@ void write_shape(const PhotoShape& shape, const std::filesystem::path& folder) {
   if (!out) throw Error("cannot write " + (folder / "camera.json").string());
 }
 
+std::optional<PhotoShape> shape_for_product(const PhotoFolder& photos, bool matted, const PairProgress& progress) {
+  if (!matted || !photos.closed) return std::nullopt;
+  const auto say = [&](const std::string& line) {
+    if (progress) progress(0, int(photos.cells.size()), line);
+  };
+  try {
+    PhotoShape shape = shape_from_photos(photos, kDefaultFieldOfView);
+    say(shape_summary(shape));
+    return shape;
+  } catch (const Error& e) {
+    say(std::string("no shape: ") + e.what() + " (control points from the matches alone)");
+    return std::nullopt;
+  }
+}
+
 }  // namespace inkwire

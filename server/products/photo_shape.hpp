@@ -6,6 +6,7 @@
 // deeper (depth_refinement.hpp); written out for a person to look at as
 // `hull.ply`, `depth-N.png` and `camera.json` (names in CONTRACTS.md).
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,11 @@ PhotoShape shape_from_photos(const PhotoFolder& photos, float field_of_view);
 
 // What was found, in a line: the focal length, each row's elevation, the axis, the hull's IoU.
 std::string shape_summary(const PhotoShape& shape);
+
+// The pipeline's shape stage, after the exposure (exposure.hpp): with mattes of a full turn, the
+// shape, said in a line; without, nothing; when the silhouettes give none, nothing, said why
+// (the control points then come from the matches alone).
+std::optional<PhotoShape> shape_for_product(const PhotoFolder& photos, bool matted, const PairProgress& progress);
 
 // Writes `hull.ply`, `depth-N.png` (16-bit, depth / depth_scale; N from 1 in the photos' order)
 // and `camera.json` into `folder`.

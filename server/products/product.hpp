@@ -27,8 +27,6 @@ struct Product {
   std::function<Image(size_t index, const Image& first, glm::ivec2 size)> finer;
 };
 
-// Called once per pair as it is done: e.g. "pair 3/24 (photo_03.jpg -> photo_04.jpg): 61 landmarks".
-using PairProgress = std::function<void(int done, int total, const std::string& line)>;
 
 struct PhotoProductOptions {
   PhotoLayout layout;      // rows, turn, elevations, size
@@ -47,25 +45,18 @@ struct PhotoProductOptions {
   float max_tween_share = 0.05f;
 };
 
-// A sample as a product stores it: the photo (JPEG; a keyed one on white with its floor layer,
-// as a shop shows it and as compresses best) and its matte (PNG of the alpha).
-std::vector<uint8_t> stored_photo(const Image& image, bool matted);
-std::vector<uint8_t> stored_matte(const Image& image);
-
-// Photos whose turn no step, arc or calibration gave (`even_turn_assumed`) get their steps from
-// corners tracked between row neighbours (SPEC T19, turn_angles.hpp); says the steps found
-// through `progress`. Does nothing to other folders.
-void find_turn_from_matches(PhotoFolder& photos, const PairProgress& progress = {});
-
 // Reads a folder of photos taken around an object, in file-name order (see photo_folder.hpp),
 // finds the turn between photos if it was not given, and control points between every
 // neighbouring pair. Throws inkwire::Error with a one-line
 // reason naming the file at fault.
 Product product_from_photos(const std::filesystem::path& folder, const PhotoProductOptions& options,
                             const PairProgress& progress = {});
-// The same from photos already read (e.g. a subset of a folder, to hold the rest out).
-Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions& options, const PairProgress& progress = {},
-                                  const std::string& folder_name = "");
+// The same from photos already read (e.g. a subset of a folder, to hold the rest out), through
+// the stages in the order they run, each a file of its own: the turn (turn_angles.hpp), the
+// mattes (photo_keying.hpp), the exposure (exposure.hpp), the shape (photo_shape.hpp), the
+// control points (control_points.hpp), the tween data's budget (tween_budget.hpp) and the samples
+// as stored (product_samples.hpp).
+Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions& options, const PairProgress& progress = {});
 
 struct MeshProductOptions {
   int samples = 24;       // on a ring about +Y, every 360/samples degrees

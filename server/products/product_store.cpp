@@ -13,6 +13,7 @@
 #include "common/image_metrics.hpp"
 #include "common/log.hpp"
 #include "server/products/mesh_product_process.hpp"
+#include "server/products/product_samples.hpp"
 
 namespace inkwire::server {
 namespace fs = std::filesystem;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 
 #include <glm/trigonometric.hpp>
@@ -315,6 +316,17 @@ TurnFit fit_turn(std::vector<TrackPath>& tracks, int n, int rows, bool even = fa
   return fit;
 }
 
+// "4.1 9.8 10.2 ..." degrees, one decimal.
+std::string degrees_list(const std::vector<float>& degrees) {
+  std::string out;
+  for (const float d : degrees) {
+    char text[16];
+    std::snprintf(text, sizeof text, "%s%.1f", out.empty() ? "" : " ", d);
+    out += text;
+  }
+  return out;
+}
+
 }  // namespace
 
 TurnSteps turn_steps_from_photos(const PhotoFolder& photos) {
@@ -399,6 +411,48 @@ void set_turn_steps(PhotoFolder& photos, const std::vector<float>& steps_degrees
       azimuth += glm::radians(steps_degrees[size_t(c)]);
     }
   }
+}
+
+void find_turn_from_matches(PhotoFolder& photos, const PairProgress& progress) {
+  if (!photos.even_turn_assumed) return;
+  const TurnSteps steps = turn_steps_from_photos(photos);
+  if (steps.fitted < 3) {
+    if (progress)
+      progress(0, int(photos.cells.size()),
+               "the turn could not be found from the matches (too few corners followed round): the photos are taken as evenly "
+               "spaced (give --step or --arc if they are not)");
+    return;
+  }
+  const bool backwards = steps.direction_known && steps.field_of_view < 0;
+  if (!steps.uneven()) {
+    if (backwards) set_turn_steps(photos, std::vector<float>(size_t(photos.columns()), -360.0f / float(photos.columns())));
+    if (progress) {
+      char line[400];
+      std::snprintf(line, sizeof line,
+                    "the photos are evenly spaced, %s (%d of %d photos tracked: a turn with a free angle per photo fits them within "
+                    "%.2f pixels, even steps within %.2f, not clearly worse)",
+                    backwards ? "turned the other way" : steps.direction_known ? "turned forward" : "taken as turned forward (--step -N if not)",
+                    steps.fitted, photos.columns(), steps.residual, steps.even_residual);
+      progress(0, int(photos.cells.size()), line);
+    }
+    return;
+  }
+  set_turn_steps(photos, steps.degrees);
+  photos.even_turn_assumed = false;
+  if (!progress) return;
+  std::vector<float> sizes;
+  for (const float d : steps.degrees) sizes.push_back(std::abs(d));
+  const auto [low, high] = std::minmax_element(sizes.begin(), sizes.end());
+  const char* way = !steps.direction_known ? "forward (the perspective is too weak to tell which way: --step -N if it turned the other way)"
+                    : steps.degrees[0] < 0  ? "the other way (the camera's azimuth falls)"
+                                            : "forward";
+  char line[400];
+  std::snprintf(line, sizeof line,
+                "turn from the matches (%d of %d photos tracked, within %.2f pixels, %.2f if even; perspective %.2f +- %.2f), %s: steps "
+                "%.1f to %.1f degrees, %.1f if even: ",
+                steps.fitted, photos.columns(), steps.residual, steps.even_residual, steps.field_of_view, steps.field_of_view_error, way, *low, *high,
+                360.0 / photos.columns());
+  progress(0, int(photos.cells.size()), line + degrees_list(steps.degrees));
 }
 
 }  // namespace inkwire

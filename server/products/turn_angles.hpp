@@ -63,4 +63,10 @@ std::vector<double> azimuth_errors(const std::vector<float>& found, const std::v
 // photo's, at the row's elevation as it was.
 void set_turn_steps(PhotoFolder& photos, const std::vector<float>& steps_degrees);
 
+// The pipeline's turn stage, the first after reading (it follows corners on the photos as shot):
+// photos whose turn no step, arc or calibration gave (`even_turn_assumed`) get their steps from
+// the tracks above, unless even steps fit them about as well; says what it found through
+// `progress`. Does nothing to other folders.
+void find_turn_from_matches(PhotoFolder& photos, const PairProgress& progress = {});
+
 }  // namespace inkwire

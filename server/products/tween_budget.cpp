@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
+#include <string>
+
+#include "server/products/product_samples.hpp"
 
 namespace inkwire {
 namespace {
@@ -47,6 +51,28 @@ BudgetFit fit_tween_budget(TweenData& data, const CellTracks& tracks, const std:
   }
   fit.cap = low;
   fit.after = size_at(low);
+  return fit;
+}
+
+BudgetFit budget_tween_data(TweenData& data, const CellTracks& tracks, const PhotoFolder& photos, bool matted, float max_share,
+                            const PairProgress& progress) {
+  size_t photo_bytes = 0;
+  for (const Image& photo : photos.photos) photo_bytes += stored_photo(photo, matted).size() + (matted ? stored_matte(photo).size() : 0);
+  const double share = std::clamp(double(max_share), 0.0, 0.99);
+  const size_t budget = size_t(share / (1.0 - share) * double(photo_bytes));
+  const BudgetFit fit = fit_tween_budget(data, tracks, photos.cells, budget);
+  if (!progress) return fit;
+  const auto percent = [&](size_t bytes) {
+    char text[16];
+    std::snprintf(text, sizeof text, "%.1f%%", 100.0 * double(bytes) / double(bytes + photo_bytes));
+    return std::string(text);
+  };
+  std::string line = "tween data: " + std::to_string(fit.after) + " bytes, " + percent(fit.after) + " of the first view";
+  if (fit.after < fit.before)
+    line += " (every cell cut to " + std::to_string(fit.cap) + " points, its outline kept, from " + std::to_string(fit.before) + " bytes, " +
+            percent(fit.before) + ")";
+  if (fit.after > budget) line += ", over the " + percent(budget) + " kept to: the outlines alone are more";
+  progress(0, int(photos.cells.size()), line);
   return fit;
 }
 

@@ -20,4 +20,11 @@ struct BudgetFit {
 // cutting them costs least.
 BudgetFit fit_tween_budget(TweenData& data, const CellTracks& tracks, const std::vector<std::vector<uint16_t>>& cells, size_t max_bytes);
 
+// The pipeline's budget stage, after the control points: `data.cells` from `tracks` within
+// `max_share` of what a first view fetches, the photos' bytes as they will be stored
+// (product_samples.hpp; `photos` keyed when `matted`, their exposure evened): tween <= share x
+// (photos + mattes + tween). Says the tween data's size, and any cut, in a line.
+BudgetFit budget_tween_data(TweenData& data, const CellTracks& tracks, const PhotoFolder& photos, bool matted, float max_share,
+                            const PairProgress& progress);
+
 }  // namespace inkwire

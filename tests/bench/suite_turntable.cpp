@@ -233,7 +233,7 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
   const int n = int(kept.photos.size());
   // Today's control points (matched), and with the shape where the mattes give one.
   const auto made = std::chrono::steady_clock::now();
-  const Product product = product_from_photo_folder(kept, PhotoProductOptions{.shape = "off"}, {}, folder.string());
+  const Product product = product_from_photo_folder(kept, PhotoProductOptions{.shape = "off"});
   const double seconds_to_make = std::chrono::duration<double>(std::chrono::steady_clock::now() - made).count();
   std::optional<Product> shaped;
   double seconds_with_shape = 0;
@@ -242,8 +242,7 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
     shaped = product_from_photo_folder(kept, PhotoProductOptions{.shape = "auto"},
                                        [&](int done, int, const std::string& line) {
                                          if (done == 0) std::fprintf(stderr, "inkwire-bench: %s: %s\n", name.c_str(), line.c_str());
-                                       },
-                                       folder.string());
+                                       });
     seconds_with_shape = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   }
   const fs::path data = fs::temp_directory_path() / ("inkwire-bench-photos-" + std::to_string(::getpid()));

@@ -19,6 +19,7 @@
 #include "server/products/mesh_product.hpp"
 #include "server/products/photo_shape.hpp"
 #include "server/products/product.hpp"
+#include "server/products/product_samples.hpp"
 #include "server/products/turn_angles.hpp"
 #include "../unit/test_data.hpp"
 

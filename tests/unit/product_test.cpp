@@ -20,6 +20,7 @@
 #include "protocol/framing.hpp"
 #include "server/products/matte.hpp"
 #include "server/products/photo_folder.hpp"
+#include "server/products/product_samples.hpp"
 #include "server/products/product_store.hpp"
 #include "server/tween/outline.hpp"
 #include "test_data.hpp"
