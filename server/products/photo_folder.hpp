@@ -44,6 +44,7 @@ inline constexpr int kFirstSide = 512;
 // per cell (`done` of `total` cells), or about the whole product (done = 0), e.g.
 // "pair 3/24 (photo_03.jpg -> photo_04.jpg): 61 landmarks".
 using PairProgress = std::function<void(int done, int total, const std::string& line)>;
+
 // The sizes of the finer levels above `first`, coarsest first, the last `finest`: doubling, and a
 // level within 1.25 times of the next left out (it would add bytes and little detail).
 std::vector<glm::ivec2> zoom_levels(glm::ivec2 first, glm::ivec2 finest);

@@ -27,7 +27,6 @@ struct Product {
   std::function<Image(size_t index, const Image& first, glm::ivec2 size)> finer;
 };
 
-
 struct PhotoProductOptions {
   PhotoLayout layout;      // rows, turn, elevations, size
   std::string matte = "auto";  // auto: key a plain backdrop when there is one; key: refuse if not; none
