@@ -352,16 +352,17 @@ std::vector<Result> run_call_suite(Harness& harness) {
                   {"voice_relayed", relayed}, {"crops_analysed", double(load.server->counters().call.crops)}};
     results.push_back(r);
   }
-  // The browsers' voice with a quiet page and one whose thread stalls 400 ms in every 2 s, per
-  // engine this machine has (tests/web/call_engines_test.py measures them; Firefox and WebKit need
-  // a display, which xvfb-run gives).
-  {
-    const fs::path script = fs::path(INKWIRE_SOURCE_DIR) / "tests/web/call_engines_test.py", json = dir / "browsers.json";
-    const std::string display = std::system("command -v xvfb-run > /dev/null") == 0 ? "xvfb-run -a -s '-screen 0 1024x768x24' " : "";
-    run(display + "/usr/bin/python3 '" + script.string() + "' '" + INKWIRE_BIN_DIR + "' '" + (dir / "browsers").string() + "' --bench '" + json.string() + "'");
+  // The browsers: voice with a quiet page and one whose thread stalls 400 ms in every 2 s, per
+  // engine this machine has (tests/web/call_engines_test.py; Firefox and WebKit need a display,
+  // which xvfb-run gives), and a person joining from Chromium, the time to the first face drawn
+  // (tests/web/call_first_face.py).
+  const std::string display = std::system("command -v xvfb-run > /dev/null") == 0 ? "xvfb-run -a -s '-screen 0 1024x768x24' " : "";
+  for (const auto& [script_name, rows_name] : {std::pair{"call_engines_test.py", "browsers"}, std::pair{"call_first_face.py", "join"}}) {
+    const fs::path script = fs::path(INKWIRE_SOURCE_DIR) / "tests/web" / script_name, json = dir / (std::string(rows_name) + ".json");
+    run(display + "/usr/bin/python3 '" + script.string() + "' '" + INKWIRE_BIN_DIR + "' '" + (dir / rows_name).string() + "' --bench '" + json.string() + "'");
     // Parsed into a name of its own: a range-for over a member of a temporary would dangle.
     const nlohmann::json measured = fs::exists(json) ? nlohmann::json::parse(std::ifstream(json)) : nlohmann::json();
-    if (measured.is_null()) std::fprintf(stderr, "inkwire-bench: the browsers' call rows did not run: none written\n");
+    if (measured.is_null()) std::fprintf(stderr, "inkwire-bench: the browsers' rows of %s did not run: none written\n", script_name);
     else
       for (const auto& row : measured.at("rows")) {
         Result b{.suite = "call", .renderer = "call", .variant = row.at("variant"), .object = "browser"};

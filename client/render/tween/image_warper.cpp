@@ -43,11 +43,16 @@ ImageWarper::ImageWarper(int width, int height)
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target_.id(), 0);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
   fbo_.check_complete("ImageWarper target");
-  for (int n = 1; n <= 3; ++n) {
-    blend_.push_back(gl::Program::from_files({"tween/blend.vert", "tween/blend.frag"}, {"SAMPLES " + std::to_string(n)}));
-    blend_matte_.push_back(gl::Program::from_files({"tween/blend.vert", "tween/blend.frag"},
-                                                   {"SAMPLES " + std::to_string(n), "MATTE", "MATTE_RANGE " + std::to_string(kMatteRange), "BLEED " + std::to_string(kBleedPixels)}));
+}
+
+const gl::Program& ImageWarper::blend_program(size_t sources) const {
+  std::optional<gl::Program>& program = (matte_ ? blend_matte_ : blend_)[sources - 1];
+  if (!program) {
+    std::vector<std::string> defines = {"SAMPLES " + std::to_string(sources)};
+    if (matte_) defines.insert(defines.end(), {"MATTE", "MATTE_RANGE " + std::to_string(kMatteRange), "BLEED " + std::to_string(kBleedPixels)});
+    program = gl::Program::from_files({"tween/blend.vert", "tween/blend.frag"}, defines);
   }
+  return *program;
 }
 
 namespace {
@@ -86,7 +91,7 @@ void ImageWarper::blend(int mesh, const glm::vec3& position_weights, std::span<c
                         const glm::vec4& to_clip) const {
   if (sources.empty() || sources.size() > 3) throw Error("ImageWarper: a view is made of 1 to 3 samples");
   const Mesh& m = meshes_.at(size_t(mesh));
-  const gl::Program& program = (matte_ ? blend_matte_ : blend_)[sources.size() - 1];
+  const gl::Program& program = blend_program(sources.size());
   program.use();
   glm::ivec3 source(0);
   glm::vec3 weights(0.0f);

@@ -11,6 +11,8 @@
 // Overlapping (folded) triangles must not add up twice: every pass is depth-tested with LESS at
 // one depth, so the first triangle to reach a pixel is the only one written there; per-sample
 // passes are either laid a little nearer each (layered) or clear depth first (depth-clear).
+#include <array>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -87,9 +89,13 @@ class ImageWarper {
   };
   // Draws a one-pass view with clip = pixel * to_clip.xy + to_clip.zw into the bound framebuffer.
   void blend(int mesh, const glm::vec3& position_weights, std::span<const WarpSource> sources, const glm::vec4& to_clip) const;
+  const gl::Program& blend_program(size_t sources) const;
   int width_, height_;
   gl::Program warp_, composite_;
-  std::vector<gl::Program> blend_, blend_matte_;  // one program per number of sources (1-3)
+  // One program per number of sources (1-3), with and without a matte, each compiled when first
+  // drawn with: a call's face warps one photo and never needs the other five, and compiling six
+  // programs held up a browser's first face by about a tenth of a second.
+  mutable std::array<std::optional<gl::Program>, 3> blend_, blend_matte_;
   bool matte_ = false;
   gl::Texture target_;
   gl::Renderbuffer depth_;
