@@ -20,18 +20,21 @@ struct Sighting {
   glm::vec2 there;
   bool seen = false;
 };
+// Photo `photo`'s depth at `p` (pixels): 0 off the object, -1 outside the picture.
+float depth_at(const PhotoShape& shape, size_t photo, glm::vec2 p) {
+  const TurntableCamera& c = shape.camera;
+  const int x = int(std::floor(p.x)), y = int(std::floor(p.y));
+  return x < 0 || y < 0 || x >= c.width || y >= c.height ? -1.0f : shape.depth[photo][size_t(y * c.width + x)];
+}
+
 std::optional<Sighting> sighting(const PhotoShape& shape, size_t from, glm::vec2 pixel, size_t to) {
   const TurntableCamera& c = shape.camera;
-  const auto depth_at = [&](size_t photo, glm::vec2 p) {
-    const int x = int(std::floor(p.x)), y = int(std::floor(p.y));
-    return x < 0 || y < 0 || x >= c.width || y >= c.height ? -1.0f : shape.depth[photo][size_t(y * c.width + x)];
-  };
-  const float z = depth_at(from, pixel);
+  const float z = depth_at(shape, from, pixel);
   if (z <= 0) return std::nullopt;
   const glm::vec3 in_to = seen_from(c, shape.views[from], pixel, z, shape.views[to]);
   if (in_to.z <= 1e-3f) return std::nullopt;
   const glm::vec2 there = to_pixel(c, in_to);
-  const float other = depth_at(to, there);
+  const float other = depth_at(shape, to, there);
   if (other < 0) return std::nullopt;
   return Sighting{.there = there, .seen = other > 0 && std::abs(other - in_to.z) <= 2.0f * shape.hull.voxel};
 }
@@ -110,10 +113,8 @@ ShapeTracks shape_tracks(const PhotoShape& shape, size_t a, size_t b, int count)
   const PhotoView halfway{.azimuth_deg = shape.views[a].azimuth_deg + 0.5f * turn, .row = shape.views[a].row};
   const auto near_background = [&](size_t photo, glm::vec2 p) {
     for (int dy = -2; dy <= 2; ++dy)
-      for (int dx = -2; dx <= 2; ++dx) {
-        const int x = int(std::floor(p.x)) + dx, y = int(std::floor(p.y)) + dy;
-        if (x < 0 || y < 0 || x >= c.width || y >= c.height || shape.depth[photo][size_t(y * c.width + x)] <= 0) return true;
-      }
+      for (int dx = -2; dx <= 2; ++dx)
+        if (depth_at(shape, photo, p + glm::vec2(dx, dy)) <= 0) return true;
     return false;
   };
   std::vector<Track> candidates;
@@ -130,7 +131,7 @@ ShapeTracks shape_tracks(const PhotoShape& shape, size_t a, size_t b, int count)
         // A point both see comes from a's grid alone (b's would repeat it); one the other photo
         // does not see only from an outline, where it turns into or out of sight.
         if (s->seen ? from != a : !outline) continue;
-        const glm::vec3 in_halfway = seen_from(c, shape.views[from], pixel, shape.depth[from][size_t(y * c.width + x)], halfway);
+        const glm::vec3 in_halfway = seen_from(c, shape.views[from], pixel, depth_at(shape, from, pixel), halfway);
         if (in_halfway.z <= 1e-3f) continue;
         const glm::vec2 middle = to_pixel(c, in_halfway);
         const glm::vec2 in_a = from == a ? pixel : s->there, in_b = from == a ? s->there : pixel;
