@@ -26,7 +26,7 @@ import time
 import wave
 
 sys.path.insert(0, os.path.dirname(__file__))
-from browser_support import Checks, Server, chromium, face_frames, skip  # skips without the browser
+from browser_support import Checks, Server, chromium, face_clip, skip  # skips without the browser
 
 BIN, OUT = sys.argv[1], sys.argv[2]
 YALE = os.path.join(os.path.dirname(__file__), "..", "..", "..", "shared", "data", "yalefaces")
@@ -42,15 +42,6 @@ checks = Checks()
 yale = os.path.exists(os.path.join(YALE, "subject02_normal.png"))
 if not yale:
     print("../shared/data/yalefaces is absent: libdlib's photos stand in and the smiles are not checked")
-
-
-def face_clip(name, neutral, smile, seconds=(3, 9)):
-    """A folder of frames and a y4m of them at 15 fps: `neutral` for seconds[0], then `smile`."""
-    folder = face_frames(os.path.join(OUT, name), neutral, smile, seconds)
-    y4m = os.path.join(OUT, f"{name}.y4m")
-    subprocess.run(["ffmpeg", "-v", "error", "-y", "-framerate", "15", "-i", os.path.join(folder, "%04d" + os.path.splitext(neutral)[1]),
-                    "-vf", "scale=320:240:force_original_aspect_ratio=decrease,pad=320:240:(ow-iw)/2:(oh-ih)/2,format=yuv420p", y4m], check=True)
-    return folder, y4m
 
 
 def speech(name, text, voice):
@@ -89,7 +80,7 @@ if yale:
              for n, s in (("ada", "02"), ("bea", "05"), ("nat", "07"))}
 else:
     faces = {n: (os.path.join(DLIB, f), os.path.join(DLIB, f)) for n, f in (("ada", "2008_001322.jpg"), ("bea", "2008_002079.jpg"), ("nat", "2009_004587.jpg"))}
-clips = {n: face_clip(n, *faces[n]) for n in faces}
+clips = {n: face_clip(OUT, n, *faces[n]) for n in faces}
 words = {"ada": speech("ada", SENTENCES["ada"], "en"), "bea": speech("bea", SENTENCES["bea"], "en+f3")}
 
 server = Server(BIN, OUT, os.path.join(OUT, "data"), {"http": "127.0.0.1:0", "sessions": [{"name": "call", "kind": "conference"}]})

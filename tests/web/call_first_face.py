@@ -19,7 +19,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from browser_support import Server, chromium, face_frames, skip  # skips without the browser
+from browser_support import Server, chromium, face_clip, skip  # skips without the browser
 
 BIN, OUT = sys.argv[1], sys.argv[2]
 BENCH = sys.argv[sys.argv.index("--bench") + 1] if "--bench" in sys.argv else None
@@ -38,16 +38,6 @@ def photos(subject, dlib_photo):
     if os.path.exists(os.path.join(DLIB, dlib_photo)):
         return [os.path.join(DLIB, dlib_photo)] * 2
     skip(f"neither ../shared/data/yalefaces nor libdlib-dev's example photos ({DLIB}) are here")
-
-
-def camera(name, subject, dlib_photo):
-    """A folder of frames (the native member's camera) and a y4m of them (Chromium's)."""
-    neutral, smile = photos(subject, dlib_photo)
-    folder = face_frames(os.path.join(OUT, name), neutral, smile, (3, 9))
-    y4m = os.path.join(OUT, f"{name}.y4m")
-    subprocess.run(["ffmpeg", "-v", "error", "-y", "-framerate", "15", "-i", os.path.join(folder, "%04d" + os.path.splitext(neutral)[1]),
-                    "-vf", "scale=320:240:force_original_aspect_ratio=decrease,pad=320:240:(ow-iw)/2:(oh-ih)/2,format=yuv420p", y4m], check=True)
-    return folder, y4m
 
 
 def join_once(out, wait, browser_camera, native_camera):
@@ -87,8 +77,8 @@ def join_once(out, wait, browser_camera, native_camera):
         server.stop()
 
 
-browser_camera = camera("ada", "02", "2008_001322.jpg")[1]
-native_camera = camera("nat", "07", "2009_004587.jpg")[0]
+browser_camera = face_clip(OUT, "ada", *photos("02", "2008_001322.jpg"))[1]
+native_camera = face_clip(OUT, "nat", *photos("07", "2009_004587.jpg"))[0]
 rows = []
 for wait in WAITS:
     runs = [join_once(os.path.join(OUT, f"wait{wait}-run{k}"), wait, browser_camera, native_camera) for k in range(RUNS)]
