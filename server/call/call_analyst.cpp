@@ -19,8 +19,6 @@ namespace inkwire::server {
 namespace {
 
 constexpr int kMaxDecodedSide = 1024;  // a crop is ~160 px, a whole frame 320: anything bigger is refused
-constexpr int kDetectSide = 200;       // crops are looked at this large (see analyse_crop)
-constexpr float kRegionMargin = 1.8f;  // the next crop: the face's box grown this much about its centre
 constexpr float kPoseStep = 8;         // degrees a head must turn before it is sent again
 constexpr int kDetectEvery = 2;        // crops: the detector checks the face is still there; between, it is tracked
 constexpr size_t kMaxWaitingFrames = 45;  // a member's video frames waiting (3 s): past this they go, and the stream waits for a key frame

@@ -23,6 +23,9 @@
 
 namespace inkwire::server {
 
+inline constexpr int kDetectSide = 200;       // crops are looked at this large (see analyse_picture)
+inline constexpr float kRegionMargin = 1.8f;  // the next crop: the face's landmarks' box grown this much about its centre
+
 // JPEG files start with SOI and a marker: anything else is refused before it is decoded.
 bool looks_like_jpeg(const protocol::Bytes& bytes);
 

@@ -1,15 +1,20 @@
 #include "eval_faces.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <optional>
 #include <regex>
 
+#include <glm/glm.hpp>
+
+#include "client/call/face_crop.hpp"
 #include "common/error.hpp"
 #include "common/face/expression_templates.hpp"
 #include "common/image.hpp"
+#include "server/call/call_analyst.hpp"
 #include "server/face/expression_selector.hpp"
 #include "server/face/face_analyzer.hpp"
 
@@ -94,6 +99,32 @@ FaceFeatures features_of(const fs::path& file, const FaceLandmarks& points) {
   return measure_features(points, &image);
 }
 
+// The photo as a call's face picture shows it, framed a few pixels otherwise each time: the
+// square about the face (its landmarks' box grown by the analyst's margin) moved by each of
+// kFramingShifts, kept in the frame, scaled to the face video's side and then to the side the
+// analyst looks at, and read as the analyst reads it (the detector, then the landmark model in its
+// box), each framing's features.
+constexpr std::array<std::array<int, 2>, 15> kFramingShifts = {{{-8, -16}, {0, -16}, {8, -16}, {-8, -8}, {0, -8}, {8, -8}, {-8, 0}, {0, 0},
+                                                                {8, 0}, {-8, 8}, {0, 8}, {8, 8}, {-8, 16}, {0, 16}, {8, 16}}};
+
+std::vector<FaceFeatures> framed_features(FaceAnalyzer& analyzer, const Image& photo, const FaceLandmarks& points) {
+  glm::vec2 lo(1e9f), hi(-1e9f);
+  for (const glm::vec2& p : points) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  const glm::vec2 centre = 0.5f * (lo + hi);
+  const int side = std::min({int(std::max(hi.x - lo.x, hi.y - lo.y) * server::kRegionMargin), photo.width, photo.height});
+  std::vector<FaceFeatures> out;
+  for (const auto& [dx, dy] : kFramingShifts) {
+    const int x = std::clamp(int(centre.x) - side / 2 + dx, 0, photo.width - side), y = std::clamp(int(centre.y) - side / 2 + dy, 0, photo.height - side);
+    const Image picture = resized(resized(cropped(photo, x, y, side, side), kFaceVideoSide, kFaceVideoSide), server::kDetectSide, server::kDetectSide);
+    std::vector<FaceBox> faces = analyzer.detect(picture);
+    if (faces.empty()) faces = analyzer.detect_in_photo(picture);
+    if (faces.empty()) continue;
+    const FaceBox& face = *std::max_element(faces.begin(), faces.end(), [](const FaceBox& a, const FaceBox& b) { return a.width() < b.width(); });
+    out.push_back(measure_features(analyzer.landmarks_in(picture, face), &picture));
+  }
+  return out;
+}
+
 FaceAnalyzerOptions still_options(int upsample) { return {.detect_every = 1, .detect_width = 0, .upsample = upsample}; }
 
 nlohmann::json features_json(const FaceFeatures& f) {
@@ -109,6 +140,8 @@ nlohmann::json run_faces(const FacesOptions& options) {
   FaceAnalyzer analyzer(still_options(0)), upsampled(still_options(1));
   nlohmann::json per_label = nlohmann::json::object(), confusion = nlohmann::json::object(), details = nlohmann::json::array();
   int images = 0, correct = 0, no_face = 0, no_neutral = 0;
+  int framed = 0, framed_correct = 0, framed_call = 0, framed_call_correct = 0;  // the photos as call pictures frame them
+  nlohmann::json framed_per_subject = nlohmann::json::object();
   for (const auto& [subject, by_label] : photos) {
     const auto normal = by_label.find("normal");
     std::optional<FaceLandmarks> neutral_points;
@@ -119,6 +152,13 @@ nlohmann::json run_faces(const FacesOptions& options) {
       continue;
     }
     const FaceFeatures neutral = features_of(normal->second, *neutral_points);
+    // A call's neutral: the photo a member joins with, read whole as the analyst reads it.
+    const Image neutral_photo = load_image(normal->second);
+    std::optional<FaceFeatures> call_neutral;
+    if (const std::vector<FaceBox> faces = analyzer.detect_in_photo(neutral_photo); !faces.empty()) {
+      const FaceBox& face = *std::max_element(faces.begin(), faces.end(), [](const FaceBox& a, const FaceBox& b) { return a.width() < b.width(); });
+      call_neutral = measure_features(analyzer.landmarks_in(neutral_photo, face), &neutral_photo);
+    }
     for (const std::string& label : kLabels) {
       const auto photo = by_label.find(label);
       if (photo == by_label.end()) continue;
@@ -131,6 +171,18 @@ nlohmann::json run_faces(const FacesOptions& options) {
         features = features_of(photo->second, *points);
         state = classify(*features, neutral);
         chosen = label_of(state.expression);
+        if (call_neutral) {
+          const bool in_call = label == "normal" || label == "happy" || label == "surprised";  // what the call bench shows
+          int right_here = 0, here = 0;
+          for (const FaceFeatures& f : framed_features(analyzer, load_image(photo->second), *points)) {
+            const bool right = label_of(classify(f, *call_neutral).expression) == label;
+            ++here, right_here += right;
+            if (in_call) ++framed_call, framed_call_correct += right;
+          }
+          framed += here, framed_correct += right_here;
+          auto& per = framed_per_subject[std::to_string(subject)];
+          per = per.is_null() ? nlohmann::json::array({right_here, here}) : nlohmann::json::array({per[0].get<int>() + right_here, per[1].get<int>() + here});
+        }
       } else {
         ++no_face;
       }
@@ -159,6 +211,9 @@ nlohmann::json run_faces(const FacesOptions& options) {
   nlohmann::json out = {{"images", images},
                         {"accuracy", images ? double(correct) / images : 0.0},
                         {"accuracy_normal_happy_surprised_sleepy", core_n ? double(core_correct) / core_n : 0.0},
+                        {"accuracy_framed", framed ? double(framed_correct) / framed : 0.0},
+                        {"accuracy_framed_normal_happy_surprised", framed_call ? double(framed_call_correct) / framed_call : 0.0},
+                        {"framed_correct_of_subject", framed_per_subject},
                         {"subjects", options.subjects.empty() ? "all" : options.subjects},
                         {"no_face", no_face},
                         {"subjects_without_neutral", no_neutral},

@@ -1,7 +1,9 @@
 #pragma once
 // `inkwire-eval faces`: expression selection on a labelled set of real faces named
 // subjectNN_label.png (the Yale faces). Each subject's `normal` photo is its neutral
-// calibration; every other photo with a label the selector knows is classified against it.
+// calibration; every other photo with a label the selector knows is classified against it, and
+// again as a call's face pictures frame it (15 framings a few pixels apart, against the neutral
+// photo read as a call reads it): how much the reading depends on where the picture's edges fall.
 // `inkwire-eval face-templates` measures expression templates on such a set (development
 // subjects only) and writes the template file the client reconstructs faces with.
 #include <filesystem>
