@@ -6,8 +6,7 @@
 namespace inkwire {
 namespace {
 
-constexpr double kDriftMove = 0.1, kDriftScale = 1.15;  // of the shown side: move the crop
-constexpr double kJumpMove = 0.5, kJumpScale = 1.5;     // ... start the video again
+constexpr double kJumpMove = 0.5, kJumpScale = 1.5;  // of the shown side: start the video again
 
 // The square of the region's longer side about its centre, moved into the frame.
 protocol::FaceRegion squared(const protocol::FaceRegion& r, int frame_width, int frame_height) {
@@ -28,9 +27,7 @@ FaceCropChoice follow_face(const protocol::FaceRegion& shown, const protocol::Fa
   const double move = std::hypot(dx, dy) / side;
   const double scale = double(std::max(reported.width, reported.height)) / side;
   const double grown = std::max(scale, 1.0 / std::max(scale, 1e-6));
-  if (move > kJumpMove || grown > kJumpScale) return {.region = reported, .jumped = true};
-  if (move > kDriftMove || grown > kDriftScale) return {.region = reported, .jumped = false};
-  return {.region = shown, .jumped = false};
+  return {.region = reported, .jumped = move > kJumpMove || grown > kJumpScale};
 }
 
 PictureSize search_picture_size(int frame_width, int frame_height) {

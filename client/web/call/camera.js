@@ -9,7 +9,7 @@
 
 export const kFaceVideoSide = 160, kFaceSearchWidth = 320;
 const kPhotoSide = 480, kVideoBitrate = 36000, kMinAskedBitrate = 1000, kFaceVideoFps = 15;
-const kDriftMove = 0.1, kDriftScale = 1.15, kJumpMove = 0.5, kJumpScale = 1.5;
+const kJumpMove = 0.5, kJumpScale = 1.5;
 
 function fit(width, height, side) {
   const scale = Math.min(1, side / width, side / height);
@@ -41,9 +41,6 @@ function squared(r, frameWidth, frameHeight) {
   return { found: true, x, y, width: side, height: side };
 }
 
-// The rectangle to show next, square (the video's picture is, and a face stretched one way
-// reads as another expression): `shown` ({found: false}: the whole frame) kept while the face
-// stays well inside it, moved when the face drifted, a jump (a key frame) when it went far.
 // The face video's picture while the face is not found, as client/call/face_crop.hpp's
 // search_picture_size (pinned with it): the whole frame, neither side past kFaceSearchWidth,
 // even sides of at least 16.
@@ -52,6 +49,9 @@ export function searchPictureSize(W, H) {
   return [even(W), even(H)];
 }
 
+// The rectangle to show next: the region the server reported, square (the video's picture is,
+// and a face stretched one way reads as another expression), and a jump (a key frame) when it
+// went far from `shown` ({found: false}: the whole frame) or changed its size much.
 export function followFace(shown, reportedRegion, frameWidth, frameHeight) {
   const reported = squared(reportedRegion, frameWidth, frameHeight);
   if (!shown.found) return { region: reported, jumped: true };
@@ -61,9 +61,7 @@ export function followFace(shown, reportedRegion, frameWidth, frameHeight) {
   const move = Math.hypot(dx, dy) / side;
   const scale = Math.max(reported.width, reported.height) / side;
   const grown = Math.max(scale, 1 / Math.max(scale, 1e-6));
-  if (move > kJumpMove || grown > kJumpScale) return { region: reported, jumped: true };
-  if (move > kDriftMove || grown > kDriftScale) return { region: reported, jumped: false };
-  return { region: shown, jumped: false };
+  return { region: reported, jumped: move > kJumpMove || grown > kJumpScale };
 }
 
 // Whether this engine encodes VP8 at the face video's size ('vp8'), else 'jpeg'.

@@ -7,7 +7,7 @@ import { test } from 'node:test';
 
 import { followFace, kFaceSearchWidth, kFaceVideoSide, searchPictureSize } from '../call/camera.js';
 
-test('a face that stays keeps its crop, one that drifts moves it, one that jumps starts again, as in C++', () => {
+test('the crop follows every report and one that jumps starts again, as in C++', () => {
   const golden = JSON.parse(readFileSync(new URL('../../../tests/golden/warp-vectors.json', import.meta.url))).face_crop;
   assert.deepEqual([kFaceVideoSide, kFaceSearchWidth], golden.sides);
   for (const step of golden.steps) {
