@@ -5,9 +5,9 @@
 // crop held still while the face stayed inside it showed a still face the same picture over and
 // over, and the landmark model reads a face a little otherwise with every few pixels its
 // picture's edges move: held, one framing decided the whole expression; following the reports,
-// the analyst's smoothing takes in several (held-out Yale faces through VP8: 0.731
-// read right against 0.673, medians of seven and six runs, at the same bit rate). client/web/call/camera.js repeats this rule;
-// both are pinned by tests/golden/warp-vectors.json ("face_crop").
+// the analyst's smoothing takes in several (held-out Yale faces through VP8: 0.731 read right
+// against 0.673, medians of ten and six runs, at the same bit rate). client/web/call/camera.js
+// repeats this rule; both are pinned by tests/golden/warp-vectors.json ("face_crop").
 #include "protocol/messages.hpp"
 
 namespace inkwire {

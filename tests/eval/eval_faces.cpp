@@ -99,6 +99,10 @@ FaceFeatures features_of(const fs::path& file, const FaceLandmarks& points) {
   return measure_features(points, &image);
 }
 
+const FaceBox& largest(const std::vector<FaceBox>& faces) {
+  return *std::max_element(faces.begin(), faces.end(), [](const FaceBox& a, const FaceBox& b) { return a.width() < b.width(); });
+}
+
 // The photo as a call's face picture shows it, framed a few pixels otherwise each time: the
 // square about the face (its landmarks' box grown by the analyst's margin) moved by each of
 // kFramingShifts, kept in the frame, scaled to the face video's side and then to the side the
@@ -119,8 +123,7 @@ std::vector<FaceFeatures> framed_features(FaceAnalyzer& analyzer, const Image& p
     std::vector<FaceBox> faces = analyzer.detect(picture);
     if (faces.empty()) faces = analyzer.detect_in_photo(picture);
     if (faces.empty()) continue;
-    const FaceBox& face = *std::max_element(faces.begin(), faces.end(), [](const FaceBox& a, const FaceBox& b) { return a.width() < b.width(); });
-    out.push_back(measure_features(analyzer.landmarks_in(picture, face), &picture));
+    out.push_back(measure_features(analyzer.landmarks_in(picture, largest(faces)), &picture));
   }
   return out;
 }
@@ -156,8 +159,7 @@ nlohmann::json run_faces(const FacesOptions& options) {
     const Image neutral_photo = load_image(normal->second);
     std::optional<FaceFeatures> call_neutral;
     if (const std::vector<FaceBox> faces = analyzer.detect_in_photo(neutral_photo); !faces.empty()) {
-      const FaceBox& face = *std::max_element(faces.begin(), faces.end(), [](const FaceBox& a, const FaceBox& b) { return a.width() < b.width(); });
-      call_neutral = measure_features(analyzer.landmarks_in(neutral_photo, face), &neutral_photo);
+      call_neutral = measure_features(analyzer.landmarks_in(neutral_photo, largest(faces)), &neutral_photo);
     }
     for (const std::string& label : kLabels) {
       const auto photo = by_label.find(label);
