@@ -34,7 +34,11 @@ try:
     driver.save_screenshot(os.path.join(out, "product-page.png"))
     frames = os.path.join(out, "frames")
     os.makedirs(frames, exist_ok=True)
-    sent = driver.execute_script(f"const s = {element}.session; return s.bytesSent + s.bytesReceived")
+    # What the page moved over the network: the product's files (a plain fetch, no session) and a
+    # session's messages when it presents or follows one.
+    traffic = (f"const e = {element}, s = e.session; "
+               "return (e.product?.bytesReceived ?? 0) + (s ? s.bytesSent + s.bytesReceived : 0)")
+    sent = driver.execute_script(traffic)
     canvas = driver.execute_script(f"return {element}.canvas")
 
     def capture(i):
@@ -51,7 +55,7 @@ try:
     for i in range(40, 70):
         capture(i)
         time.sleep(1 / 30)
-    after = driver.execute_script(f"const s = {element}.session; return s.bytesSent + s.bytesReceived")
+    after = driver.execute_script(traffic)
     subprocess.run(["ffmpeg", "-loglevel", "error", "-y", "-framerate", "30", "-i", os.path.join(frames, "%04d.png"), "-pix_fmt", "yuv420p",
                     "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", os.path.join(out, "turntable-drag.mp4")], check=True)
     # The conference: its page while the speaker talks, two seconds of the face at 15 fps.
