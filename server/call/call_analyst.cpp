@@ -19,6 +19,7 @@ namespace inkwire::server {
 namespace {
 
 constexpr int kMaxDecodedSide = 1024;  // a crop is ~160 px, a whole frame 320: anything bigger is refused
+constexpr int kDetectSide = 200;       // pictures are looked at this large (see looked_at)
 constexpr float kPoseStep = 8;         // degrees a head must turn before it is sent again
 constexpr int kDetectEvery = 2;        // crops: the detector checks the face is still there; between, it is tracked
 constexpr size_t kMaxWaitingFrames = 45;  // a member's video frames waiting (3 s): past this they go, and the stream waits for a key frame
@@ -33,7 +34,33 @@ Image decode_jpeg(const protocol::Bytes& jpeg, const char* what) {
 
 int8_t degrees_byte(float degrees) { return int8_t(std::clamp(std::lround(degrees), -127L, 127L)); }
 
+const FaceBox& largest(const std::vector<FaceBox>& faces) {
+  return *std::max_element(faces.begin(), faces.end(), [](const FaceBox& a, const FaceBox& b) { return a.width() < b.width(); });
+}
+
 }  // namespace
+
+std::optional<FaceLandmarks> photo_landmarks(FaceAnalyzer& analyzer, const Image& photo) {
+  const std::vector<FaceBox> faces = analyzer.detect_in_photo(photo);
+  if (faces.empty()) return std::nullopt;
+  return analyzer.landmarks_in(photo, largest(faces));
+}
+
+// A 160 px crop shows a face of about 90 px, near the detector's smallest (80): at 200 px it is
+// found without the detector's doubling, which costs 2.5 times as much.
+Image looked_at(const Image& picture) {
+  if (picture.width >= kDetectSide || picture.height >= kDetectSide) return picture;
+  const float up = float(kDetectSide) / float(std::max(picture.width, picture.height));
+  return resized(picture, int(std::lround(float(picture.width) * up)), int(std::lround(float(picture.height) * up)));
+}
+
+std::optional<FoundFace> find_face(FaceAnalyzer& analyzer, const Image& picture) {
+  std::vector<FaceBox> faces = analyzer.detect(picture);
+  if (faces.empty()) faces = analyzer.detect_in_photo(picture);  // a smaller face: the detector doubled
+  if (faces.empty()) return std::nullopt;
+  const FaceBox& box = largest(faces);
+  return FoundFace{.box = box, .landmarks = analyzer.landmarks_in(picture, box)};
+}
 
 bool looks_like_jpeg(const protocol::Bytes& b) { return b.size() >= 4 && b[0] == 0xff && b[1] == 0xd8 && b[2] == 0xff; }
 
@@ -184,10 +211,9 @@ PhotoAnalysed CallAnalyst::analyse_photo(const MemberKey& who, protocol::Bytes j
   PhotoAnalysed out{.who = who, .error = {}, .photo = {}, .landmarks = {}};
   try {
     const Image photo = decode_jpeg(jpeg, "neutral photo");
-    const std::vector<FaceBox> faces = models_->analyzer.detect_in_photo(photo);
-    if (faces.empty()) throw Error("no face found in your photo");
-    const FaceBox& face = *std::max_element(faces.begin(), faces.end(), [](const FaceBox& a, const FaceBox& b) { return a.width() < b.width(); });
-    const FaceLandmarks landmarks = models_->analyzer.landmarks_in(photo, face);
+    const std::optional<FaceLandmarks> found = photo_landmarks(models_->analyzer, photo);
+    if (!found) throw Error("no face found in your photo");
+    const FaceLandmarks& landmarks = *found;
     auto member = std::make_unique<Member>();
     member->selector.calibrate(measure_features(landmarks, &photo));
     member->neutral = landmarks;
@@ -254,13 +280,7 @@ CropAnalysed CallAnalyst::analyse_video(const MemberKey& who, std::deque<protoco
 
 void CallAnalyst::analyse_picture(const MemberKey& who, const Picture& crop, CropAnalysed& out) {
   {
-    // A 160 px crop shows a face of about 90 px, near the detector's smallest (80): at 200 px it
-    // is found without the detector's doubling, which costs 2.5 times as much.
-    Image image = crop.image;
-    if (image.width < kDetectSide && image.height < kDetectSide) {
-      const float up = float(kDetectSide) / float(std::max(image.width, image.height));
-      image = resized(image, int(std::lround(float(image.width) * up)), int(std::lround(float(image.height) * up)));
-    }
+    const Image image = looked_at(crop.image);
     const float sx = float(crop.width) / float(image.width), sy = float(crop.height) / float(image.height);
     // Where the face was, in this crop's pixels: the landmark model placed there directly (a
     // millisecond) instead of the detector (tens), except every kDetectEvery-th crop.
@@ -284,13 +304,9 @@ void CallAnalyst::analyse_picture(const MemberKey& who, const Picture& crop, Cro
     std::optional<FaceBox> detected;
     if (tracked) {
       found = models_->analyzer.landmarks_in(image, *tracked);
-    } else {
-      std::vector<FaceBox> faces = models_->analyzer.detect(image);
-      if (faces.empty()) faces = models_->analyzer.detect_in_photo(image);  // a smaller face: the detector doubled
-      if (!faces.empty()) {
-        detected = *std::max_element(faces.begin(), faces.end(), [](const FaceBox& a, const FaceBox& b) { return a.width() < b.width(); });
-        found = models_->analyzer.landmarks_in(image, *detected);
-      }
+    } else if (const std::optional<FoundFace> face = find_face(models_->analyzer, image)) {
+      detected = face->box;
+      found = face->landmarks;
     }
     // The member's calibration is read and changed under the lock: forget() may end it meanwhile.
     std::lock_guard lock(mutex_);

@@ -18,16 +18,32 @@
 #include <thread>
 #include <variant>
 
+#include "common/face/face_shape.hpp"
+#include "common/image.hpp"
 #include "protocol/messages.hpp"
 #include "server/call/face_video_decoder.hpp"
+#include "server/face/face_analyzer.hpp"
 
 namespace inkwire::server {
 
-inline constexpr int kDetectSide = 200;       // crops are looked at this large (see analyse_picture)
 inline constexpr float kRegionMargin = 1.8f;  // the next crop: the face's landmarks' box grown this much about its centre
 
 // JPEG files start with SOI and a marker: anything else is refused before it is decoded.
 bool looks_like_jpeg(const protocol::Bytes& bytes);
+
+// How the analyst reads faces, as functions so that inkwire-eval reads photos the same way.
+// A member's neutral photo: the detector at the photo's scale, the largest face's landmarks.
+std::optional<FaceLandmarks> photo_landmarks(FaceAnalyzer& analyzer, const Image& photo);
+// A face picture (a crop or a video frame) as the analyst looks at it: scaled up to 200 px when
+// smaller.
+Image looked_at(const Image& picture);
+// The face in such a picture when it is not tracked: the detector, doubled when it finds none,
+// and the largest face's box and landmarks.
+struct FoundFace {
+  FaceBox box;
+  FaceLandmarks landmarks;
+};
+std::optional<FoundFace> find_face(FaceAnalyzer& analyzer, const Image& picture);
 
 // Which member of which session a job is for.
 struct MemberKey {

@@ -93,21 +93,10 @@ std::optional<FaceLandmarks> landmarks_of(FaceAnalyzer& analyzer, FaceAnalyzer& 
   return std::nullopt;
 }
 
-// The features of the face in `file` at `points`, its eyes' shade included.
-FaceFeatures features_of(const fs::path& file, const FaceLandmarks& points) {
-  const Image image = load_image(file);
-  return measure_features(points, &image);
-}
-
-const FaceBox& largest(const std::vector<FaceBox>& faces) {
-  return *std::max_element(faces.begin(), faces.end(), [](const FaceBox& a, const FaceBox& b) { return a.width() < b.width(); });
-}
-
-// The photo as a call's face picture shows it, framed a few pixels otherwise each time: the
+// The photo as a call's face pictures show it, framed a few pixels otherwise each time: the
 // square about the face (its landmarks' box grown by the analyst's margin) moved by each of
-// kFramingShifts, kept in the frame, scaled to the face video's side and then to the side the
-// analyst looks at, and read as the analyst reads it (the detector, then the landmark model in its
-// box), each framing's features.
+// kFramingShifts, kept in the frame, scaled to the face video's side, and read as the analyst
+// reads a picture it does not track; each framing's features.
 constexpr std::array<std::array<int, 2>, 15> kFramingShifts = {{{-8, -16}, {0, -16}, {8, -16}, {-8, -8}, {0, -8}, {8, -8}, {-8, 0}, {0, 0},
                                                                 {8, 0}, {-8, 8}, {0, 8}, {8, 8}, {-8, 16}, {0, 16}, {8, 16}}};
 
@@ -119,11 +108,8 @@ std::vector<FaceFeatures> framed_features(FaceAnalyzer& analyzer, const Image& p
   std::vector<FaceFeatures> out;
   for (const auto& [dx, dy] : kFramingShifts) {
     const int x = std::clamp(int(centre.x) - side / 2 + dx, 0, photo.width - side), y = std::clamp(int(centre.y) - side / 2 + dy, 0, photo.height - side);
-    const Image picture = resized(resized(cropped(photo, x, y, side, side), kFaceVideoSide, kFaceVideoSide), server::kDetectSide, server::kDetectSide);
-    std::vector<FaceBox> faces = analyzer.detect(picture);
-    if (faces.empty()) faces = analyzer.detect_in_photo(picture);
-    if (faces.empty()) continue;
-    out.push_back(measure_features(analyzer.landmarks_in(picture, largest(faces)), &picture));
+    const Image picture = server::looked_at(resized(cropped(photo, x, y, side, side), kFaceVideoSide, kFaceVideoSide));
+    if (const auto face = server::find_face(analyzer, picture)) out.push_back(measure_features(face->landmarks, &picture));
   }
   return out;
 }
@@ -154,13 +140,11 @@ nlohmann::json run_faces(const FacesOptions& options) {
       std::cerr << "faces: subject " << subject << " has no usable normal photo; skipped\n";
       continue;
     }
-    const FaceFeatures neutral = features_of(normal->second, *neutral_points);
-    // A call's neutral: the photo a member joins with, read whole as the analyst reads it.
     const Image neutral_photo = load_image(normal->second);
+    const FaceFeatures neutral = measure_features(*neutral_points, &neutral_photo);
+    // A call's neutral: the photo a member joins with, read as the analyst reads it.
     std::optional<FaceFeatures> call_neutral;
-    if (const std::vector<FaceBox> faces = analyzer.detect_in_photo(neutral_photo); !faces.empty()) {
-      call_neutral = measure_features(analyzer.landmarks_in(neutral_photo, largest(faces)), &neutral_photo);
-    }
+    if (const auto landmarks = server::photo_landmarks(analyzer, neutral_photo)) call_neutral = measure_features(*landmarks, &neutral_photo);
     for (const std::string& label : kLabels) {
       const auto photo = by_label.find(label);
       if (photo == by_label.end()) continue;
@@ -170,13 +154,14 @@ nlohmann::json run_faces(const FacesOptions& options) {
       ExpressionState state;
       std::optional<FaceFeatures> features;
       if (points) {
-        features = features_of(photo->second, *points);
+        const Image image = load_image(photo->second);
+        features = measure_features(*points, &image);
         state = classify(*features, neutral);
         chosen = label_of(state.expression);
         if (call_neutral) {
           const bool in_call = label == "normal" || label == "happy" || label == "surprised";  // what the call bench shows
           int right_here = 0, here = 0;
-          for (const FaceFeatures& f : framed_features(analyzer, load_image(photo->second), *points)) {
+          for (const FaceFeatures& f : framed_features(analyzer, image, *points)) {
             const bool right = label_of(classify(f, *call_neutral).expression) == label;
             ++here, right_here += right;
             if (in_call) ++framed_call, framed_call_correct += right;
