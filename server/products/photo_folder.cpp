@@ -1,6 +1,7 @@
 #include "server/products/photo_folder.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <set>
@@ -30,18 +31,90 @@ bool is_companion(const fs::path& file) {
   return name.empty() || name[0] == '.' || name == "Thumbs.db" || file.extension() == ".txt";
 }
 
-// The calibrated directions turned so the ring lies about +Y with the first photo at azimuth 0,
-// the frame the clients' orbit uses (a lab's world frame is anyone's guess).
-std::vector<glm::vec3> ring_frame(const std::vector<glm::vec3>& directions) {
-  glm::vec3 axis(0.0f);
-  for (size_t i = 0; i + 1 < directions.size(); ++i) axis += glm::cross(directions[i], directions[i + 1]);
-  if (glm::length(axis) < 1e-6f) throw Error("the calibrated cameras do not go round the object");
-  const glm::vec3 y = glm::normalize(axis);
-  const glm::vec3 z = glm::normalize(directions[0] - glm::dot(directions[0], y) * y);
-  const glm::vec3 x = glm::cross(y, z);
-  std::vector<glm::vec3> out;
-  for (const glm::vec3& d : directions) out.push_back(glm::normalize(glm::vec3(glm::dot(d, x), glm::dot(d, y), glm::dot(d, z))));
-  return out;
+// A calibrated ring in the frame the clients' orbit uses (a lab's world frame is anyone's guess):
+// the ring about +Y, the first photo at azimuth 0, the origin where the cameras' sights meet (the
+// object) and lengths in units of the cameras' mean distance from it.
+struct RingFrame {
+  glm::vec3 x{1, 0, 0}, y{0, 1, 0}, z{0, 0, 1};  // the frame's axes in the calibration's world
+  glm::vec3 object{0.0f};
+  float distance = 1;
+  std::vector<glm::vec3> directions;  // per camera, in the calibration's order: unit, from the object toward it
+  glm::vec3 in_frame(const glm::vec3& world_direction) const {
+    return {glm::dot(world_direction, x), glm::dot(world_direction, y), glm::dot(world_direction, z)};
+  }
+};
+
+glm::vec3 camera_centre(const RingCamera& c) { return -glm::transpose(c.r) * c.t; }
+
+// The ring's axis is the normal of the plane the directions' tips lie in (they go round a cone
+// about it), not the sum of their turns: a ring with gaps (templeRing's 35 degrees) tilts that sum
+// 5 degrees toward its dense side. Up is the side the cameras stand on, seen from where their
+// sights meet: a calibration does not say which way is up, and a turntable's camera looks down.
+RingFrame ring_frame(const PhotoRing& ring) {
+  const std::vector<glm::vec3>& directions = ring.directions;
+  glm::vec3 turn(0.0f), mean(0.0f);
+  for (size_t i = 0; i + 1 < directions.size(); ++i) turn += glm::cross(directions[i], directions[i + 1]);
+  if (glm::length(turn) < 1e-6f) throw Error("the calibrated cameras do not go round the object");
+  for (const glm::vec3& d : directions) mean += d / float(directions.size());
+  cv::Matx33d spread = cv::Matx33d::zeros();
+  for (const glm::vec3& d : directions) {
+    const cv::Vec3d o(d.x - mean.x, d.y - mean.y, d.z - mean.z);
+    spread += o * o.t();
+  }
+  cv::Mat values, vectors;
+  cv::eigen(cv::Mat(spread), values, vectors);  // descending: the last is the plane's normal
+  RingFrame f;
+  f.y = glm::vec3(float(vectors.at<double>(2, 0)), float(vectors.at<double>(2, 1)), float(vectors.at<double>(2, 2)));
+  if (glm::dot(f.y, turn) < 0.0f) f.y = -f.y;
+  // Where the cameras' sights meet: the point nearest every optical axis, by least squares.
+  cv::Matx33d normal = cv::Matx33d::zeros();
+  cv::Vec3d right(0, 0, 0);
+  glm::vec3 centres(0.0f);
+  for (size_t i = 0; i < ring.cameras.size(); ++i) {
+    const glm::vec3 c = camera_centre(ring.cameras[i]);
+    const cv::Vec3d centre(c.x, c.y, c.z), sight(directions[i].x, directions[i].y, directions[i].z);
+    const cv::Matx33d across = cv::Matx33d::eye() - sight * sight.t();
+    normal += across, right += across * centre, centres += c / float(ring.cameras.size());
+  }
+  cv::Vec3d object;
+  if (cv::solve(cv::Mat(normal), cv::Mat(right), object)) {
+    f.object = glm::vec3(float(object[0]), float(object[1]), float(object[2]));
+    if (glm::dot(f.y, centres - f.object) < 0.0f) f.y = -f.y;
+  } else {
+    f.object = centres - glm::dot(centres, f.y) * f.y;  // the cameras' sights are parallel: no object to meet on
+  }
+  f.distance = 0;
+  for (const RingCamera& c : ring.cameras) f.distance += glm::length(camera_centre(c) - f.object) / float(ring.cameras.size());
+  if (!(f.distance > 0.0f)) throw Error("the calibrated cameras stand where the object is");
+  f.z = glm::normalize(directions[0] - glm::dot(directions[0], f.y) * f.y);
+  f.x = glm::cross(f.y, f.z);
+  for (const glm::vec3& d : directions) f.directions.push_back(glm::normalize(f.in_frame(d)));
+  return f;
+}
+
+// Camera `c` of `frame` as a pose for a photo stored `size` pixels (turned upright from the frame
+// its calibration describes: the turn that brings the ring's up to the picture's up) and shown at
+// `shown` pixels with the principal point at its middle row and `axis_x`. A principal point off
+// that place is folded into the pose as the small turn that brings it there.
+ViewPose calibrated_pose(const RingFrame& frame, const RingCamera& c, glm::ivec2 size, glm::ivec2 shown, float focal_shown, float axis_x) {
+  const glm::vec3 right = frame.in_frame(glm::vec3(c.r[0][0], c.r[1][0], c.r[2][0])), down = frame.in_frame(glm::vec3(c.r[0][1], c.r[1][1], c.r[2][1])),
+                  ahead = frame.in_frame(glm::vec3(c.r[0][2], c.r[1][2], c.r[2][2]));
+  // The picture's right and down, and the principal point, for each quarter turn calibrated_pixel
+  // undoes; the one whose up is the ring's up.
+  const float w = float(size.x - 1), h = float(size.y - 1), cx = c.k[2][0], cy = c.k[2][1];
+  const std::array<std::array<glm::vec3, 2>, 4> axes = {{{right, down}, {down, -right}, {-right, -down}, {-down, right}}};
+  const std::array<glm::vec2, 4> principal = {glm::vec2(cx, cy), glm::vec2(cy, h - cx), glm::vec2(w - cx, h - cy), glm::vec2(w - cy, cx)};
+  int turn = 0;
+  for (int q = 1; q < 4; ++q)
+    if (-axes[size_t(q)][1].y > -axes[size_t(turn)][1].y) turn = q;
+  ViewPose pose;
+  pose.right = axes[size_t(turn)][0], pose.down = axes[size_t(turn)][1], pose.ahead = ahead;
+  const glm::vec2 p = principal[size_t(turn)] * glm::vec2(shown) / glm::vec2(size), middle(axis_x, 0.5f * float(shown.y));
+  pose.ahead = glm::normalize(pose.ahead + ((middle.x - p.x) * pose.right + (middle.y - p.y) * pose.down) / focal_shown);
+  pose.right = glm::normalize(pose.right - glm::dot(pose.right, pose.ahead) * pose.ahead);
+  pose.down = glm::cross(pose.ahead, pose.right);
+  pose.centre = frame.in_frame(camera_centre(c) - frame.object) / frame.distance;
+  return pose;
 }
 
 // 12 for a folder named "row12" (any case), 0 for any other name.
@@ -57,7 +130,7 @@ int row_number(const std::string& name) {
 struct Listing {
   std::vector<fs::path> photos;  // in file-name order
   std::vector<std::pair<int, fs::path>> row_folders;
-  bool calibrated = false;       // a *_par.txt is there
+  fs::path calibration;          // a *_par.txt there
 };
 
 // What a folder holds: photos, row folders (when `rows_allowed`), companions; anything else is
@@ -68,7 +141,7 @@ Listing list_folder(const fs::path& folder, bool rows_allowed) {
   Listing out;
   for (const auto& entry : fs::directory_iterator(folder, ec)) {
     const fs::path& file = entry.path();
-    if (file.filename().string().ends_with("_par.txt")) out.calibrated = true;
+    if (file.filename().string().ends_with("_par.txt")) out.calibration = file;
     if (is_companion(file)) continue;
     if (entry.is_directory()) {
       const int row = rows_allowed ? row_number(file.filename().string()) : 0;
@@ -185,12 +258,15 @@ PhotoFolder read_photo_folder(const fs::path& folder, const PhotoLayout& layout)
   if (layout.rows < 0 || layout.rows > 36) throw Error("--rows must be 1..36");
 
   const Listing listing = list_folder(folder, true);
+  const fs::path calibration = !layout.calibration.empty() ? layout.calibration : layout.folder_calibration ? listing.calibration : fs::path();
   PhotoFolder out;
+  RingFrame frame;                      // with a calibration
+  std::vector<RingCamera> calibrated;   // its cameras, in the photos' order
   std::vector<std::vector<std::string>> rows;  // names relative to the folder, per row
   if (!listing.row_folders.empty()) {
     if (!listing.photos.empty())
       throw Error(listing.photos.front().string() + " is beside row folders: put every photo in its row's folder (row1, row2, ...)");
-    if (listing.calibrated) throw Error(folder.string() + ": a calibration file describes one ring of photos, not rows");
+    if (!calibration.empty()) throw Error(folder.string() + ": a calibration file describes one ring of photos, not rows");
     for (size_t r = 0; r < listing.row_folders.size(); ++r)
       if (listing.row_folders[r].first != int(r) + 1)
         throw Error(folder.string() + " has row folders " + listing.row_folders[r].second.filename().string() + " but no row" +
@@ -199,21 +275,23 @@ PhotoFolder read_photo_folder(const fs::path& folder, const PhotoLayout& layout)
       throw Error("--rows " + std::to_string(layout.rows) + " but " + folder.string() + " holds " + std::to_string(listing.row_folders.size()) + " row folders");
     for (const auto& [number, row_folder] : listing.row_folders) {
       const Listing row = list_folder(row_folder, false);
-      if (row.calibrated) throw Error(row_folder.string() + ": a calibration file describes one ring of photos, not rows");
+      if (!row.calibration.empty() && layout.folder_calibration)
+        throw Error(row_folder.string() + ": a calibration file describes one ring of photos, not rows");
       rows.emplace_back();
       for (const fs::path& f : row.photos) rows.back().push_back(row_folder.filename().string() + "/" + f.filename().string());
     }
-  } else if (listing.calibrated) {
+  } else if (!calibration.empty()) {
     // The calibration names the photos and their order; photos it does not name are refused.
     if (layout.rows > 1) throw Error(folder.string() + ": a calibration file describes one ring of photos, not rows");
-    const PhotoRing ring = load_photo_ring(folder);
+    const PhotoRing ring = load_photo_ring(folder, calibration);
     std::set<std::string> named(ring.names.begin(), ring.names.end());
     for (const fs::path& f : listing.photos)
       if (!named.count(f.filename().string())) throw Error(f.string() + " is not in the folder's calibration");
     // Neighbours by azimuth, not by the file's order: a lab lists its photos as it took them, in
     // sweeps that jump and turn back (templeRing: 0 to 30 degrees, then 76 to 122, ...), and a
     // pair between photos 100 degrees apart would be tweened across the whole gap.
-    const std::vector<glm::vec3> directions = ring_frame(ring.directions);
+    frame = ring_frame(ring);
+    const std::vector<glm::vec3>& directions = frame.directions;
     std::vector<size_t> order(directions.size());
     std::iota(order.begin(), order.end(), size_t(0));
     const auto azimuth = [&](size_t i) {
@@ -222,10 +300,16 @@ PhotoFolder read_photo_folder(const fs::path& folder, const PhotoLayout& layout)
     };
     std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return azimuth(a) < azimuth(b); });
     rows.emplace_back();
+    CalibratedCamera camera;
     for (size_t i : order) {
       rows.back().push_back(ring.names[i]);
       out.directions.push_back(directions[i]);
+      calibrated.push_back(ring.cameras[i]);
+      const glm::mat3& k = ring.cameras[i].k;
+      camera.focal_px += 0.5f * (k[0][0] + k[1][1]) / float(order.size());  // at the files' size until they are read
+      camera.elevation_deg += glm::degrees(std::asin(std::clamp(directions[i].y, -1.0f, 1.0f))) / float(order.size());
     }
+    out.calibration = camera;
   } else {
     const int count = std::max(layout.rows, 1), n = int(listing.photos.size());
     if (n % count != 0)
@@ -248,7 +332,7 @@ PhotoFolder read_photo_folder(const fs::path& folder, const PhotoLayout& layout)
   if (n > 360) throw Error(folder.string() + " holds " + std::to_string(n) + " photos; at most 360 (one per degree)");
   out.rows = int(rows.size());
 
-  if (listing.calibrated) {
+  if (!calibration.empty()) {
     // Neighbours in order; the last and the first too when the photos go all the way round (the
     // gap that closes the ring is no wider than one and a half of the others).
     std::vector<float> steps;
@@ -293,6 +377,12 @@ PhotoFolder read_photo_folder(const fs::path& folder, const PhotoLayout& layout)
       };
       size = scaled(std::min(layout.max_side, kFirstSide));
       out.finest = scaled(layout.max_side);
+      if (out.calibration) {
+        out.calibration->focal_px *= float(size.x) / float(photo.width);
+        for (const RingCamera& c : calibrated)
+          out.calibration->poses.push_back(
+              calibrated_pose(frame, c, {photo.width, photo.height}, size, out.calibration->focal_px, 0.5f * float(size.x)));
+      }
     } else {
       const float aspect = float(photo.width) / float(photo.height), wanted = float(size.x) / float(size.y);
       if (std::abs(aspect / wanted - 1.0f) > 0.02f)

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,7 @@
 #include <glm/vec3.hpp>
 
 #include "common/image.hpp"
+#include "server/products/turntable_camera.hpp"
 
 namespace inkwire {
 
@@ -32,6 +34,11 @@ struct PhotoLayout {
   int rows = 0;            // rings of photos in the folder, in file-name order; 0: the row folders there are, else 1
   std::vector<float> elevations;  // degrees, per row from the lowest; empty: level, then 15 degrees apart (less past 6 rows)
   int max_side = 2048;     // photos are kept at most this many pixels a side (the finest zoom level)
+  // A calibration (Middlebury `*_par.txt`: the photos' names, order and cameras) names the photos
+  // of one ring and says where each was taken from. Empty: the folder's own, if it has one and
+  // `folder_calibration` says to read it (inkwire-tween shape reads one only when told).
+  std::filesystem::path calibration;
+  bool folder_calibration = true;
 };
 
 // Zoom (SPEC T18): a product's photos are matched, keyed and first shown at most kFirstSide
@@ -49,6 +56,15 @@ using PairProgress = std::function<void(int done, int total, const std::string& 
 // level within 1.25 times of the next left out (it would add bytes and little detail).
 std::vector<glm::ivec2> zoom_levels(glm::ivec2 first, glm::ivec2 finest);
 
+// What a calibration file says of a ring's camera in the turntable's terms (turntable_camera.hpp),
+// for the photos at their first level: to carve the shape under, and to check the camera the
+// mattes give against.
+struct CalibratedCamera {
+  float focal_px = 0;            // at the photos' first level
+  float elevation_deg = 0;       // the cameras' mean tilt toward the object above the ring's plane
+  std::vector<ViewPose> poses;   // per photo, in the folder's order: with the axis column at the picture's middle
+};
+
 struct PhotoFolder {
   std::filesystem::path folder;
   std::vector<std::string> names;       // file names (row folder included), row after row, each in ring order
@@ -58,6 +74,7 @@ struct PhotoFolder {
   std::vector<std::vector<uint16_t>> cells;  // neighbouring photos to tween between: pairs round one row, else triangles
   bool closed = false;                  // the rows go all the way round
   bool even_turn_assumed = false;       // no step, arc or calibration said how far each photo turned: evenly, a full turn
+  std::optional<CalibratedCamera> calibration;  // when a calibration file came with the photos
   int rows = 1;                         // photo r * columns() + c is row r's c-th
   int columns() const { return int(photos.size()) / std::max(rows, 1); }
 };

@@ -10,11 +10,10 @@ namespace inkwire {
 namespace {
 
 // The camera of `view`: where it stands and its right, down and ahead directions (object frame).
-struct Frame {
-  glm::vec3 centre, right, down, ahead;
-};
+using Frame = ViewPose;
 
 Frame frame_of(const TurntableCamera& camera, const PhotoView& view) {
+  if (view.pose) return *view.pose;
   const float azimuth = glm::radians(view.azimuth_deg), elevation = glm::radians(camera.elevations_deg[size_t(view.row)]);
   Frame f;
   f.centre = glm::vec3(std::sin(azimuth) * std::cos(elevation), std::sin(elevation), std::cos(azimuth) * std::cos(elevation));
@@ -25,6 +24,22 @@ Frame frame_of(const TurntableCamera& camera, const PhotoView& view) {
 }
 
 }  // namespace
+
+PhotoView view_between(const PhotoView& a, const PhotoView& b, float t) {
+  const float turn = std::remainder(b.azimuth_deg - a.azimuth_deg, 360.0f);
+  PhotoView out{.azimuth_deg = a.azimuth_deg + t * turn, .row = a.row};
+  if (a.pose && b.pose) {
+    const auto mix = [t](const glm::vec3& p, const glm::vec3& q) { return (1.0f - t) * p + t * q; };
+    ViewPose pose;
+    // On the arc between the two cameras, at their distance, looking as they look between.
+    pose.centre = glm::normalize(mix(a.pose->centre, b.pose->centre)) * ((1.0f - t) * glm::length(a.pose->centre) + t * glm::length(b.pose->centre));
+    pose.ahead = glm::normalize(mix(a.pose->ahead, b.pose->ahead));
+    pose.right = glm::normalize(mix(a.pose->right, b.pose->right) - glm::dot(mix(a.pose->right, b.pose->right), pose.ahead) * pose.ahead);
+    pose.down = glm::cross(pose.ahead, pose.right);
+    out.pose = pose;
+  }
+  return out;
+}
 
 glm::vec3 to_camera(const TurntableCamera& camera, const PhotoView& view, const glm::vec3& point) {
   const Frame f = frame_of(camera, view);

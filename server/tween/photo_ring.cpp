@@ -21,13 +21,14 @@ float degrees_between(const glm::vec3& a, const glm::vec3& b) {
 
 }  // namespace
 
-PhotoRing load_photo_ring(const std::filesystem::path& folder) {
-  std::filesystem::path calibration;
-  if (std::filesystem::is_directory(folder))
+PhotoRing load_photo_ring(const std::filesystem::path& folder, const std::filesystem::path& calibration_file) {
+  std::filesystem::path calibration = calibration_file;
+  if (calibration.empty() && std::filesystem::is_directory(folder))
     for (const auto& entry : std::filesystem::directory_iterator(folder))
       if (entry.path().filename().string().ends_with("_par.txt")) calibration = entry.path();
   if (calibration.empty()) throw Error(folder.string() + ": no *_par.txt calibration file (Middlebury ring layout)");
   std::ifstream in(calibration);
+  if (!in) throw Error(calibration.string() + ": cannot be read");
   int count = 0;
   if (!(in >> count) || count < 3 || count > 10000) throw Error(calibration.string() + ": first line is not an image count (3..10000)");
   PhotoRing ring;

@@ -57,7 +57,9 @@ EpipolarCheck check_epipolar(const RingCamera& from, const RingCamera& to, const
 // Throws inkwire::Error with a one-line reason when there is no calibration file, a line is
 // malformed, intrinsics are not a camera's, a rotation is not a rotation, or a named image is
 // missing.
-PhotoRing load_photo_ring(const std::filesystem::path& folder);
+// `calibration`: the file to read; empty: the folder's own *_par.txt. The images it names are
+// in `folder`.
+PhotoRing load_photo_ring(const std::filesystem::path& folder, const std::filesystem::path& calibration = {});
 
 // Three photos i, j, k in ring order whose neighbours are both at most `max_step_degrees` apart:
 // the middle one can be synthesised from the outer two.

@@ -185,3 +185,34 @@ TEST(PhotoRingTest, ACalibratedFolderIsTurnedInOrderOfAzimuthWhateverOrderItList
     EXPECT_NEAR(step, 10.0f * std::cos(glm::radians(20.0f)), 0.2f) << i;
   }
 }
+
+// The camera a calibration describes, in the turntable's terms (the shape is carved under it and
+// the camera found from the silhouettes is checked against it): the focal length at the photos'
+// first level and the cameras' elevation above the ring's plane. The ring's axis is the normal of
+// the plane the cameras' directions go round in, not the sum of their turns, which a ring covering
+// one side tilts toward that side; up is the side the cameras look down from, whichever way the
+// ring turned.
+TEST(PhotoRingTest, ACalibratedRingsCameraIsItsFocalLengthAndElevationWhereverItsPhotosLie) {
+  for (const bool reversed : {false, true}) {
+    const std::filesystem::path folder = scratch_dir() / (reversed ? "ring-side-reversed" : "ring-side");
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder);
+    std::string lines;
+    for (int i = 0; i < 6; ++i) {  // 0 to 50 degrees round: one side of the object
+      const std::string name = "view" + std::to_string(i) + ".png";
+      lines += calibration_line(name, ring_camera(reversed ? -i : i));
+      save_image(Image(1024, 768, {90, 90, 90, 255}), folder / name, false);
+    }
+    std::ofstream(folder / "ring_par.txt") << 6 << '\n' << lines;
+    const PhotoFolder photos = read_photo_folder(folder, {});
+    ASSERT_TRUE(photos.calibration.has_value());
+    EXPECT_NEAR(photos.calibration->focal_px, 0.5f * (1500.0f + 1510.0f) * 512.0f / 1024.0f, 0.01f) << "at the first level's 512 pixels";
+    EXPECT_NEAR(photos.calibration->elevation_deg, 20.0f, 0.05f) << (reversed ? "turned the other way" : "");
+    for (const glm::vec3& d : photos.directions) EXPECT_NEAR(glm::degrees(std::asin(d.y)), 20.0f, 0.05f);
+    // A calibration in the folder is not read when the reader is told not to: the photos are then
+    // a plain turn in file-name order, as inkwire-tween shape takes a folder without --calibration.
+    const PhotoFolder plain = read_photo_folder(folder, {.folder_calibration = false});
+    EXPECT_FALSE(plain.calibration.has_value());
+    EXPECT_TRUE(plain.even_turn_assumed);
+  }
+}
