@@ -30,7 +30,7 @@
 #include "common/image_metrics.hpp"
 #include "common/video_source.hpp"
 #include "server/face/face_analyzer.hpp"
-#include "server/products/matte.hpp"
+#include "server/products/photo_keying.hpp"
 #include "server/products/photo_shape.hpp"
 #include "server/products/turn_angles.hpp"
 #include "server/tween/landmarks.hpp"
@@ -248,12 +248,11 @@ struct ShapeOptions {
   PhotoLayout layout;
 };
 
-int shape(const ShapeOptions& o) {
+int shape(ShapeOptions o) {
+  o.layout.folder_calibration = false;  // a calibration in the folder is read only when --calibration names it
   PhotoFolder photos = read_photo_folder(o.photos, o.layout);
-  for (size_t i = 0; i < photos.photos.size(); ++i) {
-    const MatteResult r = key_plain_background(photos.photos[i]);
-    if (!r.keyed) throw Error(photos.names[i] + " cannot be keyed (" + r.reason + "): a shape needs every photo's matte");
-  }
+  const KeyedPhotos keyed = key_photos(photos, "auto", [](int, int, const std::string& line) { std::cout << line << "\n"; });
+  if (!keyed.matted) std::cout << "silhouettes cut from the backdrops instead of mattes\n";
   // The turn and a first focal length from the corners tracked round (as add-product finds them).
   float field_of_view = kDefaultFieldOfView;
   if (photos.even_turn_assumed && photos.closed) {
@@ -261,10 +260,24 @@ int shape(const ShapeOptions& o) {
     if (steps.fitted >= 3 && steps.uneven()) set_turn_steps(photos, steps.degrees);
     if (steps.fitted >= 3 && steps.direction_known) field_of_view = std::abs(steps.field_of_view);
   }
-  std::cout << "finding the camera from " << photos.photos.size() << " mattes (" << photos.rows << " row" << (photos.rows > 1 ? "s" : "")
+  std::cout << "finding the camera from " << photos.photos.size() << (keyed.matted ? " mattes (" : " silhouettes (") << photos.rows << " row" << (photos.rows > 1 ? "s" : "")
             << "), first guess: field of view " << field_of_view << " of the longer side\n";
-  const PhotoShape found = shape_from_photos(photos, field_of_view);
+  const std::vector<Silhouette> silhouettes = photo_silhouettes(photos, keyed.matted);
+  PhotoShape found = shape_from_photos(photos, silhouettes, field_of_view);
+  found.cut = !keyed.matted;
   write_shape(found, o.out);
+  // What the hull was carved from, beside it: silhouette-N.png, the photo where its silhouette
+  // is and a quarter of it elsewhere.
+  for (size_t i = 0; i < silhouettes.size(); ++i) {
+    Image picture = photos.photos[i];
+    for (int y = 0; y < picture.height; ++y)
+      for (int x = 0; x < picture.width; ++x) {
+        uint8_t* p = picture.at(x, y);
+        if (!silhouettes[i].at(x, y)) std::transform(p, p + 3, p, [](uint8_t v) { return uint8_t(v / 4); });
+        p[3] = 255;
+      }
+    save_image(picture, std::filesystem::path(o.out) / ("silhouette-" + std::to_string(i + 1) + ".png"), false);
+  }
   std::cout << shape_summary(found) << " (" << found.evaluations << " hulls carved to find the camera); written to " << o.out << "\n";
   return 0;
 }
@@ -297,9 +310,13 @@ int main(int argc, char** argv) {
   restore_cmd->add_option("--sheet", r.sheet, "PNG of the middle of the first gap: input | hold | cross-fade | tween");
   restore_cmd->add_option("--json", r.json_path, "write the figures here");
   ShapeOptions sh;
-  auto* shape_cmd = app.add_subcommand("shape", "find a turntable's camera and the object's hull from its photos' mattes");
-  shape_cmd->add_option("--photos", sh.photos, "a folder of turntable photos against a plain backdrop (as add-product reads them)")->required();
+  auto* shape_cmd = app.add_subcommand("shape", "find a turntable's camera and the object's hull from its photos' silhouettes");
+  shape_cmd->add_option("--photos", sh.photos, "a folder of turntable photos (as add-product reads them): mattes from a plain backdrop, else silhouettes cut from theirs")->required();
   shape_cmd->add_option("--out", sh.out, "folder for hull.ply, depth-N.png and camera.json")->required();
+  shape_cmd->add_option("--calibration", sh.layout.calibration,
+                        "the photos' calibration (Middlebury *_par.txt): their order and azimuths, and the camera the one found is checked "
+                        "against and the hull carved under (a calibration in the folder is otherwise ignored)")
+      ->check(CLI::ExistingFile);
   shape_cmd->add_option("--rows", sh.layout.rows, "rings of photos in the folder, in file-name order")->check(CLI::Range(1, 32));
   shape_cmd->add_option("--elevations", sh.layout.elevations, "first guesses of each row's elevation, degrees")->delimiter(',');
   auto* step = shape_cmd->add_option("--step", sh.layout.step_degrees, "the turn between consecutive photos, degrees");

@@ -12,41 +12,66 @@
 
 #include "common/error.hpp"
 #include "server/products/depth_refinement.hpp"
+#include "server/products/silhouette_cut.hpp"
 
 namespace inkwire {
 
-PhotoShape shape_from_photos(const PhotoFolder& photos, float field_of_view) {
+std::vector<Silhouette> photo_silhouettes(const PhotoFolder& photos, bool matted) {
+  std::vector<Silhouette> out;
+  for (size_t i = 0; i < photos.photos.size(); ++i) {
+    const Image& photo = photos.photos[i];
+    if (!matted) {
+      SilhouetteCut cut = cut_silhouette(photo);
+      if (!cut.cut()) throw Error(photos.names[i] + ": no silhouette could be cut (" + cut.reason + ")");
+      out.push_back(std::move(cut.silhouette));
+      continue;
+    }
+    Silhouette s{.width = photo.width, .height = photo.height, .inside = std::vector<uint8_t>(size_t(photo.width) * size_t(photo.height), 0)};
+    for (int y = 0; y < photo.height; ++y)
+      for (int x = 0; x < photo.width; ++x) s.inside[size_t(y * photo.width + x)] = photo.at(x, y)[3] > 127;
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+PhotoShape shape_from_photos(const PhotoFolder& photos, const std::vector<Silhouette>& silhouettes, float field_of_view) {
   if (photos.photos.empty()) throw Error("no photos to find a shape in");
+  if (silhouettes.size() != photos.photos.size()) throw Error("a shape needs one silhouette a photo");
   const int width = photos.photos[0].width, height = photos.photos[0].height, columns = photos.columns();
-  std::vector<Silhouette> silhouettes;
   std::vector<PhotoView> views;
   std::vector<float> elevations(size_t(photos.rows), 0.0f);
   float left = float(width), right = 0;
   for (size_t i = 0; i < photos.photos.size(); ++i) {
-    const Image& photo = photos.photos[i];
-    Silhouette s{.width = width, .height = height, .inside = std::vector<uint8_t>(size_t(width) * size_t(height), 0)};
-    size_t inside = 0;
+    const Silhouette& s = silhouettes[i];
+    if (s.width != width || s.height != height) throw Error(photos.names[i] + ": its silhouette is not the photo's size");
     float low = float(width), high = 0;
     for (int y = 0; y < height; ++y)
       for (int x = 0; x < width; ++x)
-        if (photo.at(x, y)[3] > 127) {
-          s.inside[size_t(y * width + x)] = 1, ++inside;
-          low = std::min(low, float(x)), high = std::max(high, float(x + 1));
-        }
-    if (inside == 0) throw Error(photos.names[i] + ": its matte is empty, so it says nothing about the object's shape");
+        if (s.inside[size_t(y * width + x)]) low = std::min(low, float(x)), high = std::max(high, float(x + 1));
+    if (high <= low) throw Error(photos.names[i] + ": its matte is empty, so it says nothing about the object's shape");
     left = std::min(left, low), right = std::max(right, high);
-    silhouettes.push_back(std::move(s));
     const glm::vec3& d = photos.directions[i];
     const int row = int(i) / columns;
     views.push_back({.azimuth_deg = glm::degrees(std::atan2(d.x, d.z)), .row = row});
-    elevations[size_t(row)] = glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f)));
+    // A calibration's elevation is the answer the search is checked against, not its guess.
+    if (!photos.calibration) elevations[size_t(row)] = glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f)));
   }
   // The first guess: the axis midway between the outline's furthest reaches round the turn.
   const TurntableCamera start{.width = width, .height = height, .focal_px = float(std::max(width, height)) / field_of_view,
                               .elevations_deg = elevations, .axis_x = 0.5f * (left + right)};
   const CameraFit fit = camera_from_mattes(start, views, silhouettes);
-  PhotoShape shape{.camera = fit.camera, .views = fit.views, .hull = carve_hull(fit.camera, fit.views, silhouettes, kHullCells),
-                   .evaluations = fit.evaluations};
+  PhotoShape shape{.camera = fit.camera, .views = fit.views, .evaluations = fit.evaluations};
+  if (photos.calibration) {
+    // Carved where the calibration puts each camera: a lab's gantry does not turn about one axis
+    // exactly (templeRing's cameras point up to 11 pixels either side of one axis column).
+    shape.found = fit.camera;
+    shape.camera.focal_px = photos.calibration->focal_px;
+    shape.camera.elevations_deg = {photos.calibration->elevation_deg};
+    shape.camera.axis_x = 0.5f * float(width);
+    shape.views = views;
+    for (size_t i = 0; i < views.size(); ++i) shape.views[i].pose = photos.calibration->poses.at(i);
+  }
+  shape.hull = carve_hull(shape.camera, shape.views, silhouettes, kHullCells);
   if (shape.hull.count() == 0)
     throw Error("the mattes carve nothing under any camera tried: some do not outline the object (parts the colour of the backdrop "
                 "keyed away?) or the photos are not of one object turning about one axis");
@@ -60,18 +85,34 @@ PhotoShape shape_from_photos(const PhotoFolder& photos, float field_of_view) {
   return shape;
 }
 
+ShapeReport report_of(const PhotoShape& shape) {
+  return {.camera = shape.camera, .found = shape.found, .iou_worst = *std::min_element(shape.iou.begin(), shape.iou.end()), .cut = shape.cut};
+}
+
 std::string shape_summary(const PhotoShape& shape) {
   const auto [worst, best] = std::minmax_element(shape.iou.begin(), shape.iou.end());
-  char line[200];
-  std::snprintf(line, sizeof line, "shape from the mattes: focal length %.0f px at %d x %d, elevation", shape.camera.focal_px, shape.camera.width,
-                shape.camera.height);
-  std::string out = line;
-  for (const float e : shape.camera.elevations_deg) {
-    std::snprintf(line, sizeof line, " %.1f", e);
-    out += line;
+  char line[240];
+  const auto elevations = [](const TurntableCamera& camera) {
+    std::string out;
+    char number[32];
+    for (const float e : camera.elevations_deg) {
+      std::snprintf(number, sizeof number, "%s%.1f", out.empty() ? "" : " / ", e);
+      out += number;
+    }
+    return out;
+  };
+  std::string out = std::string("shape from the ") + (shape.cut ? "silhouettes cut from the backdrops" : "mattes") + ": ";
+  const TurntableCamera& c = shape.camera;
+  if (shape.found) {
+    std::snprintf(line, sizeof line, "calibrated focal length %.0f px at %d x %d (the silhouettes say %.0f, %+.1f%%), elevation ", c.focal_px, c.width,
+                  c.height, shape.found->focal_px, 100.0 * (shape.found->focal_px / c.focal_px - 1.0));
+    out += std::string(line) + elevations(c) + " degrees (they say " + elevations(*shape.found) + "), ";
+  } else {
+    std::snprintf(line, sizeof line, "focal length %.0f px at %d x %d, elevation ", c.focal_px, c.width, c.height);
+    out += std::string(line) + elevations(c) + " degrees, ";
   }
-  std::snprintf(line, sizeof line, " degrees, axis at column %.1f; a hull of %zu cells, IoU against the mattes %.3f to %.3f", shape.camera.axis_x,
-                shape.hull.count(), *worst, *best);
+  std::snprintf(line, sizeof line, "axis at column %.1f; a hull of %zu cells, IoU against the %s %.3f to %.3f", c.axis_x, shape.hull.count(),
+                shape.cut ? "silhouettes" : "mattes", *worst, *best);
   return out + line;
 }
 
@@ -89,7 +130,7 @@ void write_shape(const PhotoShape& shape, const std::filesystem::path& folder) {
   nlohmann::json angles = nlohmann::json::array(), iou = nlohmann::json::array();
   for (const PhotoView& v : shape.views) angles.push_back(v.azimuth_deg);
   for (const double i : shape.iou) iou.push_back(i);
-  const nlohmann::json camera = {{"width", shape.camera.width},
+  nlohmann::json camera = {{"width", shape.camera.width},
                                  {"height", shape.camera.height},
                                  {"focal_px", shape.camera.focal_px},
                                  {"elevations_deg", shape.camera.elevations_deg},
@@ -97,18 +138,38 @@ void write_shape(const PhotoShape& shape, const std::filesystem::path& folder) {
                                  {"angles_deg", angles},
                                  {"hull_iou", iou},
                                  {"depth_scale", kDepthScale}};
+  // With a calibration, the camera above is the calibration's (the hull and depth maps are in it)
+  // and what the silhouettes gave is beside it.
+  if (shape.found)
+    camera["found_from_silhouettes"] = {{"focal_px", shape.found->focal_px},
+                                        {"elevations_deg", shape.found->elevations_deg},
+                                        {"axis_px", {shape.found->axis_x, 0.5 * shape.found->height}}};
   std::ofstream out(folder / "camera.json");
   out << camera.dump(2) << "\n";
   if (!out) throw Error("cannot write " + (folder / "camera.json").string());
 }
 
 std::optional<PhotoShape> shape_for_product(const PhotoFolder& photos, bool matted, const PairProgress& progress) {
-  if (!matted || !photos.closed) return std::nullopt;
   const auto say = [&](const std::string& line) {
     if (progress) progress(0, int(photos.cells.size()), line);
   };
+  // Silhouettes from one side carve a wedge, not the object: the photos must go round it. (A ring
+  // need not close as a product's pairs do: the hull only asks that no side goes unseen.)
+  std::vector<float> azimuths;
+  for (int c = 0; c < photos.columns(); ++c) {
+    const glm::vec3& d = photos.directions[size_t(c)];
+    azimuths.push_back(glm::degrees(std::atan2(d.x, d.z)));
+  }
+  std::sort(azimuths.begin(), azimuths.end());
+  float widest = 360.0f + azimuths.front() - azimuths.back();
+  for (size_t i = 1; i < azimuths.size(); ++i) widest = std::max(widest, azimuths[i] - azimuths[i - 1]);
+  if (widest > kWidestGap) {
+    say("no shape: the photos leave " + std::to_string(int(std::lround(widest))) + " degrees of the turn unseen (control points from the matches alone)");
+    return std::nullopt;
+  }
   try {
-    PhotoShape shape = shape_from_photos(photos, kDefaultFieldOfView);
+    PhotoShape shape = shape_from_photos(photos, photo_silhouettes(photos, matted), kDefaultFieldOfView);
+    shape.cut = !matted;
     say(shape_summary(shape));
     return shape;
   } catch (const Error& e) {

@@ -33,6 +33,7 @@ Product product_from_photo_folder(PhotoFolder photos, const PhotoProductOptions&
 
   Product product;
   product.matted = keyed.matted;
+  if (shape) product.shape = report_of(*shape);
   product.data.width = photos.photos[0].width;
   product.data.height = photos.photos[0].height;
   product.data.directions = photos.directions;

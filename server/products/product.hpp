@@ -5,6 +5,7 @@
 // control points). A shop owner makes one with `inkwire-server add-product`.
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "common/mesh_import.hpp"
 #include "common/tween/tween_data.hpp"
 #include "server/products/photo_folder.hpp"
+#include "server/products/photo_shape.hpp"
 
 namespace inkwire {
 
@@ -25,13 +27,14 @@ struct Product {
   // Read when stored, one photo at a time: a product's photos at 2048 pixels fill gigabytes.
   std::vector<glm::ivec2> levels;
   std::function<Image(size_t index, const Image& first, glm::ivec2 size)> finer;
+  std::optional<ShapeReport> shape;  // what the shape stage recovered, when it found a shape
 };
 
 struct PhotoProductOptions {
   PhotoLayout layout;      // rows, turn, elevations, size
   std::string matte = "auto";  // auto: key a plain backdrop when there is one; key: refuse if not; none
-  // auto: with mattes, the turntable's camera and the object's shape found from them
-  // (photo_shape.hpp), and a pair's control points taken from the shape where the photos agree
+  // auto: the turntable's camera and the object's shape found from the photos' silhouettes
+  // (photo_shape.hpp: the mattes, or cut from backdrops that are not plain), and a pair's control points taken from the shape where the photos agree
   // better under it than under the matches (control_points.hpp); off: matched points only
   std::string shape = "auto";
   // Per pair at most, outline included (12 bytes each; 160 bought 0.1 dB for 20% more); a pair

@@ -192,6 +192,8 @@ HeldOut hold_out(const PhotoFolder& all) {
   h.kept.closed = all.closed && columns % 2 == 0;
   h.kept.folder = all.folder;
   h.kept.finest = all.finest;
+  h.kept.calibration = all.calibration;
+  if (h.kept.calibration) h.kept.calibration->poses.clear();  // the kept photos' own, below
   for (int r = 0; r < all.rows; ++r)
     for (int c = 0; c < columns; ++c) {
       const size_t i = size_t(r * columns + c);
@@ -199,6 +201,7 @@ HeldOut hold_out(const PhotoFolder& all) {
         h.kept.names.push_back(all.names[i]);
         h.kept.photos.push_back(all.photos[i]);
         h.kept.directions.push_back(all.directions[i]);
+        if (h.kept.calibration) h.kept.calibration->poses.push_back(all.calibration->poses[i]);
       } else if (r <= last_row && (h.kept.closed || c < 2 * (kept_columns - 1))) {
         h.truths.push_back(i);
       }
@@ -236,15 +239,13 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
   const Product product = product_from_photo_folder(kept, PhotoProductOptions{.shape = "off"});
   const double seconds_to_make = std::chrono::duration<double>(std::chrono::steady_clock::now() - made).count();
   std::optional<Product> shaped;
-  double seconds_with_shape = 0;
-  if (product.matted) {
-    const auto started = std::chrono::steady_clock::now();
-    shaped = product_from_photo_folder(kept, PhotoProductOptions{.shape = "auto"},
-                                       [&](int done, int, const std::string& line) {
-                                         if (done == 0) std::fprintf(stderr, "inkwire-bench: %s: %s\n", name.c_str(), line.c_str());
-                                       });
-    seconds_with_shape = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  }
+  const auto started = std::chrono::steady_clock::now();
+  shaped = product_from_photo_folder(kept, PhotoProductOptions{.shape = "auto"},
+                                     [&](int done, int, const std::string& line) {
+                                       if (done == 0) std::fprintf(stderr, "inkwire-bench: %s: %s\n", name.c_str(), line.c_str());
+                                     });
+  const double seconds_with_shape = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  if (!shaped->shape) shaped.reset();  // no shape found: its product is today's
   const fs::path data = fs::temp_directory_path() / ("inkwire-bench-photos-" + std::to_string(::getpid()));
   fs::remove_all(data);
   protocol::Snapshot state, shaped_state;
@@ -330,6 +331,13 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
     rows.push_back(row("tween-shape" + suffix, name, n, tween_shape, false));
     rows.back().counters["seconds_to_make"] = seconds_with_shape;
     rows.back().counters["bytes_tween"] = double(bytes_of(shaped_state, protocol::AssetKind::Tween));
+    const ShapeReport& found = *shaped->shape;
+    rows.back().counters["hull_iou_min"] = found.iou_worst;
+    rows.back().counters["silhouettes_cut"] = found.cut;
+    if (found.found) {  // a calibration came with the photos: the camera the silhouettes gave against it
+      rows.back().counters["focal_error"] = double(found.found->focal_px / found.camera.focal_px) - 1.0;
+      rows.back().counters["elevation_error"] = double(found.found->elevations_deg[0] - found.camera.elevations_deg[0]);
+    }
   }
   // Zoom (SPEC T18): each finer level's size and bytes, fetched only zoomed in (a few photos of
   // it at a time), so not in the share above.
@@ -349,7 +357,7 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
                "tween with the shape %s\n",
                name.c_str(), spin.psnr.size(), Scores::mean(spin.psnr), Scores::mean(fade.psnr), Scores::mean(tween.psnr),
                Scores::mean(flow.psnr), rows[2].counters["bytes_per_pair"],
-               shaped ? (std::to_string(Scores::mean(tween_shape.psnr)) + " dB").c_str() : "none (no mattes)");
+               shaped ? (std::to_string(Scores::mean(tween_shape.psnr)) + " dB").c_str() : "none (no shape found)");
   fs::remove_all(data);
   return rows;
 }

@@ -360,7 +360,7 @@ TEST(RealPhotosGLTest, TheTrucksMattesGiveBackItsCameraAndAHullThatExplainsEvery
     photograph(truck, azimuths, kSize, "shape/row" + std::to_string(r + 1), kBlueBackdrop, false, 0, elevations[r]);
   PhotoFolder photos = read_photo_folder(test::scratch_dir() / "shape", {.elevations = {0, 15}});
   for (Image& photo : photos.photos) ASSERT_TRUE(key_plain_background(photo).keyed);
-  const PhotoShape shape = shape_from_photos(photos, 0.7f);
+  const PhotoShape shape = shape_from_photos(photos, photo_silhouettes(photos, true), 0.7f);
   const float focal = 0.5f * kSize / std::tan(glm::radians(22.5f));
   std::printf("recovered: focal %.1f px (truth %.1f), elevations %.2f / %.2f degrees (10 / 30), axis %.2f px (%d); %d hulls carved\n",
               shape.camera.focal_px, focal, shape.camera.elevations_deg[0], shape.camera.elevations_deg[1], shape.camera.axis_x, kSize / 2,
@@ -395,7 +395,7 @@ TEST(RealPhotosGLTest, ARingWithAPhotoMissingStillGivesItsCameraAndAnUnkeyablePh
   std::printf("turn angles with the gap: the worst %.2f degrees off\n", worst_angle);
   EXPECT_LT(worst_angle, 3.0);
 
-  const PhotoShape shape = shape_from_photos(photos, 0.7f);
+  const PhotoShape shape = shape_from_photos(photos, photo_silhouettes(photos, true), 0.7f);
   const float focal = 0.5f * kSize / std::tan(glm::radians(22.5f));
   const double worst_iou = *std::min_element(shape.iou.begin(), shape.iou.end());
   std::printf("with a photo missing: focal %.1f px (truth %.1f), elevation %.2f degrees (10), hull IoU the worst %.4f\n", shape.camera.focal_px,
