@@ -69,6 +69,18 @@ cv::Mat disagreement(const cv::Mat& from, const cv::Mat& to, const cv::Mat& flow
 size_t merge(const cv::Mat& from, const cv::Mat& to, const cv::Mat& matched, const cv::Mat& matched_ok, const cv::Mat& shaped,
              const cv::Mat& shaped_ok, cv::Mat& flow, cv::Mat& reliable, size_t& kept) {
   const cv::Mat matched_error = disagreement(from, to, matched), shaped_error = disagreement(from, to, shaped);
+  // Where no verified match speaks, the shape is taken only where it explains the pictures as well
+  // as a verified match typically does: a hull bulging over a gap (between a temple's columns) puts
+  // a surface where there is none, which no match contradicts.
+  std::vector<float> verified;
+  for (int y = 0; y < matched.rows; ++y)
+    for (int x = 0; x < matched.cols; ++x)
+      if (matched_ok.at<uint8_t>(y, x)) verified.push_back(matched_error.at<float>(y, x));
+  float typical = 0;
+  if (!verified.empty()) {
+    std::nth_element(verified.begin(), verified.begin() + long(verified.size() / 2), verified.end());
+    typical = verified[verified.size() / 2];
+  }
   flow = matched.clone();
   reliable = matched_ok.clone();
   size_t taken = 0;
@@ -76,7 +88,8 @@ size_t merge(const cv::Mat& from, const cv::Mat& to, const cv::Mat& matched, con
   for (int y = 0; y < flow.rows; ++y)
     for (int x = 0; x < flow.cols; ++x) {
       const bool m = matched_ok.at<uint8_t>(y, x), s = shaped_ok.at<uint8_t>(y, x);
-      if (s && (!m || shaped_error.at<float>(y, x) < matched_error.at<float>(y, x))) {
+      const float shape_error = shaped_error.at<float>(y, x);
+      if (s && (m ? shape_error < matched_error.at<float>(y, x) : verified.empty() || shape_error <= typical)) {
         flow.at<cv::Vec2f>(y, x) = shaped.at<cv::Vec2f>(y, x);
         reliable.at<uint8_t>(y, x) = 255;
         ++taken;
@@ -109,8 +122,7 @@ MergedMatches merged_matches(const DenseMatches& matched, const DenseMatches& sh
 
 ShapeTracks shape_tracks(const PhotoShape& shape, size_t a, size_t b, int count) {
   const TurntableCamera& c = shape.camera;
-  const float turn = std::remainder(shape.views[b].azimuth_deg - shape.views[a].azimuth_deg, 360.0f);
-  const PhotoView halfway{.azimuth_deg = shape.views[a].azimuth_deg + 0.5f * turn, .row = shape.views[a].row};
+  const PhotoView halfway = view_between(shape.views[a], shape.views[b], 0.5f);
   const auto near_background = [&](size_t photo, glm::vec2 p) {
     for (int dy = -2; dy <= 2; ++dy)
       for (int dx = -2; dx <= 2; ++dx)
