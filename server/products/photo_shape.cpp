@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <numeric>
 
 #include <glm/trigonometric.hpp>
 #include <nlohmann/json.hpp>
@@ -170,6 +171,14 @@ std::optional<PhotoShape> shape_for_product(const PhotoFolder& photos, bool matt
   try {
     PhotoShape shape = shape_from_photos(photos, photo_silhouettes(photos, matted), kDefaultFieldOfView);
     shape.cut = !matted;
+    const double mean_iou = std::accumulate(shape.iou.begin(), shape.iou.end(), 0.0) / double(shape.iou.size());
+    if (mean_iou < kLeastMeanIoU) {
+      char line[160];
+      std::snprintf(line, sizeof line, "no shape: the hull explains the %s poorly (IoU %.2f on average): some miss parts of the object",
+                    matted ? "mattes" : "silhouettes", mean_iou);
+      say(std::string(line) + " (control points from the matches alone)");
+      return std::nullopt;
+    }
     say(shape_summary(shape));
     return shape;
   } catch (const Error& e) {

@@ -18,6 +18,7 @@ namespace inkwire {
 
 inline constexpr int kHullCells = 128;              // the hull written out: cells along its longest side
 inline constexpr float kWidestGap = 60;             // degrees of the turn between neighbouring photos, at most, for a shape
+inline constexpr double kLeastMeanIoU = 0.7;        // a hull explaining its silhouettes less, on average, is not the object's
 inline constexpr float kDefaultFieldOfView = 0.7f;  // the photos' longer side over the focal length, when nothing says
 
 struct PhotoShape {
@@ -56,8 +57,9 @@ PhotoShape shape_from_photos(const PhotoFolder& photos, const std::vector<Silhou
 std::string shape_summary(const PhotoShape& shape);
 
 // The pipeline's shape stage, after the exposure (exposure.hpp): with silhouettes of a full turn
-// (the mattes when `matted`, else cut from the backdrops), the shape, said in a line; without,
-// nothing, said why (the control points then come from the matches alone).
+// (the mattes when `matted`, else cut from the backdrops), the shape, said in a line; without, or
+// with a hull that explains them poorly (kLeastMeanIoU: mattes that lost part of the object carve
+// it away everywhere), nothing, said why (the control points then come from the matches alone).
 std::optional<PhotoShape> shape_for_product(const PhotoFolder& photos, bool matted, const PairProgress& progress);
 
 // Writes `hull.ply`, `depth-N.png` (16-bit, depth / depth_scale; N from 1 in the photos' order)
