@@ -88,7 +88,7 @@ CellTracks control_points(const PhotoFolder& photos, bool matted, const PhotoSha
     std::vector<Track> points;
     size_t on_outline = 0;
     if (points_from_shape) {
-      ShapeTracks exact = shape_tracks(*shape, cell[0], cell[1], max_points / 2);
+      ShapeTracks exact = shape_tracks(*shape, cell[0], cell[1], a, photos.photos[cell[1]], max_points / 2);
       points = std::move(exact.tracks);
       on_outline = exact.outline;
     } else {

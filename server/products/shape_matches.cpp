@@ -120,7 +120,7 @@ MergedMatches merged_matches(const DenseMatches& matched, const DenseMatches& sh
   return out;
 }
 
-ShapeTracks shape_tracks(const PhotoShape& shape, size_t a, size_t b, int count) {
+ShapeTracks shape_tracks(const PhotoShape& shape, size_t a, size_t b, const Image& photo_a, const Image& photo_b, int count) {
   const TurntableCamera& c = shape.camera;
   const PhotoView halfway = view_between(shape.views[a], shape.views[b], 0.5f);
   const auto near_background = [&](size_t photo, glm::vec2 p) {
@@ -129,9 +129,18 @@ ShapeTracks shape_tracks(const PhotoShape& shape, size_t a, size_t b, int count)
         if (depth_at(shape, photo, p + glm::vec2(dx, dy)) <= 0) return true;
     return false;
   };
+  // How much detail each photo has at a pixel: the corner strength (the smaller eigenvalue of the
+  // gradients' structure over a few pixels), which an edge alone does not have and texture does.
+  const auto detail_of = [](const Image& photo) {
+    cv::Mat strength;
+    cv::cornerMinEigenVal(grey_of(photo), strength, 5, 3);
+    return strength;
+  };
+  const cv::Mat detail[2] = {detail_of(photo_a), detail_of(photo_b)};
   std::vector<Track> candidates;
   std::vector<glm::vec2> layout;  // where each sits in the warp: halfway where both see it, else where it is seen
   std::vector<bool> on_outline;
+  std::vector<float> detail_at;   // of each candidate, in the photo its grid point is from
   const int step = std::max(2, std::min(c.width, c.height) / 96);
   for (const auto& [from, to] : {std::pair{a, b}, std::pair{b, a}})
     for (int y = step / 2; y < c.height; y += step)
@@ -150,7 +159,25 @@ ShapeTracks shape_tracks(const PhotoShape& shape, size_t a, size_t b, int count)
         candidates.push_back({.source = in_a, .targets = {in_b}, .bulge = middle - 0.5f * (in_a + in_b)});
         layout.push_back(s->seen ? middle : pixel);
         on_outline.push_back(outline);
+        detail_at.push_back(detail[from == a ? 0 : 1].at<float>(y, x));
       }
+  // Inside the outline, points go where the photos have detail (SPEC T26): a point on a plain
+  // panel moves nothing a viewer sees, one on a window's corner or a logo keeps it single. The
+  // more detailed half of the inner candidates is spread over; the outline's are all kept.
+  std::vector<float> inner;
+  for (size_t i = 0; i < candidates.size(); ++i)
+    if (!on_outline[i]) inner.push_back(detail_at[i]);
+  if (!inner.empty()) {
+    std::nth_element(inner.begin(), inner.begin() + long(inner.size() / 2), inner.end());
+    const float plain = inner[inner.size() / 2];
+    size_t kept = 0;
+    for (size_t i = 0; i < candidates.size(); ++i)
+      if (on_outline[i] || detail_at[i] >= plain) {
+        candidates[kept] = candidates[i], layout[kept] = layout[i], on_outline[kept] = on_outline[i];
+        ++kept;
+      }
+    candidates.resize(kept), layout.resize(kept), on_outline.resize(kept);
+  }
   ShapeTracks out;
   for (const size_t i : spread_points(layout, on_outline, size_t(count) * 3 / 5, size_t(count))) {
     if (out.outline == out.tracks.size() && on_outline[i]) ++out.outline;  // the outline's, first

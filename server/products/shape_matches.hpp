@@ -29,13 +29,14 @@ MergedMatches merged_matches(const DenseMatches& matched, const DenseMatches& sh
 
 // A pair's control points from the shape alone, made as a mesh product's exact points are
 // (exact_cell): points of the surface on a grid over both photos, each seen by both (at its place
-// in each, and in the middle where the halfway view sees it) or, seen by one, on an outline; up to
-// `count`, three fifths from the outline first, spread as common/tween/point_spread.hpp spreads.
+// in each, and in the middle where the halfway view sees it) or, seen by one, on an outline; inside
+// the outline, only where the photos (`photo_a`, `photo_b`) have detail; up to `count`, three
+// fifths from the outline first, spread as common/tween/point_spread.hpp spreads.
 struct ShapeTracks {
   std::vector<Track> tracks;
   size_t outline = 0;  // the first this many are the outline's
 };
-ShapeTracks shape_tracks(const PhotoShape& shape, size_t a, size_t b, int count);
+ShapeTracks shape_tracks(const PhotoShape& shape, size_t a, size_t b, const Image& photo_a, const Image& photo_b, int count);
 
 // The share of a pair's pixels whose motion the shape explains better than the matches
 // (merged_matches' from_shape) for the pair's points to come from the shape: on the rendered
