@@ -24,7 +24,7 @@
 #include <glm/vec3.hpp>
 
 #include "common/image.hpp"
-#include "server/products/turntable_camera.hpp"
+#include "server/products/calibrated_ring.hpp"
 
 namespace inkwire {
 
@@ -55,15 +55,6 @@ using PairProgress = std::function<void(int done, int total, const std::string& 
 // The sizes of the finer levels above `first`, coarsest first, the last `finest`: doubling, and a
 // level within 1.25 times of the next left out (it would add bytes and little detail).
 std::vector<glm::ivec2> zoom_levels(glm::ivec2 first, glm::ivec2 finest);
-
-// What a calibration file says of a ring's camera in the turntable's terms (turntable_camera.hpp),
-// for the photos at their first level: to carve the shape under, and to check the camera the
-// mattes give against.
-struct CalibratedCamera {
-  float focal_px = 0;            // at the photos' first level
-  float elevation_deg = 0;       // the cameras' mean tilt toward the object above the ring's plane
-  std::vector<ViewPose> poses;   // per photo, in the folder's order: with the axis column at the picture's middle
-};
 
 struct PhotoFolder {
   std::filesystem::path folder;

@@ -201,12 +201,12 @@ TEST(PhotoRingTest, ACalibratedRingsCameraIsItsFocalLengthAndElevationWhereverIt
     for (int i = 0; i < 6; ++i) {  // 0 to 50 degrees round: one side of the object
       const std::string name = "view" + std::to_string(i) + ".png";
       lines += calibration_line(name, ring_camera(reversed ? -i : i));
-      save_image(Image(1024, 768, {90, 90, 90, 255}), folder / name, false);
+      save_image(Image(600, 500, {90, 90, 90, 255}), folder / name, false);  // the principal point (300, 250) in the middle
     }
     std::ofstream(folder / "ring_par.txt") << 6 << '\n' << lines;
     const PhotoFolder photos = read_photo_folder(folder, {});
     ASSERT_TRUE(photos.calibration.has_value());
-    EXPECT_NEAR(photos.calibration->focal_px, 0.5f * (1500.0f + 1510.0f) * 512.0f / 1024.0f, 0.01f) << "at the first level's 512 pixels";
+    EXPECT_NEAR(photos.calibration->focal_px, 0.5f * (1500.0f + 1510.0f) * 512.0f / 600.0f, 0.01f) << "at the first level's 512 pixels";
     EXPECT_NEAR(photos.calibration->elevation_deg, 20.0f, 0.05f) << (reversed ? "turned the other way" : "");
     for (const glm::vec3& d : photos.directions) EXPECT_NEAR(glm::degrees(std::asin(d.y)), 20.0f, 0.05f);
     // A calibration in the folder is not read when the reader is told not to: the photos are then

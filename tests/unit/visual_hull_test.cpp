@@ -172,7 +172,7 @@ TEST(VisualHullTest, ASilhouetteIsCutFromABackdropThatIsNotPlainWithWhatIsSeenTh
 // every camera calibrated. Its backdrop cannot be keyed, so its silhouettes are cut. The camera
 // is searched from the same guess as any shop's photos (a 35-degree lens, level) and checked
 // against the calibration's: the elevation within 2 degrees (measured 2026-11-28: 7.9 against
-// 8.0). The focal length is printed, not held: the temple fills a 24-degree lens from 3.5 times
+// 7.8). The focal length is printed, not held: the temple fills a 24-degree lens from 3.5 times
 // its size away, where perspective changes a silhouette by a pixel or two, and the search's answer
 // moved from +16% to +61% with small changes to the cut. The hull carved where the calibration puts
 // each camera explains every silhouette (IoU >= 0.9; measured 0.929 at the worst).
@@ -186,6 +186,8 @@ TEST(VisualHullTest, TheTempleRingsCameraFromItsSilhouettesAgainstItsCalibration
   std::printf("%s\n", shape_summary(shape).c_str());
   ASSERT_TRUE(shape.found.has_value());
   EXPECT_NEAR(shape.found->elevations_deg[0], photos.calibration->elevation_deg, 2.0);
-  EXPECT_NEAR(photos.calibration->elevation_deg, 8.0, 0.1) << "the ring's own elevation, from the plane its cameras go round in";
+  // The calibration's elevation in the turntable's terms: the tilt of the ray through the picture's
+  // middle row (the cameras' optical axes tilt 8.0 degrees; their principal point lies off the middle).
+  EXPECT_NEAR(photos.calibration->elevation_deg, 7.8, 0.1) << "from the plane the ring's cameras go round in";
   EXPECT_GE(*std::min_element(shape.iou.begin(), shape.iou.end()), 0.9);
 }
