@@ -49,7 +49,7 @@ PhotoShape shape_from_photos(const PhotoFolder& photos, const std::vector<Silhou
     for (int y = 0; y < height; ++y)
       for (int x = 0; x < width; ++x)
         if (s.inside[size_t(y * width + x)]) low = std::min(low, float(x)), high = std::max(high, float(x + 1));
-    if (high <= low) throw Error(photos.names[i] + ": its matte is empty, so it says nothing about the object's shape");
+    if (high <= low) throw Error(photos.names[i] + ": its silhouette is empty, so it says nothing about the object's shape");
     left = std::min(left, low), right = std::max(right, high);
     const glm::vec3& d = photos.directions[i];
     const int row = int(i) / columns;
@@ -74,8 +74,8 @@ PhotoShape shape_from_photos(const PhotoFolder& photos, const std::vector<Silhou
   }
   shape.hull = carve_hull(shape.camera, shape.views, silhouettes, kHullCells);
   if (shape.hull.count() == 0)
-    throw Error("the mattes carve nothing under any camera tried: some do not outline the object (parts the colour of the backdrop "
-                "keyed away?) or the photos are not of one object turning about one axis");
+    throw Error("the silhouettes carve nothing under any camera tried: some do not outline the object (parts the colour of the "
+                "backdrop keyed away?) or the photos are not of one object turning about one axis");
   for (size_t v = 0; v < views.size(); ++v) {
     shape.depth.emplace_back();
     shape.iou.push_back(silhouette_iou(hull_silhouette(shape.hull, shape.camera, shape.views[v], &shape.depth.back()), silhouettes[v]));
@@ -132,13 +132,13 @@ void write_shape(const PhotoShape& shape, const std::filesystem::path& folder) {
   for (const PhotoView& v : shape.views) angles.push_back(v.azimuth_deg);
   for (const double i : shape.iou) iou.push_back(i);
   nlohmann::json camera = {{"width", shape.camera.width},
-                                 {"height", shape.camera.height},
-                                 {"focal_px", shape.camera.focal_px},
-                                 {"elevations_deg", shape.camera.elevations_deg},
-                                 {"axis_px", {shape.camera.axis_x, 0.5 * shape.camera.height}},
-                                 {"angles_deg", angles},
-                                 {"hull_iou", iou},
-                                 {"depth_scale", kDepthScale}};
+                           {"height", shape.camera.height},
+                           {"focal_px", shape.camera.focal_px},
+                           {"elevations_deg", shape.camera.elevations_deg},
+                           {"axis_px", {shape.camera.axis_x, 0.5 * shape.camera.height}},
+                           {"angles_deg", angles},
+                           {"hull_iou", iou},
+                           {"depth_scale", kDepthScale}};
   // With a calibration, the camera above is the calibration's (the hull and depth maps are in it)
   // and what the silhouettes gave is beside it.
   if (shape.found)
