@@ -10,7 +10,7 @@ cd "$here"
 seconds=${1:-600}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_frames fuzz_message fuzz_tween fuzz_landmarks fuzz_http fuzz_websocket fuzz_config fuzz_broker fuzz_voice fuzz_glb fuzz_video)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_frames fuzz_message fuzz_tween fuzz_landmarks fuzz_http fuzz_websocket fuzz_config fuzz_broker fuzz_voice fuzz_glb fuzz_video fuzz_calibration)
 
 if [ "${FUZZ_TABLE_ONLY:-0}" != 1 ]; then
 for p in clang libclang-rt-14-dev; do
@@ -34,6 +34,17 @@ for t in "${targets[@]}"; do mkdir -p "fuzz-corpus/$t"; done
 if [ -d fuzz-corpus/fuzz_config ]; then
   cp deploy/example/instance-a.json deploy/example/instance-b.json fuzz-corpus/fuzz_config/
   printf '{"tls": {"certificate": "c.pem", "key": "k.pem"}, "max_connections": 10, "sessions": [{"name": "t", "kind": "turntable", "product": {"photos": "p", "step": 15}}, {"name": "c", "kind": "conference", "face": {"source": "camera:0"}}]}' > fuzz-corpus/fuzz_config/keys.json
+fi
+
+# A calibration of four cameras round an object, 10 degrees apart (a lab's *_par.txt).
+if [ -d fuzz-corpus/fuzz_calibration ]; then
+  {
+    echo 4
+    for i in 0 1 2 3; do
+      awk -v i="$i" 'BEGIN { a = i * 10 * 3.14159265 / 180; c = cos(a); s = sin(a);
+        printf "view%d.png 1520 0 302 0 1525 247 0 0 1 %f 0 %f 0 1 0 %f 0 %f 0 0 0.6\n", i, c, -s, s, c }'
+    done
+  } > fuzz-corpus/fuzz_calibration/ring_par.txt
 fi
 
 # Changes and a session definition as the broker holds them, around the golden protocol frames.
