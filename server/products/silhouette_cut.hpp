@@ -3,8 +3,9 @@
 // lit floor cloth under the object (templeRing), a gradient, a studio's sweep. The plain keyer
 // (matte.hpp) refuses such photos, rightly, for what customers see: its matte lays the object on
 // white. The shape needs less: which pixels are the object. Cut by GrabCut (OpenCV's graph cut
-// over colour models of the two sides), started from the photo's border as backdrop and all the
-// rest as likely object; used for the hull only, never shown.
+// over colour models of the two sides), started from the photo's border as backdrop, what is near
+// one of the border's colours as likely backdrop and the rest as likely object; used for the hull
+// only, never shown.
 #include <string>
 
 #include "common/image.hpp"
