@@ -262,18 +262,17 @@ int shape(ShapeOptions o) {
   }
   std::cout << "finding the camera from " << photos.photos.size() << (keyed.matted ? " mattes (" : " silhouettes (") << photos.rows << " row" << (photos.rows > 1 ? "s" : "")
             << "), first guess: field of view " << field_of_view << " of the longer side\n";
-  const std::vector<Silhouette> silhouettes = photo_silhouettes(photos, keyed.matted);
-  PhotoShape found = shape_from_photos(photos, silhouettes, field_of_view);
-  found.cut = !keyed.matted;
+  const PhotoSilhouettes silhouettes = photo_silhouettes(photos, keyed.matted);
+  const PhotoShape found = shape_from_photos(photos, silhouettes, field_of_view);
   write_shape(found, o.out);
   // What the hull was carved from, beside it: silhouette-N.png, the photo where its silhouette
   // is and a quarter of it elsewhere.
-  for (size_t i = 0; i < silhouettes.size(); ++i) {
+  for (size_t i = 0; i < silhouettes.each.size(); ++i) {
     Image picture = photos.photos[i];
     for (int y = 0; y < picture.height; ++y)
       for (int x = 0; x < picture.width; ++x) {
         uint8_t* p = picture.at(x, y);
-        if (!silhouettes[i].at(x, y)) std::transform(p, p + 3, p, [](uint8_t v) { return uint8_t(v / 4); });
+        if (!silhouettes.each[i].at(x, y)) std::transform(p, p + 3, p, [](uint8_t v) { return uint8_t(v / 4); });
         p[3] = 255;
       }
     save_image(picture, std::filesystem::path(o.out) / ("silhouette-" + std::to_string(i + 1) + ".png"), false);

@@ -17,25 +17,26 @@
 
 namespace inkwire {
 
-std::vector<Silhouette> photo_silhouettes(const PhotoFolder& photos, bool matted) {
-  std::vector<Silhouette> out;
+PhotoSilhouettes photo_silhouettes(const PhotoFolder& photos, bool matted) {
+  PhotoSilhouettes out{.cut = !matted};
   for (size_t i = 0; i < photos.photos.size(); ++i) {
     const Image& photo = photos.photos[i];
     if (!matted) {
       SilhouetteCut cut = cut_silhouette(photo);
       if (!cut.cut()) throw Error(photos.names[i] + ": no silhouette could be cut (" + cut.reason + ")");
-      out.push_back(std::move(cut.silhouette));
+      out.each.push_back(std::move(cut.silhouette));
       continue;
     }
     Silhouette s{.width = photo.width, .height = photo.height, .inside = std::vector<uint8_t>(size_t(photo.width) * size_t(photo.height), 0)};
     for (int y = 0; y < photo.height; ++y)
       for (int x = 0; x < photo.width; ++x) s.inside[size_t(y * photo.width + x)] = photo.at(x, y)[3] > 127;
-    out.push_back(std::move(s));
+    out.each.push_back(std::move(s));
   }
   return out;
 }
 
-PhotoShape shape_from_photos(const PhotoFolder& photos, const std::vector<Silhouette>& silhouettes, float field_of_view) {
+PhotoShape shape_from_photos(const PhotoFolder& photos, const PhotoSilhouettes& cut_or_keyed, float field_of_view) {
+  const std::vector<Silhouette>& silhouettes = cut_or_keyed.each;
   if (photos.photos.empty()) throw Error("no photos to find a shape in");
   if (silhouettes.size() != photos.photos.size()) throw Error("a shape needs one silhouette a photo");
   const int width = photos.photos[0].width, height = photos.photos[0].height, columns = photos.columns();
@@ -61,7 +62,7 @@ PhotoShape shape_from_photos(const PhotoFolder& photos, const std::vector<Silhou
   const TurntableCamera start{.width = width, .height = height, .focal_px = float(std::max(width, height)) / field_of_view,
                               .elevations_deg = elevations, .axis_x = 0.5f * (left + right)};
   const CameraFit fit = camera_from_mattes(start, views, silhouettes);
-  PhotoShape shape{.camera = fit.camera, .views = fit.views, .evaluations = fit.evaluations};
+  PhotoShape shape{.camera = fit.camera, .views = fit.views, .evaluations = fit.evaluations, .cut = cut_or_keyed.cut};
   if (photos.calibration) {
     // Carved where the calibration puts each camera: a lab's gantry does not turn about one axis
     // exactly (templeRing's cameras point up to 11 pixels either side of one axis column).
@@ -169,8 +170,7 @@ std::optional<PhotoShape> shape_for_product(const PhotoFolder& photos, bool matt
     return std::nullopt;
   }
   try {
-    PhotoShape shape = shape_from_photos(photos, photo_silhouettes(photos, matted), kDefaultFieldOfView);
-    shape.cut = !matted;
+    const PhotoShape shape = shape_from_photos(photos, photo_silhouettes(photos, matted), kDefaultFieldOfView);
     const double mean_iou = std::accumulate(shape.iou.begin(), shape.iou.end(), 0.0) / double(shape.iou.size());
     if (mean_iou < kLeastMeanIoU) {
       char line[160];

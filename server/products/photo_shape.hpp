@@ -43,7 +43,11 @@ ShapeReport report_of(const PhotoShape& shape);
 
 // The photos' silhouettes: their mattes (alpha) when `matted`, else cut from their backdrops
 // (silhouette_cut.hpp). Throws inkwire::Error naming a photo that gives none, and why.
-std::vector<Silhouette> photo_silhouettes(const PhotoFolder& photos, bool matted);
+struct PhotoSilhouettes {
+  std::vector<Silhouette> each;  // one per photo
+  bool cut = false;              // cut from the backdrops, not the mattes
+};
+PhotoSilhouettes photo_silhouettes(const PhotoFolder& photos, bool matted);
 
 // `silhouettes` one per photo; `field_of_view` the first guess of the longer side over the focal
 // length (the turn fit's, or kDefaultFieldOfView). The camera is searched from that guess, level,
@@ -51,7 +55,7 @@ std::vector<Silhouette> photo_silhouettes(const PhotoFolder& photos, bool matted
 // against (`found`), and the hull is carved where it puts each camera (PhotoView::pose).
 // Throws inkwire::Error when a silhouette is empty or they carve nothing (they cannot be of one
 // object turning about one axis).
-PhotoShape shape_from_photos(const PhotoFolder& photos, const std::vector<Silhouette>& silhouettes, float field_of_view);
+PhotoShape shape_from_photos(const PhotoFolder& photos, const PhotoSilhouettes& silhouettes, float field_of_view);
 
 // What was found, in a line: the focal length, each row's elevation, the axis, the hull's IoU.
 std::string shape_summary(const PhotoShape& shape);

@@ -1,6 +1,7 @@
 #include "server/products/silhouette_cut.hpp"
 
 #include <algorithm>
+#include <cstdint>
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
@@ -14,6 +15,7 @@ inline constexpr double kMostObject = 0.9;        // of the photo: more leaves n
 inline constexpr double kMostEdgeTouched = 0.25;  // of the cut's frame: an object on more of it runs off the photo
 inline constexpr int kBackdropColours = 6;        // the border's colours, clustered (a cloth's folds, a floor's light)
 inline constexpr float kStandsOut = 30;           // of 441: a pixel this far from every one of them starts as likely object
+inline constexpr uint64_t kCutSeed = 0x1a2b3c4d;  // OpenCV's random generator, set alike for every cut
 
 // The colours the border band of `band` pixels of `picture` holds, clustered (k-means): rows of
 // three floats.
@@ -55,6 +57,14 @@ SilhouetteCut cut_silhouette(const Image& photo) {
     out.reason = "the photo is too small to cut";
     return out;
   }
+  // k-means and GrabCut draw from OpenCV's random generator: started alike for every photo, the
+  // same photo is cut the same way whatever ran before it (a product is made once and found again).
+  const uint64_t outside_state = cv::theRNG().state;
+  cv::theRNG().state = kCutSeed;
+  struct Restore {
+    uint64_t state;
+    ~Restore() { cv::theRNG().state = state; }
+  } restore{outside_state};
   const double scale = std::min(1.0, double(kCutSide) / double(std::max(w, h)));
   cv::Mat rgb(h, w, CV_8UC3);
   for (int y = 0; y < h; ++y)
