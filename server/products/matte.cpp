@@ -14,10 +14,8 @@ float colour_distance(const uint8_t* a, const cv::Vec3f& b) {
   return std::sqrt(dr * dr + dg * dg + db * db);
 }
 
-int border_band(const Image& photo) { return std::max(2, std::min(photo.width, photo.height) / 50); }
-
 std::vector<const uint8_t*> border_pixels(const Image& photo) {
-  const int w = photo.width, h = photo.height, band = border_band(photo);
+  const int w = photo.width, h = photo.height, band = border_band(w, h);
   std::vector<const uint8_t*> border;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
@@ -133,6 +131,8 @@ int apply_key(Image& photo, const cv::Mat& matte, const cv::Mat& floor, const cv
 }
 
 }  // namespace
+
+int border_band(int width, int height) { return std::max(2, std::min(width, height) / 50); }
 
 glm::vec3 backdrop_colour(const Image& photo) { return median_colour(border_pixels(photo)); }
 

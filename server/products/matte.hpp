@@ -19,6 +19,9 @@ struct MatteResult {
   glm::vec3 backdrop{0.0f};    // the backdrop's colour (RGB, 0-255), when keyed
 };
 
+// How many pixels wide the outer 2% of a picture is (at least 2): the band taken as backdrop.
+int border_band(int width, int height);
+
 // The backdrop's colour: the per-channel median of the photo's outer 2% (RGB, 0-255).
 glm::vec3 backdrop_colour(const Image& photo);
 

@@ -6,6 +6,8 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "server/products/matte.hpp"
+
 namespace inkwire {
 namespace {
 
@@ -77,7 +79,7 @@ SilhouetteCut cut_silhouette(const Image& photo) {
   // The outer 2% is backdrop for certain (as the plain keyer takes it); inside it, what is near one
   // of its colours starts as likely backdrop and the rest as likely object (a small object in a
   // large picture would otherwise leave the likely object mostly the backdrop's own colours).
-  const int band = std::max(2, std::min(small.cols, small.rows) / 50);
+  const int band = border_band(small.cols, small.rows);
   const cv::Rect frame(band, band, small.cols - 2 * band, small.rows - 2 * band);
   const cv::Mat unlike = distance_from(small, backdrop_colours(small, band));
   cv::Mat mask(small.size(), CV_8U, cv::Scalar(cv::GC_BGD));

@@ -238,12 +238,11 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
   const auto made = std::chrono::steady_clock::now();
   const Product product = product_from_photo_folder(kept, PhotoProductOptions{.shape = "off"});
   const double seconds_to_make = std::chrono::duration<double>(std::chrono::steady_clock::now() - made).count();
-  std::optional<Product> shaped;
   const auto started = std::chrono::steady_clock::now();
-  shaped = product_from_photo_folder(kept, PhotoProductOptions{.shape = "auto"},
-                                     [&](int done, int, const std::string& line) {
-                                       if (done == 0) std::fprintf(stderr, "inkwire-bench: %s: %s\n", name.c_str(), line.c_str());
-                                     });
+  std::optional<Product> shaped = product_from_photo_folder(kept, PhotoProductOptions{.shape = "auto"},
+                                                            [&](int done, int, const std::string& line) {
+                                                              if (done == 0) std::fprintf(stderr, "inkwire-bench: %s: %s\n", name.c_str(), line.c_str());
+                                                            });
   const double seconds_with_shape = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (!shaped->shape) shaped.reset();  // no shape found: its product is today's
   const fs::path data = fs::temp_directory_path() / ("inkwire-bench-photos-" + std::to_string(::getpid()));
