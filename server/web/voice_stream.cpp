@@ -12,7 +12,13 @@ constexpr auto no_throw = asio::experimental::as_tuple(asio::use_awaitable);
 }  // namespace
 
 VoiceStream::VoiceStream(ByteStream stream, std::chrono::steady_clock::duration stuck)
-    : stream_(std::move(stream)), stuck_(stuck), wake_(stream_.get_executor(), asio::steady_timer::time_point::max()) {}
+    : stream_(std::move(stream)), stuck_(stuck), wake_(stream_.get_executor(), asio::steady_timer::time_point::max()) {
+  // Frames of tens of bytes: under Nagle's rule a frame written while the one before is not yet
+  // acknowledged waits for the page's delayed acknowledgement (40 ms and more), which the jitter
+  // rule then takes as network delay and adds to every member's mouth to ear.
+  std::error_code ec;
+  stream_.socket().set_option(asio::ip::tcp::no_delay(true), ec);
+}
 
 void VoiceStream::start(std::string head) {
   auto self = shared_from_this();
