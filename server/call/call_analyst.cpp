@@ -145,6 +145,11 @@ bool CallAnalyst::video(const MemberKey& who, protocol::FaceVideo frame) {
   return kept;
 }
 
+void CallAnalyst::video_lost(const MemberKey& who) {
+  std::lock_guard lock(mutex_);
+  awaiting_key_[who] = true;
+}
+
 void CallAnalyst::forget(const MemberKey& who) {
   std::lock_guard lock(mutex_);
   crops_.erase(who);

@@ -81,9 +81,13 @@ class CallAnalyst {
 
   void photo(const MemberKey& who, protocol::Bytes jpeg);
   void crop(const MemberKey& who, protocol::FaceCrop crop);
-  // False when the frame was dropped: the analyst fell so far behind that the member's waiting
-  // frames went, and until a key frame comes the rest cannot be decoded (ask for one).
+  // False when the frame was dropped: a frame before it was lost (the analyst fell so far behind
+  // that the member's waiting frames went, or video_lost) and until a key frame comes the rest
+  // cannot be decoded (ask for one).
   bool video(const MemberKey& who, protocol::FaceVideo frame);
+  // A frame of the member's was refused before it got here (too frequent, too large): the rest
+  // cannot be decoded without it, so they are dropped unread until a key frame (ask for one).
+  void video_lost(const MemberKey& who);
   // The member left: its waiting crop and its calibration go.
   void forget(const MemberKey& who);
 

@@ -54,9 +54,19 @@ void Call::crop(uint64_t connection, protocol::FaceCrop crop) {
 // frame that fails is counted and the stream waits for the key frame asked for in analysed().
 void Call::video(uint64_t connection, protocol::FaceVideo frame) {
   Member* m = find(connection);
-  if (!m || !admitted(*m, false, frame.vp8.size())) return;  // the gap it leaves asks for a key frame
-  if (analyst_.video({session_, m->entry.member}, std::move(frame))) return;
-  ++counters_.drops["video-analysis-behind"];  // the server's doing, not the member's: no flood is counted
+  if (!m) return;
+  const MemberKey who{session_, m->entry.member};
+  if (!admitted(*m, false, frame.vp8.size())) {
+    // Counted once, as refused; the frames after it wait for a key frame instead of each
+    // failing to decode (and being counted again as unreadable).
+    analyst_.video_lost(who);
+    ask_for_key_frame(*m);
+    return;
+  }
+  if (analyst_.video(who, std::move(frame))) return;
+  // The stream waits for a key frame after a gap (the analyst fell behind, or a frame was refused
+  // above and counted there): no flood is counted for it.
+  ++counters_.drops["video-awaiting-key-frame"];
   ask_for_key_frame(*m);
 }
 

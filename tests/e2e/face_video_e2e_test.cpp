@@ -144,6 +144,17 @@ TEST(FaceVideoE2ETest, HostileVideoIsDroppedWithItsReasonAndAKeyFrameAskedForWhi
   sequence += 1;
   send(encoder.encode(photo, 200, false).vp8, false, ++sequence);
   EXPECT_TRUE(one_more_drop()) << "a missing frame was not noticed";
+  EXPECT_TRUE(asked_for_key());
+  // A good key frame, then a frame too large to take and a good one after it: the refused frame
+  // is counted once, as too large; the one after it waits for a key frame, which is asked for,
+  // and is not counted again as unreadable.
+  send(key, true, ++sequence);
+  send(protocol::Bytes(33 * 1024, 0), false, ++sequence);
+  send(encoder.encode(photo, 300, false).vp8, false, ++sequence);
+  EXPECT_TRUE(eventually([&] { return dropped(server, "crop-too-large") == 1; })) << "the frame too large was not refused";
+  EXPECT_TRUE(asked_for_key()) << "no key frame was asked for after a refused frame";
+  EXPECT_TRUE(eventually([&] { return dropped(server, "video-awaiting-key-frame") >= 1; }));
+  EXPECT_EQ(dropped(server, "video-unreadable"), drops) << "the frame after a refused one was counted as unreadable";
 
   // Mallory is still in the call, and so is everyone else.
   EXPECT_TRUE(mallory.connected() && listener.connected());
