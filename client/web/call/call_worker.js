@@ -18,11 +18,12 @@
 import { Session } from '../net/session.js';
 import { FrameReader } from '../protocol/messages.js';
 import { PacketRing, SampleRing } from './audio_ring.js';
+import { CaptureClock } from './capture_clock.js';
 
 const kOpusRate = 48000, kBitrate = 10000, kFrameMs = 60;  // as client/call/publisher.hpp
 const kForwarded = ['snapshot', 'roster', 'member-face', 'face-region', 'key-frame-request', 'permissions', 'state', 'refused', 'error', 'close'];
 
-let session = null, joined = false, sending = false, clockOrigin = 0, encoder = null, playout = null, playoutRing = null, route = null;
+let session = null, joined = false, sending = false, clockOrigin = 0, encoding = null, playout = null, playoutRing = null, route = null;
 const decoders = new Map();  // member -> {decoder, pending: [time_ms]}
 // voiceGapMs: the longest wait between two voice packets arriving here (what the network and this
 // engine's worker added; the playout's delay must cover it).
@@ -46,22 +47,24 @@ async function voiceReason() {
 }
 
 function makeEncoder() {
+  const heardAt = new CaptureClock(kOpusRate);
   const e = new AudioEncoder({
     output: (chunk) => {
-      if (!sending || !joined || !session) return;
+      const timeMs = heardAt.frame(chunk.duration ? chunk.duration / 1000 : kFrameMs);
+      if (!sending || !joined || !session || timeMs === null) return;
       const opus = new Uint8Array(chunk.byteLength);
       chunk.copyTo(opus);
       // Stamped on the call's clock with when its first sample was heard (the capture's time).
-      session.send({ type: 'voice-frame', member: 0, time_ms: Math.max(0, Math.round(chunk.timestamp / 1000)), opus });
+      session.send({ type: 'voice-frame', member: 0, time_ms: Math.max(0, Math.round(timeMs)), opus });
       ++status.voiceSent;
     },
     error: () => {
       ++status.encoderErrors;
-      encoder = null;  // made again for the next chunk
+      encoding = null;  // made again for the next chunk
     },
   });
   e.configure({ codec: 'opus', sampleRate: kOpusRate, numberOfChannels: 1, bitrate: kBitrate, opus: { frameDuration: kFrameMs * 1000, complexity: 5 } });
-  return e;
+  return { encoder: e, heardAt };
 }
 
 // The capture worklet's shared ring, read every 10 ms: each 20 ms chunk stamped back from now.
@@ -78,11 +81,14 @@ function readCaptureRing(ring) {
 // A chunk of the microphone, heard until `endMs` on the call's clock (now, when not given).
 function captured({ samples, sampleRate }, endMs = callClockMs()) {
   if (!sending || !joined) return;
-  encoder ??= makeEncoder();
+  encoding ??= makeEncoder();
   const startMs = endMs - (samples.length / sampleRate) * 1000;
   const data = new AudioData({ format: 'f32-planar', sampleRate, numberOfFrames: samples.length, numberOfChannels: 1,
                                timestamp: Math.max(0, Math.round(startMs * 1000)), data: samples });
-  if (encoder.state === 'configured') encoder.encode(data);
+  if (encoding.encoder.state === 'configured') {
+    encoding.encoder.encode(data);
+    encoding.heardAt.fed(startMs, samples.length);  // at kOpusRate, as the worklet resampled it
+  }
   data.close();
 }
 
