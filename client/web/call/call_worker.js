@@ -50,7 +50,9 @@ function makeEncoder() {
   const heardAt = new CaptureClock(kOpusRate);
   const e = new AudioEncoder({
     output: (chunk) => {
-      const timeMs = heardAt.frame(chunk.duration ? chunk.duration / 1000 : kFrameMs);
+      // Each chunk is one frame of the duration configured: WebKitGTK 2.50 says 20 ms of every
+      // 60 ms chunk (the last input's), so its own duration is not trusted either.
+      const timeMs = heardAt.frame(kFrameMs);
       if (!sending || !joined || !session || timeMs === null) return;
       const opus = new Uint8Array(chunk.byteLength);
       chunk.copyTo(opus);
