@@ -262,8 +262,8 @@ int shape(ShapeOptions o) {
   }
   std::cout << "finding the camera from " << photos.photos.size() << (keyed.matted ? " mattes (" : " silhouettes (") << photos.rows << " row" << (photos.rows > 1 ? "s" : "")
             << "), first guess: field of view " << field_of_view << " of the longer side\n";
-  const PhotoSilhouettes silhouettes = photo_silhouettes(photos, keyed.matted);
-  const PhotoShape found = shape_from_photos(photos, silhouettes, field_of_view);
+  PhotoSilhouettes silhouettes = photo_silhouettes(photos, keyed.matted);
+  const PhotoShape found = shape_from_silhouettes(photos, silhouettes, field_of_view, [](const std::string& line) { std::cout << line << "\n"; });
   write_shape(found, o.out);
   // What the hull was carved from, beside it: silhouette-N.png, the photo where its silhouette
   // is and a quarter of it elsewhere.

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "common/error.hpp"
 #include "server/products/depth_refinement.hpp"
@@ -17,8 +18,17 @@
 
 namespace inkwire {
 
+const char* silhouettes_named(SilhouetteSource source) {
+  switch (source) {
+    case SilhouetteSource::Mattes: return "mattes";
+    case SilhouetteSource::Cut: return "silhouettes cut from the backdrops";
+    case SilhouetteSource::FilledMattes: return "mattes filled to their outlines";
+  }
+  return "silhouettes";
+}
+
 PhotoSilhouettes photo_silhouettes(const PhotoFolder& photos, bool matted) {
-  PhotoSilhouettes out{.cut = !matted};
+  PhotoSilhouettes out{.source = matted ? SilhouetteSource::Mattes : SilhouetteSource::Cut};
   for (size_t i = 0; i < photos.photos.size(); ++i) {
     const Image& photo = photos.photos[i];
     if (!matted) {
@@ -33,6 +43,19 @@ PhotoSilhouettes photo_silhouettes(const PhotoFolder& photos, bool matted) {
     out.each.push_back(std::move(s));
   }
   return out;
+}
+
+PhotoSilhouettes filled_to_outlines(PhotoSilhouettes silhouettes) {
+  for (Silhouette& s : silhouettes.each) {
+    cv::Mat inside(s.height, s.width, CV_8U, s.inside.data());
+    std::vector<cv::Point> points, outline;
+    cv::findNonZero(inside, points);
+    if (points.size() < 3) continue;
+    cv::convexHull(points, outline);
+    cv::fillConvexPoly(inside, outline, 1);
+  }
+  if (silhouettes.source == SilhouetteSource::Mattes) silhouettes.source = SilhouetteSource::FilledMattes;
+  return silhouettes;
 }
 
 PhotoShape shape_from_photos(const PhotoFolder& photos, const PhotoSilhouettes& cut_or_keyed, float field_of_view) {
@@ -62,7 +85,7 @@ PhotoShape shape_from_photos(const PhotoFolder& photos, const PhotoSilhouettes& 
   const TurntableCamera start{.width = width, .height = height, .focal_px = float(std::max(width, height)) / field_of_view,
                               .elevations_deg = elevations, .axis_x = 0.5f * (left + right)};
   const CameraFit fit = camera_from_mattes(start, views, silhouettes);
-  PhotoShape shape{.camera = fit.camera, .views = fit.views, .evaluations = fit.evaluations, .cut = cut_or_keyed.cut};
+  PhotoShape shape{.camera = fit.camera, .views = fit.views, .evaluations = fit.evaluations, .source = cut_or_keyed.source};
   if (photos.calibration) {
     // Carved where the calibration puts each camera: a lab's gantry does not turn about one axis
     // exactly (templeRing's cameras point up to 11 pixels either side of one axis column).
@@ -87,8 +110,30 @@ PhotoShape shape_from_photos(const PhotoFolder& photos, const PhotoSilhouettes& 
   return shape;
 }
 
+double mean_iou(const PhotoShape& shape) {
+  return shape.iou.empty() ? 0.0 : std::accumulate(shape.iou.begin(), shape.iou.end(), 0.0) / double(shape.iou.size());
+}
+
+PhotoShape shape_from_silhouettes(const PhotoFolder& photos, PhotoSilhouettes& silhouettes, float field_of_view,
+                                  const std::function<void(const std::string&)>& say) {
+  std::string why;
+  try {
+    PhotoShape shape = shape_from_photos(photos, silhouettes, field_of_view);
+    if (silhouettes.source != SilhouetteSource::Mattes || mean_iou(shape) >= kLeastMeanIoU) return shape;
+    char line[120];
+    std::snprintf(line, sizeof line, "the hull explains them poorly, IoU %.2f on average", mean_iou(shape));
+    why = line;
+  } catch (const Error& e) {
+    if (silhouettes.source != SilhouetteSource::Mattes) throw;
+    why = e.what();
+  }
+  say("the mattes give no shape (" + why + "): trying them filled to their outlines");
+  silhouettes = filled_to_outlines(std::move(silhouettes));
+  return shape_from_photos(photos, silhouettes, field_of_view);
+}
+
 ShapeReport report_of(const PhotoShape& shape) {
-  return {.camera = shape.camera, .found = shape.found, .iou_worst = *std::min_element(shape.iou.begin(), shape.iou.end()), .cut = shape.cut};
+  return {.camera = shape.camera, .found = shape.found, .iou_worst = *std::min_element(shape.iou.begin(), shape.iou.end()), .source = shape.source};
 }
 
 std::string shape_summary(const PhotoShape& shape) {
@@ -103,7 +148,7 @@ std::string shape_summary(const PhotoShape& shape) {
     }
     return out;
   };
-  std::string out = std::string("shape from the ") + (shape.cut ? "silhouettes cut from the backdrops" : "mattes") + ": ";
+  std::string out = std::string("shape from the ") + silhouettes_named(shape.source) + ": ";
   const TurntableCamera& c = shape.camera;
   if (shape.found) {
     std::snprintf(line, sizeof line, "calibrated focal length %.0f px at %d x %d (the silhouettes say %.0f, %+.1f%%), elevation ", c.focal_px, c.width,
@@ -114,7 +159,7 @@ std::string shape_summary(const PhotoShape& shape) {
     out += std::string(line) + elevations(c) + " degrees, ";
   }
   std::snprintf(line, sizeof line, "axis at column %.1f; a hull of %zu cells, IoU against the %s %.3f to %.3f", c.axis_x, shape.hull.count(),
-                shape.cut ? "silhouettes" : "mattes", *worst, *best);
+                shape.source == SilhouetteSource::Mattes ? "mattes" : "silhouettes", *worst, *best);
   return out + line;
 }
 
@@ -170,12 +215,12 @@ std::optional<PhotoShape> shape_for_product(const PhotoFolder& photos, bool matt
     return std::nullopt;
   }
   try {
-    const PhotoShape shape = shape_from_photos(photos, photo_silhouettes(photos, matted), kDefaultFieldOfView);
-    const double mean_iou = std::accumulate(shape.iou.begin(), shape.iou.end(), 0.0) / double(shape.iou.size());
-    if (mean_iou < kLeastMeanIoU) {
+    PhotoSilhouettes silhouettes = photo_silhouettes(photos, matted);
+    PhotoShape shape = shape_from_silhouettes(photos, silhouettes, kDefaultFieldOfView, say);
+    if (const double iou = mean_iou(shape); iou < kLeastMeanIoU) {
       char line[160];
       std::snprintf(line, sizeof line, "no shape: the hull explains the %s poorly (IoU %.2f on average): some miss parts of the object",
-                    matted ? "mattes" : "silhouettes", mean_iou);
+                    silhouettes_named(shape.source), iou);
       say(std::string(line) + " (control points from the matches alone)");
       return std::nullopt;
     }

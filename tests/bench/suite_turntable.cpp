@@ -332,7 +332,8 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
     rows.back().counters["bytes_tween"] = double(bytes_of(shaped_state, protocol::AssetKind::Tween));
     const ShapeReport& found = *shaped->shape;
     rows.back().counters["hull_iou_min"] = found.iou_worst;
-    rows.back().counters["silhouettes_cut"] = found.cut;
+    rows.back().counters["silhouettes_cut"] = found.source == SilhouetteSource::Cut;
+    rows.back().counters["mattes_filled"] = found.source == SilhouetteSource::FilledMattes;
     if (found.found) {  // a calibration came with the photos: the camera the silhouettes gave against it
       rows.back().counters["focal_error"] = double(found.found->focal_px / found.camera.focal_px) - 1.0;
       rows.back().counters["elevation_error"] = double(found.found->elevations_deg[0] - found.camera.elevations_deg[0]);
