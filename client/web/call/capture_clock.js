@@ -2,9 +2,10 @@
 // AudioEncoder's chunks carry timestamps of its own: Firefox ESR's counts samples from its first
 // input and ignores the timestamps given after it, so every sample the capture loses (a glitch of
 // the audio thread, a stalled worker) puts the stamps further behind the clock, until a listener's
-// jitter rule finds every packet late; WebKitGTK's stamps a frame with its last input's time. Here the stamps come from the inputs themselves: the
-// encoder's output is a run of the samples it was fed, so the frame that starts at the n-th
-// sample fed was heard when the chunk holding that sample was, plus its place in that chunk.
+// jitter rule finds every packet late; WebKitGTK's stamps a frame with its last input's time.
+// Here the stamps come from the inputs themselves: the encoder's output is a run of the samples
+// it was fed, so the frame that starts at the n-th sample fed was heard when the chunk holding
+// that sample was, plus its place in that chunk.
 export class CaptureClock {
   constructor(sampleRate) {
     this.sampleRate = sampleRate;
