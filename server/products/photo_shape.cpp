@@ -119,9 +119,10 @@ PhotoShape shape_from_silhouettes(const PhotoFolder& photos, PhotoSilhouettes& s
   std::string why;
   try {
     PhotoShape shape = shape_from_photos(photos, silhouettes, field_of_view);
-    if (silhouettes.source != SilhouetteSource::Mattes || mean_iou(shape) >= kLeastMeanIoU) return shape;
+    const double iou = mean_iou(shape);
+    if (silhouettes.source != SilhouetteSource::Mattes || iou >= kLeastMeanIoU) return shape;
     char line[120];
-    std::snprintf(line, sizeof line, "the hull explains them poorly, IoU %.2f on average", mean_iou(shape));
+    std::snprintf(line, sizeof line, "the hull explains them poorly, IoU %.2f on average", iou);
     why = line;
   } catch (const Error& e) {
     if (silhouettes.source != SilhouetteSource::Mattes) throw;
