@@ -81,14 +81,14 @@ CellTracks control_points(const PhotoFolder& photos, bool matted, const PhotoSha
       from_shape += merged.from_shape / double(cell.size() - 1);
       if (cell.size() > 2) flows.back() = std::move(merged.matches);
     }
-    // A pair the shape explains takes its points from the shape alone (the tween data's middle
-    // point where the halfway view sees each); a triangle of rows, from the matches merged with
-    // the shape's motion pixel by pixel.
-    const bool points_from_shape = shape && cell.size() == 2 && from_shape >= kShapeTrusted;
+    // A cell the shape explains takes its points from the shape alone (a pair's middle point where
+    // the halfway view sees each); one it does not, from the matches (a triangle's merged with the
+    // shape's motion pixel by pixel, where that explains the photos better).
+    const bool points_from_shape = shape && from_shape >= kShapeTrusted;
     std::vector<Track> points;
     size_t on_outline = 0;
     if (points_from_shape) {
-      ShapeTracks exact = shape_tracks(*shape, cell[0], cell[1], a, photos.photos[cell[1]], max_points / 2);
+      ShapeTracks exact = shape_tracks(*shape, cell, photos.photos, max_points / 2);
       points = std::move(exact.tracks);
       on_outline = exact.outline;
     } else {
@@ -105,9 +105,10 @@ CellTracks control_points(const PhotoFolder& photos, bool matted, const PhotoSha
       for (size_t k = 1; k < cell.size(); ++k) names += (k == 1 ? " -> " : ", ") + photos.names[cell[k]];
       const std::string shape_share = std::to_string(int(std::lround(100 * from_shape))) + "%";
       std::string line = names + ": " + std::to_string(points.size() - on_outline) + " points from " + (points_from_shape ? "the shape" : "matches");
-      if (shape && cell.size() == 2)
-        line += points_from_shape ? " (it explains " + shape_share + " of the pair better than the matches)"
-                                  : " (the shape explains only " + shape_share + " of the pair better than them: not used here)";
+      if (points_from_shape)
+        line += " (it explains " + shape_share + " of the " + (cell.size() == 2 ? "pair" : "triangle") + " better than the matches)";
+      else if (shape && cell.size() == 2)
+        line += " (the shape explains only " + shape_share + " of the pair better than them: not used here)";
       else if (shape)
         line += " (" + shape_share + " of the motion from the shape)";
       if (matted) line += ", " + std::to_string(on_outline) + " outline points";

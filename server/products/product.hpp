@@ -34,10 +34,11 @@ struct PhotoProductOptions {
   PhotoLayout layout;      // rows, turn, elevations, size
   std::string matte = "auto";  // auto: key a plain backdrop when there is one; key: refuse if not; none
   // auto: the turntable's camera and the object's shape found from the photos' silhouettes
-  // (photo_shape.hpp: the mattes, or cut from backdrops that are not plain), and a pair's control points taken from the shape where the photos agree
-  // better under it than under the matches (control_points.hpp); off: matched points only
+  // (photo_shape.hpp: the mattes, or cut from backdrops that are not plain), and a cell's control
+  // points (a pair's, a triangle of rows') taken from the shape where the photos agree better
+  // under it than under the matches (control_points.hpp); off: matched points only
   std::string shape = "auto";
-  // Per pair at most, outline included (12 bytes each; 160 bought 0.1 dB for 20% more); a pair
+  // Per cell at most, outline included (12 bytes each; 160 bought 0.1 dB for 20% more); a cell
   // whose points come from the shape takes half, as a mesh product takes 65 exact points.
   int control_points = 130;
   // The tween data at most this share of what a first view fetches (photos, mattes, tween data).

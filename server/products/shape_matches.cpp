@@ -120,9 +120,12 @@ MergedMatches merged_matches(const DenseMatches& matched, const DenseMatches& sh
   return out;
 }
 
-ShapeTracks shape_tracks(const PhotoShape& shape, size_t a, size_t b, const Image& photo_a, const Image& photo_b, int count) {
+ShapeTracks shape_tracks(const PhotoShape& shape, const std::vector<uint16_t>& cell, const std::vector<Image>& photos, int count) {
   const TurntableCamera& c = shape.camera;
-  const PhotoView halfway = view_between(shape.views[a], shape.views[b], 0.5f);
+  // A pair's points move on arcs about the axis: each keeps where the halfway view sees it. A
+  // triangle's are placed between its three photos' places as the client blends them.
+  const std::optional<PhotoView> halfway =
+      cell.size() == 2 ? std::optional(view_between(shape.views[cell[0]], shape.views[cell[1]], 0.5f)) : std::nullopt;
   const auto near_background = [&](size_t photo, glm::vec2 p) {
     for (int dy = -2; dy <= 2; ++dy)
       for (int dx = -2; dx <= 2; ++dx)
@@ -131,36 +134,50 @@ ShapeTracks shape_tracks(const PhotoShape& shape, size_t a, size_t b, const Imag
   };
   // How much detail each photo has at a pixel: the corner strength (the smaller eigenvalue of the
   // gradients' structure over a few pixels), which an edge alone does not have and texture does.
-  const auto detail_of = [](const Image& photo) {
+  std::vector<cv::Mat> detail;
+  for (const uint16_t photo : cell) {
     cv::Mat strength;
-    cv::cornerMinEigenVal(grey_of(photo), strength, 5, 3);
-    return strength;
-  };
-  const cv::Mat detail[2] = {detail_of(photo_a), detail_of(photo_b)};
+    cv::cornerMinEigenVal(grey_of(photos[photo]), strength, 5, 3);
+    detail.push_back(strength);
+  }
   std::vector<Track> candidates;
-  std::vector<glm::vec2> layout;  // where each sits in the warp: halfway where both see it, else where it is seen
+  std::vector<glm::vec2> layout;  // where each sits in the warp: between its places where all see it, else where it is seen
   std::vector<bool> on_outline;
   std::vector<float> detail_at;   // of each candidate, in the photo its grid point is from
   const int step = std::max(2, std::min(c.width, c.height) / 96);
-  for (const auto& [from, to] : {std::pair{a, b}, std::pair{b, a}})
+  for (size_t k = 0; k < cell.size(); ++k) {
+    const size_t from = cell[k];
     for (int y = step / 2; y < c.height; y += step)
       for (int x = step / 2; x < c.width; x += step) {
         const glm::vec2 pixel(float(x) + 0.5f, float(y) + 0.5f);
-        const std::optional<Sighting> s = sighting(shape, from, pixel, to);
-        if (!s) continue;
-        const bool outline = near_background(from, pixel) || (s->seen && near_background(to, s->there));
-        // A point both see comes from a's grid alone (b's would repeat it); one the other photo
-        // does not see only from an outline, where it turns into or out of sight.
-        if (s->seen ? from != a : !outline) continue;
-        const glm::vec3 in_halfway = seen_from(c, shape.views[from], pixel, depth_at(shape, from, pixel), halfway);
-        if (in_halfway.z <= 1e-3f) continue;
-        const glm::vec2 middle = to_pixel(c, in_halfway);
-        const glm::vec2 in_a = from == a ? pixel : s->there, in_b = from == a ? s->there : pixel;
-        candidates.push_back({.source = in_a, .targets = {in_b}, .bulge = middle - 0.5f * (in_a + in_b)});
-        layout.push_back(s->seen ? middle : pixel);
+        std::vector<glm::vec2> places(cell.size(), pixel);  // in each photo of the cell
+        bool projected = true, seen_by_all = true, outline = near_background(from, pixel);
+        for (size_t j = 0; j < cell.size() && projected; ++j) {
+          if (j == k) continue;
+          const std::optional<Sighting> s = sighting(shape, from, pixel, cell[j]);
+          projected = s.has_value();
+          if (!s) break;
+          places[j] = s->there;
+          seen_by_all = seen_by_all && s->seen;
+          outline = outline || (s->seen && near_background(cell[j], s->there));
+        }
+        // A point all see comes from the first photo's grid alone (the others' would repeat it);
+        // one some photo does not see only from an outline, where it turns into or out of sight.
+        if (!projected || (seen_by_all ? k != 0 : !outline)) continue;
+        glm::vec2 middle(0.0f);
+        for (const glm::vec2& p : places) middle += p / float(places.size());
+        glm::vec2 bulge(0.0f);
+        if (halfway) {
+          const glm::vec3 in_halfway = seen_from(c, shape.views[from], pixel, depth_at(shape, from, pixel), *halfway);
+          if (in_halfway.z <= 1e-3f) continue;
+          bulge = to_pixel(c, in_halfway) - middle;
+        }
+        candidates.push_back({.source = places[0], .targets = std::vector<glm::vec2>(places.begin() + 1, places.end()), .bulge = bulge});
+        layout.push_back(seen_by_all ? middle + bulge : pixel);
         on_outline.push_back(outline);
-        detail_at.push_back(detail[from == a ? 0 : 1].at<float>(y, x));
+        detail_at.push_back(detail[k].at<float>(y, x));
       }
+  }
   // Inside the outline, points go where the photos have detail (SPEC T26): a point on a plain
   // panel moves nothing a viewer sees, one on a window's corner or a logo keeps it single. The
   // more detailed half of the inner candidates is spread over; the outline's are all kept.

@@ -7,8 +7,8 @@
 // points are not the object's; so per pixel, the shape's motion and the matched one (verified
 // optical flow) each warp b onto a, and the one under which the two pictures agree better
 // (photo-consistency, over a small window) is kept: where the shape is unsure, the matches stay.
-// How often the shape wins says whether a pair trusts it; a pair that does takes its control
-// points from the shape alone (shape_tracks), a triangle of rows the merged motion.
+// How often the shape wins says whether a cell (a pair, or a triangle of rows) trusts it; one
+// that does takes its control points from the shape alone (shape_tracks).
 #include "server/products/photo_shape.hpp"
 #include "server/tween/dense_matches.hpp"
 
@@ -27,19 +27,20 @@ struct MergedMatches {
 // photos agree better, where the motion is reliable; reliable where the one kept is.
 MergedMatches merged_matches(const DenseMatches& matched, const DenseMatches& shape, const Image& a, const Image& b);
 
-// A pair's control points from the shape alone, made as a mesh product's exact points are
-// (exact_cell): points of the surface on a grid over both photos, each seen by both (at its place
-// in each, and in the middle where the halfway view sees it) or, seen by one, on an outline; inside
-// the outline, only where the photos (`photo_a`, `photo_b`) have detail; up to `count`, three
-// fifths from the outline first, spread as common/tween/point_spread.hpp spreads.
+// A cell's control points from the shape alone, made as a mesh product's exact points are
+// (exact_cell): points of the surface on a grid over the cell's photos, each seen by all (at its
+// place in each; a pair's with its middle where the halfway view sees it) or, unseen by one, on an
+// outline; inside the outline, only where the photos have detail; up to `count`, three fifths from
+// the outline first, spread as common/tween/point_spread.hpp spreads. `cell` a pair or a triangle
+// of rows (indices into `photos`, the shape's photos), its first photo the tracks' source.
 struct ShapeTracks {
   std::vector<Track> tracks;
   size_t outline = 0;  // the first this many are the outline's
 };
-ShapeTracks shape_tracks(const PhotoShape& shape, size_t a, size_t b, const Image& photo_a, const Image& photo_b, int count);
+ShapeTracks shape_tracks(const PhotoShape& shape, const std::vector<uint16_t>& cell, const std::vector<Image>& photos, int count);
 
-// The share of a pair's pixels whose motion the shape explains better than the matches
-// (merged_matches' from_shape) for the pair's points to come from the shape: on the rendered
+// The share of a cell's pixels whose motion the shape explains better than the matches
+// (merged_matches' from_shape, over the cell's pairs) for its points to come from the shape: on the rendered
 // truck every pair's is 30-79%; a shape that is not the object's (a hull over what the mattes
 // miss) explains little.
 inline constexpr double kShapeTrusted = 0.2;
