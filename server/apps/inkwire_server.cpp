@@ -148,8 +148,9 @@ int main(int argc, char** argv) {
       ->needs(photos);
   add->add_option("--shape", source.photo_options.shape,
                   "auto (default): with photos all round, find the camera and the object's shape from their silhouettes (the mattes, "
-                  "filled to their outlines where they carve nothing whole, or cut from a backdrop that is not plain) and take a "
-                  "pair's control points from the shape where the photos agree better under it than under the matches; off: "
+                  "filled to their outlines where they carve nothing whole, or cut from a backdrop that is not plain) and take the "
+                  "control points of a pair (or a triangle between rows) from the shape where the photos agree better under it "
+                  "than under the matches; off: "
                   "matched points only")
       ->check(CLI::IsMember({"auto", "off"}))
       ->needs(photos);
