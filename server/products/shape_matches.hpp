@@ -40,9 +40,9 @@ struct ShapeTracks {
 ShapeTracks shape_tracks(const PhotoShape& shape, const std::vector<uint16_t>& cell, const std::vector<Image>& photos, int count);
 
 // The share of a cell's pixels whose motion the shape explains better than the matches
-// (merged_matches' from_shape, over the cell's pairs) for its points to come from the shape: on the rendered
-// truck every pair's is 30-79%; a shape that is not the object's (a hull over what the mattes
-// miss) explains little.
+// (merged_matches' from_shape, over the cell's pairs) for its points to come from the shape: on
+// the rendered truck every pair's is 30-79%; a shape that is not the object's (a hull over what
+// the mattes miss) explains little.
 inline constexpr double kShapeTrusted = 0.2;
 
 }  // namespace inkwire

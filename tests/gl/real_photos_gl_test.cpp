@@ -121,6 +121,41 @@ Image view_at(TweenRenderer& renderer, Canvas& canvas, float azimuth, const std:
   return renderer.last_view();
 }
 
+// A product's mean PSNR over views from `directions` (azimuth, elevation in degrees) against
+// `object` rendered there, as a white page shows both; the view at `shown` goes into `panels`,
+// after the truth (the first time).
+double mean_psnr_against_renders(const Product& product, const SceneObject& object, const std::vector<glm::vec2>& directions, int size,
+                                 size_t shown, std::vector<Image>& panels) {
+  TweenRenderer renderer;
+  renderer.use_model(model_of(product));
+  Canvas canvas(size, size);
+  double sum = 0;
+  for (size_t i = 0; i < directions.size(); ++i) {
+    const float azimuth = directions[i].x, elevation = directions[i].y;
+    const Image truth = over_colour(render_mesh_view(object, direction_at(azimuth, elevation), size, 1.4f), {255, 255, 255}, false);
+    const Image view = over_colour(view_at(renderer, canvas, azimuth, "bilinear", "matte", elevation), {255, 255, 255}, true);
+    sum += psnr(view, truth);
+    if (i == shown) {
+      if (panels.empty()) panels.push_back(truth);
+      panels.push_back(view);
+    }
+  }
+  return sum / double(directions.size());
+}
+
+// The photos in `folder` made into a matted product with `--shape` as `shape` says; the count of
+// its cells whose points came from the shape in `from_shape`.
+Product product_with_shape(const fs::path& folder, PhotoProductOptions options, const std::string& shape, int& from_shape) {
+  options.shape = shape;
+  from_shape = 0;
+  Product product = product_from_photos(folder, options, [&](int done, int, const std::string& line) {
+    if (done == 0) std::printf("%s\n", line.c_str());
+    from_shape += line.find("points from the shape") != std::string::npos;
+  });
+  EXPECT_TRUE(product.matted);
+  return product;
+}
+
 }  // namespace
 
 TEST(RealPhotosGLTest, MidwayViewsOfAPhotographedProductMoveDetailInsteadOfFadingIt) {
@@ -429,37 +464,17 @@ TEST(RealPhotosGLTest, AlongTheShapeTheTrucksMidwayViewsAreCloserThanAlongTheMat
   const int size = 256, kept = 12;
   const std::vector<float> azimuths = evenly_round(kept);
   const fs::path folder = photograph(truck, azimuths, size, "shape-ring", kBlueBackdrop);
-  // A product's mean PSNR over the midway views against the truck rendered there; its third
-  // view goes beside the truth in the picture.
-  std::vector<Image> panels;
-  const auto midway_psnr = [&](const Product& product) {
-    TweenRenderer renderer;
-    renderer.use_model(model_of(product));
-    Canvas canvas(size, size);
-    double sum = 0;
-    for (int i = 0; i < kept; ++i) {
-      const float az = (float(i) + 0.5f) * 360.0f / float(kept);
-      const Image truth = over_colour(render_mesh_view(truck, direction_at(az), size, 1.4f), {255, 255, 255}, false);
-      const Image view = over_colour(view_at(renderer, canvas, az, "bilinear", "matte"), {255, 255, 255}, true);
-      sum += psnr(view, truth);
-      if (i == 2) {
-        if (panels.empty()) panels.push_back(truth);
-        panels.push_back(view);
-      }
-    }
-    return sum / kept;
-  };
+  std::vector<glm::vec2> midway;
+  for (int i = 0; i < kept; ++i) midway.push_back({(float(i) + 0.5f) * 360.0f / float(kept), 0.0f});
+  std::vector<Image> panels;  // the third midway view of each product beside the truth
+  const auto midway_psnr = [&](const Product& product) { return mean_psnr_against_renders(product, truck, midway, size, 2, panels); };
+  PhotoProductOptions options;
+  options.layout.step_degrees = 360.0f / float(kept);
   double along[2] = {0, 0};
   const char* labels[2] = {"off", "auto"};
   for (int with_shape = 0; with_shape < 2; ++with_shape) {
-    PhotoProductOptions options;
-    options.layout.step_degrees = 360.0f / float(kept);
-    options.shape = labels[with_shape];
-    const Product product = product_from_photos(folder, options, [](int done, int, const std::string& line) {
-      if (done == 0) std::printf("%s\n", line.c_str());
-    });
-    ASSERT_TRUE(product.matted);
-    along[with_shape] = midway_psnr(product);
+    int from_shape = 0;
+    along[with_shape] = midway_psnr(product_with_shape(folder, options, labels[with_shape], from_shape));
   }
   // The reference: the truck made into a product from its mesh (the same renders, control points
   // from the true geometry), where the shape could at best lead.
@@ -488,41 +503,18 @@ TEST(RealPhotosGLTest, BetweenRowsTheTrucksViewsAlongTheShapeAreCloserThanAlongT
   const std::vector<float> azimuths = evenly_round(kept), elevations = {10, 30};
   for (size_t r = 0; r < elevations.size(); ++r)
     photograph(truck, azimuths, size, "shape-rows/row" + std::to_string(r + 1), kBlueBackdrop, false, 0, elevations[r]);
-  std::vector<Image> panels;
-  const auto between_rows_psnr = [&](const Product& product) {
-    TweenRenderer renderer;
-    renderer.use_model(model_of(product));
-    Canvas canvas(size, size);
-    double sum = 0;
-    int views = 0;
-    for (int i = 0; i < kept; ++i)
-      for (const float quarter : {0.0f, 0.5f}) {
-        const float az = (float(i) + quarter) * 360.0f / float(kept), el = 0.5f * (elevations[0] + elevations[1]);
-        const Image truth = over_colour(render_mesh_view(truck, direction_at(az, el), size, 1.4f), {255, 255, 255}, false);
-        const Image view = over_colour(view_at(renderer, canvas, az, "bilinear", "matte", el), {255, 255, 255}, true);
-        sum += psnr(view, truth);
-        ++views;
-        if (i == 1 && quarter > 0) {
-          if (panels.empty()) panels.push_back(truth);
-          panels.push_back(view);
-        }
-      }
-    return sum / views;
-  };
+  std::vector<glm::vec2> between_rows;  // halfway up, at each column and halfway round each quad
+  for (int i = 0; i < 2 * kept; ++i) between_rows.push_back({float(i) * 180.0f / float(kept), 0.5f * (elevations[0] + elevations[1])});
+  std::vector<Image> panels;  // the fourth of those views of each product beside the truth
+  PhotoProductOptions options;
+  options.layout.step_degrees = 360.0f / float(kept);
+  options.layout.elevations = elevations;
   double along[2] = {0, 0};
   const char* labels[2] = {"off", "auto"};
   for (int with_shape = 0; with_shape < 2; ++with_shape) {
-    PhotoProductOptions options;
-    options.layout.step_degrees = 360.0f / float(kept);
-    options.layout.elevations = elevations;
-    options.shape = labels[with_shape];
     int from_shape = 0;
-    const Product product = product_from_photos(test::scratch_dir() / "shape-rows", options, [&](int done, int, const std::string& line) {
-      if (done == 0) std::printf("%s\n", line.c_str());
-      from_shape += line.find("points from the shape") != std::string::npos;
-    });
-    ASSERT_TRUE(product.matted);
-    along[with_shape] = between_rows_psnr(product);
+    const Product product = product_with_shape(test::scratch_dir() / "shape-rows", options, labels[with_shape], from_shape);
+    along[with_shape] = mean_psnr_against_renders(product, truck, between_rows, size, 3, panels);
     std::printf("shape %s: %d of %zu triangles took their points from the shape\n", labels[with_shape], from_shape, product.data.cells.size());
     if (with_shape) EXPECT_GT(from_shape, 0);
   }
