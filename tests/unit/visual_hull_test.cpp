@@ -71,17 +71,21 @@ Silhouette silhouette_of(const TurntableCamera& camera, const PhotoView& view) {
   return s;
 }
 
+// Two rows of 18 photos, 20 degrees apart round the turn, the lower row first.
+std::vector<PhotoView> two_rows_of_18() {
+  std::vector<PhotoView> views;
+  for (int row = 0; row < 2; ++row)
+    for (int i = 0; i < 18; ++i) views.push_back({.azimuth_deg = 20.0f * float(i), .row = row});
+  return views;
+}
+
 }  // namespace
 
 TEST(VisualHullTest, TheMattesAloneGiveBackTheCameraAndAHullThatExplainsEveryMatte) {
   const TurntableCamera truth{.width = 320, .height = 240, .focal_px = 520, .elevations_deg = {12, 35}, .axis_x = 166};
-  std::vector<PhotoView> views;
+  const std::vector<PhotoView> views = two_rows_of_18();
   std::vector<Silhouette> mattes;
-  for (int row = 0; row < 2; ++row)
-    for (int i = 0; i < 18; ++i) {
-      views.push_back({.azimuth_deg = 20.0f * float(i), .row = row});
-      mattes.push_back(silhouette_of(truth, views.back()));
-    }
+  for (const PhotoView& view : views) mattes.push_back(silhouette_of(truth, view));
   TurntableCamera guess = truth;
   guess.focal_px = 0.8f * truth.focal_px, guess.elevations_deg = {2, 25}, guess.axis_x = truth.axis_x + 8;
   const CameraFit fit = camera_from_mattes(guess, views, mattes);
@@ -139,26 +143,24 @@ TEST(VisualHullTest, MattesThatLostAPartInsideTheirOutlineGiveAShapeFromTheirOut
   PhotoFolder photos;
   photos.rows = 2;
   std::vector<Silhouette> whole;
-  std::vector<PhotoView> views;
-  for (int row = 0; row < 2; ++row)
-    for (int i = 0; i < 18; ++i) {
-      views.push_back({.azimuth_deg = 20.0f * float(i), .row = row});
-      whole.push_back(silhouette_of(truth, views.back()));
-      Image photo(truth.width, truth.height, {200, 40, 40, 0});
-      glm::vec2 sum(0.0f);
-      float count = 0;
-      for (int y = 0; y < truth.height; ++y)
-        for (int x = 0; x < truth.width; ++x)
-          if (whole.back().at(x, y)) sum += glm::vec2(x, y), count += 1;
-      const glm::vec2 middle = sum / std::max(count, 1.0f);
-      for (int y = 0; y < truth.height; ++y)
-        for (int x = 0; x < truth.width; ++x)  // a patch about the middle is keyed away
-          if (whole.back().at(x, y) && glm::length(glm::vec2(x, y) - middle) > kLostRadius) photo.at(x, y)[3] = 255;
-      photos.photos.push_back(std::move(photo));
-      photos.names.push_back("photo-" + std::to_string(photos.names.size()));
-      const float a = glm::radians(views.back().azimuth_deg), e = glm::radians(truth.elevations_deg[size_t(row)]);
-      photos.directions.push_back({std::sin(a) * std::cos(e), std::sin(e), std::cos(a) * std::cos(e)});
-    }
+  const std::vector<PhotoView> views = two_rows_of_18();
+  for (const PhotoView& view : views) {
+    whole.push_back(silhouette_of(truth, view));
+    Image photo(truth.width, truth.height, {200, 40, 40, 0});
+    glm::vec2 sum(0.0f);
+    float count = 0;
+    for (int y = 0; y < truth.height; ++y)
+      for (int x = 0; x < truth.width; ++x)
+        if (whole.back().at(x, y)) sum += glm::vec2(x, y), count += 1;
+    const glm::vec2 middle = sum / std::max(count, 1.0f);
+    for (int y = 0; y < truth.height; ++y)
+      for (int x = 0; x < truth.width; ++x)  // a patch about the middle is keyed away
+        if (whole.back().at(x, y) && glm::length(glm::vec2(x, y) - middle) > kLostRadius) photo.at(x, y)[3] = 255;
+    photos.photos.push_back(std::move(photo));
+    photos.names.push_back("photo-" + std::to_string(photos.names.size()));
+    const float a = glm::radians(view.azimuth_deg), e = glm::radians(truth.elevations_deg[size_t(view.row)]);
+    photos.directions.push_back({std::sin(a) * std::cos(e), std::sin(e), std::cos(a) * std::cos(e)});
+  }
   PhotoSilhouettes as_keyed = photo_silhouettes(photos, true);
   double keyed_iou = 0;
   try {
