@@ -143,13 +143,13 @@ def speech_follows(heard, source):
 
 def tone_holds(heard):
     """The share of 100 ms steps above -45 dBFS from the first loud one to the last (the browser
-    member joined, then left): a tone that holds, not one that breaks up."""
+    member joined, then left), and that span in seconds: a tone that holds, not one that breaks up."""
     steps = [max(heard[i:i + 5]) for i in range(0, len(heard) - 5, 5)]
     loud = [i for i, s in enumerate(steps) if s > -45]
     if not loud:
-        return 0.0
+        return 0.0, 0.0
     during = steps[loud[0]:loud[-1] + 1]
-    return sum(1 for s in during if s > -45) / len(during)
+    return sum(1 for s in during if s > -45) / len(during), len(during) / 10
 
 
 faces = ((os.path.abspath(os.path.join(YALE, "subject07_normal.png")), os.path.abspath(os.path.join(YALE, "subject07_happy.png"))) if yale
@@ -176,16 +176,21 @@ try:
             end = time.time() + 30
             while time.time() < end and not driver.execute_script(f"const e = {element}; return !!e && !!e.link && e.preview.videoWidth > 0"):
                 time.sleep(0.2)
-            # The native member: its camera turns from neutral to a smile after 4 s, it speaks for its whole stay.
+            # The native member: its camera turns from neutral to a smile after 8 s (time for the page to
+            # see it join under the whole suite's load), it speaks for its whole stay.
             native = subprocess.Popen([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{server.tcp}", "--session", f"call-{name}", "--name", "Nat",
-                                       "--camera", face_frames(os.path.join(OUT, f"nat-{name}"), *faces, (4, 60)), "--microphone", nat_wav, "--headless",
+                                       "--camera", face_frames(os.path.join(OUT, f"nat-{name}"), *faces, (8, 60)), "--microphone", nat_wav, "--headless",
                                        "--frames", str(15 * 55), "--fps", "15", "--size", "320x240", "--out", os.path.join(out, "nat.mp4"),
                                        "--audio-out", os.path.join(out, "nat-heard.wav"), "--frame-log", os.path.join(out, "nat.jsonl"),
                                        "--cache", os.path.join(out, "cache-nat")], stderr=open(os.path.join(out, "nat.log"), "w"))
             driver.execute_script(f"const e = {element}; e.nameInput.value = '{member}'; e.join(); e.link.record();")
             end = time.time() + 20
             names = lambda: sorted(m["name"] for m in driver.execute_script(f"return {element}.members"))
+            # Nat's expressions as this page sees them, from the moment Nat is there.
+            seen = set()
+            nat_expressions = lambda: {m["expression"] for m in driver.execute_script(f"return {element}.members") if m["name"] == "Nat"}
             while time.time() < end and names() != sorted([member, "Nat"]):
+                seen |= nat_expressions()
                 time.sleep(0.2)
             checks.check(names() == sorted([member, "Nat"]), f"{name}: in the call with the native member ({names()})")
             reason = driver.execute_script(f"return {element}.reason")
@@ -194,10 +199,9 @@ try:
             checks.check(shared == [True, True], f"{name}: the call page is cross-origin isolated and its voice goes through shared rings ({shared})")
 
             # Voice flowing both ways, then the page's thread blocked 400 ms in every 2 s.
-            seen = set()
             end = time.time() + 15
             while time.time() < end and not driver.execute_script(f"return {element}.voiceStats.played > 20"):
-                seen |= {m["expression"] for m in driver.execute_script(f"return {element}.members") if m["name"] == "Nat"}
+                seen |= nat_expressions()
                 time.sleep(0.3)
             counts = f"return await {element}.link.figures(true)"
             for stall in STALLS:  # the bench measures a quiet page first; the test, the stalling one
@@ -209,7 +213,7 @@ try:
                 # (the output's own latency apart), in wall time (ms), sampled.
                 plays_at, scheduled_at, earliest = [], [], None
                 while time.time() < end:
-                    seen |= {m["expression"] for m in driver.execute_script(f"return {element}.members") if m["name"] == "Nat"}
+                    seen |= nat_expressions()
                     at = driver.execute_script(PLAYS_AT.replace("ELEMENT", element))
                     if at is not None:
                         if at[0] is not None:
@@ -341,10 +345,16 @@ try:
             checks.check(follows >= 0.6, f"{name}: the native member hears the browser's speech (envelope correlation {follows:.2f} >= 0.6)")
         else:
             # This engine's worker socket also sends through the page's thread: each 400 ms stall
-            # holds its packets back past the native member's jitter rule, a 100 ms gap or two.
-            holds = tone_holds(heard_env)
-            print(f"{name}: the native member heard {loud:.1f} s of sound; the fake microphone's sound held in {holds:.1%} of 100 ms steps")
-            checks.check(loud >= 5 and holds >= 0.9, f"{name}: the native member hears the browser's microphone ({loud:.1f} s, held {holds:.1%})")
+            # holds its packets back past the native member's jitter rule, a 100 ms gap or two when
+            # the machine is quiet (90-97% held), up to the stall's whole length under the suite's
+            # load (85%). What breaks must stay within what the stalls held back.
+            holds, heard_for = tone_holds(heard_env)
+            stalled = STALL_SECONDS / 2 * max(STALLS) / 1000
+            print(f"{name}: the native member heard {loud:.1f} s of sound; the fake microphone's sound held in {holds:.1%} of 100 ms steps, "
+                  f"{(1 - holds) * heard_for:.1f} s of gaps in {heard_for:.1f} s, the page stalled {stalled:.1f} s")
+            checks.check(loud >= 5 and (1 - holds) * heard_for <= stalled,
+                         f"{name}: the native member hears the browser's microphone but where the page stalled "
+                         f"({loud:.1f} s, {(1 - holds) * heard_for:.1f} s of gaps <= {stalled:.1f} s stalled)")
 finally:
     server.stop()
 if BENCH:
