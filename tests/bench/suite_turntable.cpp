@@ -22,6 +22,7 @@
 #include <unistd.h>
 
 #include <glm/trigonometric.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "common/camera.hpp"
 #include "protocol/framing.hpp"
@@ -175,6 +176,33 @@ Image without_watermark_corner(Image image, glm::u8vec3 colour) {
   return image;
 }
 
+// The bound of any tween that warps two photos and blends them: each warped onto the held-out
+// photo by the optical flow from it (the truth's own correspondences, found with the truth in
+// hand), blended as the flow reference is. What stays wrong is what neither photo shows where the
+// held-out one does (parts turned into sight, light that moved over the surface), and the flow's
+// own misses.
+Image flow_from_truth(const Image& truth, const Image& a, const Image& b, float t) {
+  DenseMatchOptions whole;
+  whole.use_mattes = false;
+  const cv::Mat to_a = dense_matches(truth, a, whole).forward, to_b = dense_matches(truth, b, whole).forward;
+  const auto warped = [&](const Image& photo, const cv::Mat& flow) {
+    cv::Mat map(photo.height, photo.width, CV_32FC2), out;
+    for (int y = 0; y < photo.height; ++y)
+      for (int x = 0; x < photo.width; ++x) {
+        const cv::Vec2f f = flow.at<cv::Vec2f>(y, x);
+        map.at<cv::Vec2f>(y, x) = {float(x) + f[0], float(y) + f[1]};
+      }
+    cv::remap(cv::Mat(photo.height, photo.width, CV_8UC4, const_cast<uint8_t*>(photo.pixels.data())), out, map, {}, cv::INTER_LINEAR,
+              cv::BORDER_REPLICATE);
+    return out;
+  };
+  cv::Mat blended;
+  cv::addWeighted(warped(a, to_a), 1.0 - t, warped(b, to_b), t, 0.0, blended);
+  Image out(a.width, a.height);
+  std::copy_n(blended.ptr<uint8_t>(0), out.pixels.size(), out.pixels.data());
+  return out;
+}
+
 // Which photos of a set make the product and which are held out: every other photo of a row
 // (and with rows, every other row: the held-out rows lie between kept ones, so their views are
 // tweened up and down as well as round).
@@ -222,7 +250,8 @@ HeldOut hold_out(const PhotoFolder& all) {
 // tween of the stored product over the photo's own backdrop colour, and the optical-flow
 // interpolation of the two product photos it lies between (everything on the client: the
 // quality reference). Views are written beside the truth for looking at:
-// [truth | spin | cross-fade | tween | flow] in DIR/turntable-NAME-K.png.
+// [truth | spin | cross-fade | tween | flow | tween with the shape | flow from the truth] in
+// DIR/turntable-NAME-K.png.
 std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const fs::path& output_dir, bool even_turn) {
   const std::string name = folder.filename().empty() ? folder.parent_path().filename().string() : folder.filename().string();
   PhotoFolder all = read_photo_folder(folder, {});
@@ -271,7 +300,7 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
     shaped_renderer.configure(style_params("tween").front());
     shaped_renderer.use_model(model_of(*shaped, shaped_state));
   }
-  Scores spin, fade, tween, flow, tween_shape;
+  Scores spin, fade, tween, flow, tween_shape, bound;
   auto score = [](Scores& s, const Image& view, const Image& truth) {
     s.psnr.push_back(psnr(view, truth));
     s.ssim.push_back(ssim(view, truth));
@@ -305,6 +334,8 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
     score(fade, fade_view, truth);
     score(tween, tween_view, truth);
     score(flow, flow_view, truth);
+    const Image bound_view = without_watermark_corner(flow_from_truth(all.photos[k], kept.photos[size_t(before)], kept.photos[size_t(after)], t), colour);
+    score(bound, bound_view, truth);
     std::vector<Image> views = {truth, spin_view, fade_view, tween_view, flow_view};
     std::vector<std::string> labels = {"held out", "spin", "cross-fade", "tween", "flow"};
     if (shaped) {
@@ -312,23 +343,26 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
       labels.push_back("tween, shape");
       score(tween_shape, views.back(), truth);
     }
+    views.push_back(bound_view);
+    labels.push_back("flow from the truth");
     if (!output_dir.empty()) save_image(side_by_side(views, labels), output_dir / ("turntable-" + name + "-" + std::to_string(k) + ".png"), false);
   }
   const uint64_t photo_bytes = bytes_of(state, protocol::AssetKind::Samples), matte_bytes = bytes_of(state, protocol::AssetKind::Matte),
                  tween_bytes = bytes_of(state, protocol::AssetKind::Tween);
   const std::string suffix = ",n=" + std::to_string(n) + ",data=" + name;
   std::vector<Result> rows = {row("spin" + suffix, name, n, spin, false), row("crossfade" + suffix, name, n, fade, false),
-                              row("tween" + suffix, name, n, tween, false), row("flow" + suffix, name, n, flow, false)};
+                              row("tween" + suffix, name, n, tween, false), row("flow" + suffix, name, n, flow, false),
+                              row("flow-from-truth" + suffix, name, n, bound, false)};
   rows[0].counters["bytes_total"] = double(photo_bytes);
   rows[2].counters["bytes_total"] = double(photo_bytes + matte_bytes + tween_bytes);
   rows[2].counters["bytes_tween"] = double(tween_bytes);
   rows[2].counters["bytes_per_pair"] = double(tween_bytes) / double(std::max<size_t>(product.data.cells.size(), 1));
   rows[2].counters["tween_share"] = double(tween_bytes) / double(photo_bytes + matte_bytes + tween_bytes);
-  rows[2].counters["seconds_to_make"] = seconds_to_make;
+  rows[2].counters["seconds_add_product"] = seconds_to_make;
   rows[2].counters["turn_from_matches"] = turn_found;
   if (shaped) {
     rows.push_back(row("tween-shape" + suffix, name, n, tween_shape, false));
-    rows.back().counters["seconds_to_make"] = seconds_with_shape;
+    rows.back().counters["seconds_add_product"] = seconds_with_shape;
     rows.back().counters["bytes_tween"] = double(bytes_of(shaped_state, protocol::AssetKind::Tween));
     const ShapeReport& found = *shaped->shape;
     rows.back().counters["hull_iou_min"] = found.iou_worst;
@@ -336,7 +370,7 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
     rows.back().counters["mattes_filled"] = found.source == SilhouetteSource::FilledMattes;
     if (found.found) {  // a calibration came with the photos: the camera the silhouettes gave against it
       rows.back().counters["focal_error"] = double(found.found->focal_px / found.camera.focal_px) - 1.0;
-      rows.back().counters["elevation_error"] = double(found.found->elevations_deg[0] - found.camera.elevations_deg[0]);
+      rows.back().counters["elevation_error_deg"] = double(found.found->elevations_deg[0] - found.camera.elevations_deg[0]);
     }
   }
   // Zoom (SPEC T18): each finer level's size and bytes, fetched only zoomed in (a few photos of
@@ -354,10 +388,10 @@ std::vector<Result> photo_set_rows(Canvas& canvas, const fs::path& folder, const
   std::fprintf(stderr, "inkwire-bench: turntable %s zoom levels: %s\n", name.c_str(), levels_said.c_str());
   std::fprintf(stderr,
                "inkwire-bench: turntable %s (%zu held out): spin %.2f dB, cross-fade %.2f dB, tween %.2f dB, flow %.2f dB, %.0f B a pair; "
-               "tween with the shape %s\n",
+               "tween with the shape %s; warped by the flow from the held-out photo %.2f dB\n",
                name.c_str(), spin.psnr.size(), Scores::mean(spin.psnr), Scores::mean(fade.psnr), Scores::mean(tween.psnr),
                Scores::mean(flow.psnr), rows[2].counters["bytes_per_pair"],
-               shaped ? (std::to_string(Scores::mean(tween_shape.psnr)) + " dB").c_str() : "none (no shape found)");
+               shaped ? (std::to_string(Scores::mean(tween_shape.psnr)) + " dB").c_str() : "none (no shape found)", Scores::mean(bound.psnr));
   fs::remove_all(data);
   return rows;
 }
