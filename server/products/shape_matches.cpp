@@ -152,7 +152,7 @@ ShapeTracks shape_tracks(const PhotoShape& shape, const std::vector<uint16_t>& c
         const glm::vec2 pixel(float(x) + 0.5f, float(y) + 0.5f);
         std::vector<glm::vec2> places(cell.size(), pixel);  // in each photo of the cell
         bool projected = true, seen_by_all = true, outline = near_background(from, pixel);
-        for (size_t j = 0; j < cell.size() && projected; ++j) {
+        for (size_t j = 0; j < cell.size(); ++j) {
           if (j == k) continue;
           const std::optional<Sighting> s = sighting(shape, from, pixel, cell[j]);
           projected = s.has_value();

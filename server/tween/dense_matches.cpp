@@ -107,26 +107,30 @@ DenseMatches dense_matches(const Image& a, const Image& b, const DenseMatchOptio
   return m;
 }
 
+Image blend_along_flows(const Image& a, const cv::Mat& flow_a, float reach_a, const Image& b, const cv::Mat& flow_b, float reach_b, float t) {
+  const auto warped = [](const Image& photo, const cv::Mat& flow, float reach) {
+    cv::Mat map(photo.height, photo.width, CV_32FC2), out;
+    for (int y = 0; y < photo.height; ++y)
+      for (int x = 0; x < photo.width; ++x) {
+        const cv::Vec2f f = flow.at<cv::Vec2f>(y, x);
+        map.at<cv::Vec2f>(y, x) = {float(x) + reach * f[0], float(y) + reach * f[1]};
+      }
+    const cv::Mat rgba(photo.height, photo.width, CV_8UC4, const_cast<uint8_t*>(photo.pixels.data()));
+    cv::remap(rgba, out, map, {}, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+    return out;
+  };
+  cv::Mat blended;
+  cv::addWeighted(warped(a, flow_a, reach_a), 1.0 - t, warped(b, flow_b, reach_b), t, 0.0, blended);
+  Image out(a.width, a.height);
+  std::copy_n(blended.ptr<uint8_t>(0), out.pixels.size(), out.pixels.data());
+  return out;
+}
+
 Image flow_interpolation(const Image& a, const Image& b, float t) {
   DenseMatchOptions whole;
   whole.use_mattes = false;
   const DenseMatches m = dense_matches(a, b, whole);
-  const cv::Mat rgba_a(a.height, a.width, CV_8UC4, const_cast<uint8_t*>(a.pixels.data()));
-  const cv::Mat rgba_b(b.height, b.width, CV_8UC4, const_cast<uint8_t*>(b.pixels.data()));
-  cv::Mat map_a(a.height, a.width, CV_32FC2), map_b(a.height, a.width, CV_32FC2);
-  for (int y = 0; y < a.height; ++y)
-    for (int x = 0; x < a.width; ++x) {
-      const cv::Vec2f fa = m.forward.at<cv::Vec2f>(y, x), fb = m.backward.at<cv::Vec2f>(y, x);
-      map_a.at<cv::Vec2f>(y, x) = {float(x) - t * fa[0], float(y) - t * fa[1]};
-      map_b.at<cv::Vec2f>(y, x) = {float(x) - (1.0f - t) * fb[0], float(y) - (1.0f - t) * fb[1]};
-    }
-  cv::Mat warped_a, warped_b, blended;
-  cv::remap(rgba_a, warped_a, map_a, {}, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
-  cv::remap(rgba_b, warped_b, map_b, {}, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
-  cv::addWeighted(warped_a, 1.0 - t, warped_b, t, 0.0, blended);
-  Image out(a.width, a.height);
-  std::copy_n(blended.ptr<uint8_t>(0), out.pixels.size(), out.pixels.data());
-  return out;
+  return blend_along_flows(a, m.forward, -t, b, m.backward, -(1.0f - t), t);
 }
 
 cv::Mat warp_flow(const std::vector<Landmark>& points, cv::Size size) {

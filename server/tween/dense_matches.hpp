@@ -69,6 +69,11 @@ std::vector<Track> distil_tracks(const std::vector<const DenseMatches*>& flows, 
 // photos' (mattes warp with their photos).
 Image flow_interpolation(const Image& a, const Image& b, float t);
 
+// Two photos warped backward, each read at every pixel x at x + reach * its flow (x), and
+// blended by t: (1 - t) a's + t b's. flow_interpolation's last step; the benchmark's bound warps
+// by the flows from the held-out photo, reach 1.
+Image blend_along_flows(const Image& a, const cv::Mat& flow_a, float reach_a, const Image& b, const cv::Mat& flow_b, float reach_b, float t);
+
 // The flow of the piecewise-linear warp through `points` (source -> target) at every pixel of a
 // `size` image, triangulated on the sources; pixels outside every triangle get zero flow.
 cv::Mat warp_flow(const std::vector<Landmark>& points, cv::Size size);

@@ -22,7 +22,6 @@
 #include <unistd.h>
 
 #include <glm/trigonometric.hpp>
-#include <opencv2/imgproc.hpp>
 
 #include "common/camera.hpp"
 #include "protocol/framing.hpp"
@@ -184,23 +183,7 @@ Image without_watermark_corner(Image image, glm::u8vec3 colour) {
 Image flow_from_truth(const Image& truth, const Image& a, const Image& b, float t) {
   DenseMatchOptions whole;
   whole.use_mattes = false;
-  const cv::Mat to_a = dense_matches(truth, a, whole).forward, to_b = dense_matches(truth, b, whole).forward;
-  const auto warped = [&](const Image& photo, const cv::Mat& flow) {
-    cv::Mat map(photo.height, photo.width, CV_32FC2), out;
-    for (int y = 0; y < photo.height; ++y)
-      for (int x = 0; x < photo.width; ++x) {
-        const cv::Vec2f f = flow.at<cv::Vec2f>(y, x);
-        map.at<cv::Vec2f>(y, x) = {float(x) + f[0], float(y) + f[1]};
-      }
-    cv::remap(cv::Mat(photo.height, photo.width, CV_8UC4, const_cast<uint8_t*>(photo.pixels.data())), out, map, {}, cv::INTER_LINEAR,
-              cv::BORDER_REPLICATE);
-    return out;
-  };
-  cv::Mat blended;
-  cv::addWeighted(warped(a, to_a), 1.0 - t, warped(b, to_b), t, 0.0, blended);
-  Image out(a.width, a.height);
-  std::copy_n(blended.ptr<uint8_t>(0), out.pixels.size(), out.pixels.data());
-  return out;
+  return blend_along_flows(a, dense_matches(truth, a, whole).forward, 1.0f, b, dense_matches(truth, b, whole).forward, 1.0f, t);
 }
 
 // Which photos of a set make the product and which are held out: every other photo of a row
