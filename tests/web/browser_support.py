@@ -222,6 +222,16 @@ http {{ access_log {prefix}/logs/access.log; client_body_temp_path {prefix}/tmp;
     def log_size(self):
         return os.path.getsize(self.access_log)
 
+    def settled_log_size(self, quiet=1.0, longest=15.0):
+        """log_size() once the log has not grown for `quiet` seconds (at most `longest`): nginx
+        logs a request when it ends, so a page's fetches still in flight land before this."""
+        end, size, since = time.time() + longest, self.log_size(), time.time()
+        while time.time() < end and time.time() - since < quiet:
+            time.sleep(0.1)
+            if self.log_size() != size:
+                size, since = self.log_size(), time.time()
+        return size
+
     def requests_since(self, start):
         import re
         with open(self.access_log) as f:
