@@ -11,6 +11,7 @@
 // view to the session as object poses, `follow` shows the newest view a presenter sent (a drag
 // turns it until the next); property azimuth (degrees); attribute `loaded` once every photo and
 // tween cell is there.
+import { fitScale } from '../common/framing.js';
 import { SessionElement } from './session_element.js';
 import { AutoSpinMixin } from './turntable/autospin.js';
 import { ControlsMixin } from './turntable/controls.js';
@@ -74,7 +75,9 @@ export class InkwireTurntable extends PresenterMixin(AutoSpinMixin(ControlsMixin
     if (!this.gl || !this.view) return;
     this.present();
     const [width, height] = this.beginFrame();
-    this.displayHeight = height;
+    // The photos' height on the display (letterboxed in a narrow element), for the level it needs.
+    const { product } = this.snapshot;
+    this.displayHeight = height * fitScale(width / height, product.width / product.height);
     this.view.useFiner = this.wantedLevel() > 0;
     if (this.wake) this.wake(), this.wake = null;  // the view may need photos it did not
     if (this.view.draw([width, height], this.direction(), this.zoom) && this.firstViewPhotos === undefined) {
