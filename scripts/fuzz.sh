@@ -10,7 +10,7 @@ cd "$here"
 seconds=${1:-600}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_frames fuzz_message fuzz_tween fuzz_landmarks fuzz_http fuzz_websocket fuzz_config fuzz_broker fuzz_voice fuzz_glb fuzz_video fuzz_calibration)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_frames fuzz_message fuzz_tween fuzz_landmarks fuzz_http fuzz_websocket fuzz_config fuzz_broker fuzz_voice fuzz_glb fuzz_video fuzz_calibration fuzz_upload)
 
 if [ "${FUZZ_TABLE_ONLY:-0}" != 1 ]; then
 for p in clang libclang-rt-14-dev; do
@@ -34,6 +34,28 @@ for t in "${targets[@]}"; do mkdir -p "fuzz-corpus/$t"; done
 if [ -d fuzz-corpus/fuzz_config ]; then
   cp deploy/example/instance-a.json deploy/example/instance-b.json fuzz-corpus/fuzz_config/
   printf '{"tls": {"certificate": "c.pem", "key": "k.pem"}, "max_connections": 10, "sessions": [{"name": "t", "kind": "turntable", "product": {"photos": "p", "step": 15}}, {"name": "c", "kind": "conference", "face": {"source": "camera:0"}}]}' > fuzz-corpus/fuzz_config/keys.json
+fi
+
+# Uploads: every file of assimp's invalid corpus as the one file of a multipart body (the first
+# byte chooses the pieces the body comes in), and a glTF with its .bin.
+if [ -d fuzz-corpus/fuzz_upload ]; then
+  /usr/bin/python3 - <<'PY'
+import os
+def body(files):
+    out = b"\x10"
+    for name, data in files:
+        out += b"--inkwire-fuzz-boundary\r\nContent-Disposition: form-data; name=\"file\"; filename=\"" + name.encode() + b"\"\r\n\r\n" + data + b"\r\n"
+    return out + b"--inkwire-fuzz-boundary--\r\n"
+invalid = "/usr/share/assimp/models/invalid"
+for name in sorted(os.listdir(invalid)) if os.path.isdir(invalid) else []:
+    path = os.path.join(invalid, name)
+    if os.path.isfile(path) and os.path.getsize(path) < 1 << 20:
+        open(f"fuzz-corpus/fuzz_upload/invalid-{name}", "wb").write(body([(name, open(path, "rb").read())]))
+box = "/usr/share/assimp/models/glTF2/BoxTextured-glTF"
+if os.path.isdir(box):
+    open("fuzz-corpus/fuzz_upload/box", "wb").write(body([(n, open(os.path.join(box, n), "rb").read())
+                                                          for n in ("BoxTextured.gltf", "BoxTextured0.bin", "CesiumLogoFlat.png")]))
+PY
 fi
 
 # A calibration of four cameras round an object, 10 degrees apart (a lab's *_par.txt).

@@ -138,6 +138,14 @@ AssetStore::AssetStore(const fs::path& dir) : dir_(dir) {
   bool has_editor_token = false;
   for (Statement q(db_, "PRAGMA table_info(sessions)"); q.step();) has_editor_token |= q.text(1) == "editor_token";
   if (!has_editor_token) exec("ALTER TABLE sessions ADD COLUMN editor_token TEXT NOT NULL DEFAULT ''");
+  // ... and, from before sessions people make, who made each (the operator, for those before).
+  bool has_maker = false;
+  for (Statement q(db_, "PRAGMA table_info(sessions)"); q.step();) has_maker |= q.text(1) == "made_by";
+  if (!has_maker) {
+    exec("ALTER TABLE sessions ADD COLUMN made_by TEXT NOT NULL DEFAULT 'operator'");
+    exec("ALTER TABLE sessions ADD COLUMN creator TEXT NOT NULL DEFAULT ''");
+    exec("ALTER TABLE sessions ADD COLUMN kept INTEGER NOT NULL DEFAULT 0");
+  }
   changed_elsewhere();  // from here on, what other processes write is noticed
 }
 
@@ -292,10 +300,11 @@ bool AssetStore::changed_elsewhere() {
 
 std::vector<StoredSession> AssetStore::sessions() const {
   std::vector<StoredSession> out;
-  Statement q(db_, "SELECT name, token, editor_token, state FROM sessions ORDER BY name");
+  Statement q(db_, "SELECT name, token, editor_token, state, made_by, creator, kept FROM sessions ORDER BY name");
   while (q.step()) {
     try {
-      out.push_back({as_token_hash(q.text(1)), as_token_hash(q.text(2)), decode_state(q.blob(3))});
+      out.push_back({.token = as_token_hash(q.text(1)), .editor_token = as_token_hash(q.text(2)), .state = decode_state(q.blob(3)),
+                     .maker = made_by_from_string(q.text(4)), .creator = q.text(5), .kept = q.integer(6) != 0});
     } catch (const Error& e) {
       log_warn("session-state-unreadable", {{"session", q.text(0)}, {"reason", e.what()}});
     }
@@ -342,10 +351,36 @@ bool AssetStore::remove_product(const std::string& name) {
   return true;
 }
 
+bool AssetStore::remove_session(const std::string& name) {
+  Statement find(db_, "SELECT name FROM sessions WHERE name = ?");
+  find.bind(1, name);
+  if (!find.step()) return false;
+  Statement(db_, "DELETE FROM sessions WHERE name = ?").bind(1, name).step();
+  return true;
+}
+
 void AssetStore::save_session(const StoredSession& session) {
-  Statement(db_, "INSERT OR REPLACE INTO sessions (name, kind, token, editor_token, state, updated) VALUES (?, ?, ?, ?, ?, CURRENT_TIMESTAMP)")
+  Statement(db_, "INSERT OR REPLACE INTO sessions (name, kind, token, editor_token, state, made_by, creator, kept, updated) "
+                 "VALUES (?, ?, ?, ?, ?, ?, ?, ?, CURRENT_TIMESTAMP)")
       .bind(1, session.state.session).bind(2, protocol::to_string(session.state.kind)).bind(3, session.token)
-      .bind(4, session.editor_token).bind_blob(5, protocol::encode(session.state)).step();
+      .bind(4, session.editor_token).bind_blob(5, protocol::encode(session.state)).bind(6, to_string(session.maker))
+      .bind(7, session.creator).bind(8, int64_t(session.kept)).step();
+}
+
+const char* to_string(MadeBy maker) {
+  switch (maker) {
+    case MadeBy::Operator: return "operator";
+    case MadeBy::Room: return "room";
+    case MadeBy::Upload: return "upload";
+    case MadeBy::Command: return "add-scene";
+  }
+  return "operator";
+}
+
+MadeBy made_by_from_string(const std::string& name) {
+  for (MadeBy m : {MadeBy::Operator, MadeBy::Room, MadeBy::Upload, MadeBy::Command})
+    if (name == to_string(m)) return m;
+  throw Error("unknown session maker '" + name + "'");
 }
 
 }  // namespace inkwire::server

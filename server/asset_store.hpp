@@ -17,10 +17,22 @@ struct sqlite3;
 
 namespace inkwire::server {
 
+// Who made a session (SPEC N6-N9): the operator (its config, add-product), a visitor who opened a
+// call room or uploaded a model, or `add-scene`. Sessions people make on demand go when unused
+// (server/making/session_maker.hpp) unless kept.
+enum class MadeBy : uint8_t { Operator = 0, Room = 1, Upload = 2, Command = 3 };
+const char* to_string(MadeBy maker);
+MadeBy made_by_from_string(const std::string& name);  // throws inkwire::Error
+
 struct StoredSession {
   std::string token;  // hash_token() of the session's token (session_token.hpp); empty: anyone may join
   std::string editor_token;  // hash_token() of the token that makes a member an editor (authority.hpp); empty: none
   protocol::Snapshot state;
+  MadeBy maker = MadeBy::Operator;
+  std::string creator;  // the address that made it, for the caps per address (made on demand only)
+  bool kept = false;    // kept however long it goes unused (made on demand only)
+  // Made on demand and gone when unused long enough.
+  bool expires() const { return (maker == MadeBy::Room || maker == MadeBy::Upload) && !kept; }
 };
 
 class AssetStore {
@@ -57,6 +69,9 @@ class AssetStore {
   // under that name, so its assets are named no more (swept after the grace period at a start)
   // and a running server drops it. False when the catalogue has no product of that name.
   bool remove_product(const std::string& name);
+  // Takes session `name` out of the catalogue whatever its kind (a room gone, a scene removed);
+  // false when there is none.
+  bool remove_session(const std::string& name);
 
   // Assets no session and no product names, stored more than `grace` ago: what an add-product
   // killed half-way leaves (its files are written before the product that names them). Their

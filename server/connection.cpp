@@ -6,6 +6,7 @@
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "protocol/framing.hpp"
+#include "server/making/session_maker.hpp"
 #include "server/relay/relay.hpp"
 #include "server/server.hpp"
 #include "server/session.hpp"
@@ -204,6 +205,7 @@ void Connection::handle(Message& message) {
     case MessageType::VoiceFrame:
       publish(message);
       break;
+    case MessageType::RoomControl: control_room(std::get<RoomControl>(message)); break;
     case MessageType::StyleChange:
     case MessageType::CameraPose:
     case MessageType::ObjectPose:
@@ -216,12 +218,27 @@ void Connection::handle(Message& message) {
 }
 
 void Connection::join(const Join& join) {
-  const auto session = server_.find_session(join.session);
+  std::shared_ptr<Session> session = server_.find_session(join.session);
+  std::string host_key;
+  if (!session && join.open_room) {
+    // A call room of that name, opened for this member, who becomes its host (SPEC N6-N7).
+    SessionMaker::Made made = server_.maker().open_room(join.session, join.token, address_, SessionMaker::Clock::now());
+    if (!made.session) {
+      log_info("room-refused", {{"client", id_}, {"peer", peer_}, {"session", join.session}, {"reason", made.refusal}});
+      send(ErrorMessage{.code = ErrorCode::Refused, .reason = made.refusal});
+      return;
+    }
+    session = std::move(made.session);
+    host_key = std::move(made.key);
+  }
   if (!session) {
     send(ErrorMessage{.code = ErrorCode::NoSession, .reason = "no session named '" + join.session + "'"});
     return;
   }
-  const std::optional<Role> role = session->role_of(join.token);
+  std::optional<Role> role = host_key.empty() ? session->role_of(join.token) : std::optional<Role>(Role::Editor);
+  // Asking to open a room that is open already joins it: the token given (a creator token, or a
+  // host key of a room of that name that is gone) is no guess at this one's key.
+  if (!role && join.open_room) role = session->role_of("");
   if (!role) {
     server_.admission().join_failed(address_);
     log_warn("bad-token", {{"client", id_}, {"peer", peer_}, {"session", join.session}});
@@ -232,15 +249,22 @@ void Connection::join(const Join& join) {
     send(ErrorMessage{.code = ErrorCode::NoAsset, .reason = "session '" + join.session + "' cannot be shown: " + session->unavailable()});
     return;
   }
-  if (!join.token.empty()) server_.admission().join_succeeded(address_);
+  if (Call* call = session->call(); call && call->locked() && *role != Role::Editor) {
+    const std::string host = call->host_name();
+    send(ErrorMessage{.code = ErrorCode::Locked,
+                      .reason = "room " + join.session + " is locked: ask " + (host.empty() ? std::string("its host") : host + " (its host)") + " to open it"});
+    return;
+  }
+  if (!join.token.empty() && host_key.empty()) server_.admission().join_succeeded(address_);
   leave_session();
   session_ = session;
   role_ = *role;
   session_->join(shared_from_this());
-  if (Call* call = session_->call()) call->join(shared_from_this(), client_name_);
+  if (Call* call = session_->call()) call->join(shared_from_this(), client_name_, role_ == Role::Editor);
   log_info("join", {{"client", id_}, {"name", client_name_}, {"session", join.session}, {"members", session_->members()},
                     {"role", role_ == Role::Editor ? "editor" : "visitor"}});
   send(session_->state());
+  if (!host_key.empty()) send(HostKey{.key = host_key});
   // What this member will be refused, said now: its controls for those can be off from the start.
   Permissions permissions;
   for (const MessageType change : {MessageType::StyleChange, MessageType::CameraPose, MessageType::ObjectPose, MessageType::ExpressionCode})
@@ -301,6 +325,26 @@ void Connection::change(const Message& change) {
     return;
   }
   server_.relay().publish(*session_, change, id_);
+}
+
+// The host's controls of its room (SPEC N7): from anyone else, refused with the reason.
+void Connection::control_room(const RoomControl& control) {
+  Call* call = session_ ? session_->call() : nullptr;
+  if (!call) {
+    send(ErrorMessage{.code = session_ ? ErrorCode::NotAllowed : ErrorCode::NotJoined, .reason = "room-control outside a call"});
+    return;
+  }
+  if (role_ != Role::Editor) {
+    ++server_.counters().changes_refused;
+    send(ErrorMessage{.code = ErrorCode::NotAllowed, .reason = "only the room's host may lock it, open it or remove a member"});
+    return;
+  }
+  if (control.action == RoomAction::Remove) {
+    if (!call->remove(control.member, "the host removed you from room " + session_->name()))
+      send(ErrorMessage{.code = ErrorCode::NotAllowed, .reason = "no member " + std::to_string(control.member) + " in this call"});
+    return;
+  }
+  call->set_locked(control.action == RoomAction::Lock);
 }
 
 void Connection::send_tween_cells() {

@@ -51,6 +51,7 @@ class Connection : public std::enable_shared_from_this<Connection> {
   asio::awaitable<void> watchdog();
   void handle(protocol::Message& message);
   void join(const protocol::Join& join);
+  void control_room(const protocol::RoomControl& control);
   void change(const protocol::Message& change);
   void publish(protocol::Message& message);
   void leave_session();

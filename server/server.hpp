@@ -15,6 +15,7 @@
 #include "server/admission.hpp"
 #include "server/asset_store.hpp"
 #include "server/config.hpp"
+#include "server/making/session_maker.hpp"
 #include "server/session.hpp"
 #include "server/session_registry.hpp"
 
@@ -64,6 +65,8 @@ class Server {
   std::shared_ptr<Connection> voice_ticket_holder(const std::string& ticket) const;
   // Who is taken on: places within the connection caps, joins slowed after wrong tokens.
   Admission& admission() { return admission_; }
+  // Sessions people make themselves: rooms, uploaded scenes (SPEC N6-N10).
+  SessionMaker& maker() { return *maker_; }
   size_t connection_count() const { return connections_.size(); }
   // Open connections by transport ("tcp", "tls", "websocket") and whether they are in a session.
   std::map<std::pair<std::string, bool>, size_t> connections_by_kind() const;
@@ -99,6 +102,7 @@ class Server {
   // tell it of members leaving until the last of them is gone.
   std::unique_ptr<CallAnalyst> call_analyst_;
   std::optional<SessionRegistry> registry_;  // made with the store
+  std::optional<SessionMaker> maker_;
   std::map<const Connection*, std::shared_ptr<Connection>> connections_;
   Admission admission_{config_};
   std::vector<std::unique_ptr<FaceFeed>> face_feeds_;

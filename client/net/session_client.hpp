@@ -39,7 +39,13 @@ class SessionClient {
 
   // Joins a session and waits for its snapshot; throws inkwire::Error (wrong token, no such
   // session, timeout).
-  protocol::Snapshot join(const std::string& session, const std::string& token);
+  // `open_room`: open a call room of that name when no session has it (this client is then its
+  // host, host_key() its key).
+  protocol::Snapshot join(const std::string& session, const std::string& token, bool open_room = false);
+  std::string host_key() const {
+    std::lock_guard lock(mutex_);
+    return host_key_;
+  }
   // Sends a message; state messages are also applied to this client's own copy of the state.
   void send(const protocol::Message& message);
 
@@ -124,6 +130,8 @@ class SessionClient {
   asio::steady_timer rejoin_timer_{io_};
   asio::ip::tcp::resolver::results_type endpoints_;
   std::string host_, client_name_, session_, token_;  // what a rejoin says again
+  bool open_room_ = false;
+  std::string host_key_;
   std::chrono::steady_clock::time_point rejoin_until_{};  // I/O thread only
   std::atomic<bool> rejoin_{false}, rejoining_{false}, stopping_{false};
   std::atomic<uint64_t> connections_{1};

@@ -63,11 +63,12 @@ uint16_t Call::number_for(const std::string& name, const std::string& address) {
   return take_number();
 }
 
-void Call::join(const std::shared_ptr<Connection>& connection, const std::string& name) {
+void Call::join(const std::shared_ptr<Connection>& connection, const std::string& name, bool host) {
   leave(connection->id());
   auto m = std::make_unique<Member>();
   m->connection = connection;
   m->connection_id = connection->id();
+  m->host = host;
   m->entry.member = name.empty() ? take_number() : number_for(name, connection->address());
   m->entry.name = name.empty() ? "member " + std::to_string(m->entry.member) : name;
   members_[connection->id()] = std::move(m);
@@ -84,6 +85,33 @@ void Call::leave(uint64_t connection) {
   members_.erase(it);
   send_roster();
   share_roster();
+}
+
+void Call::set_locked(bool locked) {
+  if (locked_ == locked) return;
+  locked_ = locked;
+  log_info(locked ? "room-locked" : "room-unlocked", {{"session", session_}});
+  send_roster();
+}
+
+bool Call::remove(uint16_t member, const std::string& reason) {
+  Member* m = find_member(member);
+  if (!m) return false;
+  log_info("room-member-removed", {{"session", session_}, {"member", member}, {"name", m->entry.name}});
+  const auto connection = m->connection.lock();
+  // Not kept among those who left: coming back, it is a newcomer (refused while the room is locked).
+  analyst_.forget({session_, member});
+  members_.erase(m->connection_id);
+  send_roster();
+  share_roster();
+  if (connection) connection->close_with(protocol::ErrorCode::Removed, reason);
+  return true;
+}
+
+std::string Call::host_name() const {
+  for (const auto& [id, m] : members_)
+    if (m->host) return m->entry.name;
+  return "";
 }
 
 void Call::publish(uint64_t connection, const protocol::Publish& publish) {
@@ -123,6 +151,9 @@ void Call::send_roster() {
   for (const auto& [id, m] : members_) roster.members.push_back(m->entry);
   for (const auto& [key, r] : remotes_) roster.members.push_back(r.entry);
   if (roster.members.size() > protocol::kMaxMembers) roster.members.resize(protocol::kMaxMembers);
+  roster.locked = locked_;
+  for (const auto& [id, m] : members_)
+    if (m->host) roster.host = m->entry.member;
   for (const auto& [id, m] : members_)
     if (const auto c = m->connection.lock()) {
       roster.you = m->entry.member;

@@ -52,8 +52,19 @@ class Call {
   Call(std::string session, CallOptions options, CallAnalyst& analyst, Counters& counters, Relay& relay, std::string origin);
   ~Call();
 
-  void join(const std::shared_ptr<Connection>& connection, const std::string& name);
+  // `host`: the member joined with the room's host key (SPEC N7).
+  void join(const std::shared_ptr<Connection>& connection, const std::string& name, bool host = false);
   void leave(uint64_t connection);
+
+  // The room's host controls (SPEC N7): a locked room takes no newcomers but its host; a member
+  // removed is closed with error 12 and the reason. False when no member has that number.
+  bool locked() const { return locked_; }
+  void set_locked(bool locked);
+  bool remove(uint16_t member, const std::string& reason);
+  // The name of the host while it is in the call, else empty.
+  std::string host_name() const;
+  // Members of other instances in the roster now.
+  size_t remote_members() const { return remotes_.size(); }
 
   // From a member's connection.
   void publish(uint64_t connection, const protocol::Publish& publish);
@@ -93,6 +104,7 @@ class Call {
   void update_speakers(Clock::time_point now);
 
   std::string session_;
+  bool locked_ = false;
   CallOptions options_;
   CallAnalyst& analyst_;
   Counters& counters_;

@@ -2,6 +2,7 @@
 
 #include <charconv>
 
+#include "common/error.hpp"
 #include "protocol/framing.hpp"
 
 namespace inkwire::server {
@@ -101,14 +102,29 @@ BrokerEvent parse_event(std::string_view payload) {
   return e;
 }
 
+// Who made the session comes first, marked by '@' (definitions from before sessions people make
+// have no mark: the operator's).
 std::string session_definition(const StoredSession& stored) {
   const protocol::Bytes frame = protocol::encode(stored.state);
-  return counted(stored.token) + counted(stored.editor_token) + std::string(frame.begin(), frame.end());
+  return "@" + counted(to_string(stored.maker)) + counted(stored.creator) + (stored.kept ? "1" : "0") + counted(stored.token) +
+         counted(stored.editor_token) + std::string(frame.begin(), frame.end());
 }
 
 StoredSession parse_session_definition(std::string_view text) {
   Reader r{text};
   StoredSession stored;
+  if (!r.rest.empty() && r.rest.front() == '@') {
+    r.rest.remove_prefix(1);
+    try {
+      stored.maker = made_by_from_string(r.name("maker"));
+    } catch (const Error& e) {
+      throw ProtocolError(std::string("broker text: ") + e.what());
+    }
+    stored.creator = r.name("creator");
+    if (r.rest.empty() || (r.rest.front() != '0' && r.rest.front() != '1')) throw ProtocolError("broker text: no kept flag");
+    stored.kept = r.rest.front() == '1';
+    r.rest.remove_prefix(1);
+  }
   stored.token = r.name("token");
   stored.editor_token = r.name("editor token");
   protocol::Message message = r.frame();

@@ -39,6 +39,17 @@ return revision)lua";
 
 // The session's state whole, seeded with this instance's own when the broker has none.
 // KEYS[1] the state hash; ARGV: revision, REV, then field, frame pairs.
+// A session's definition (KEYS[1] field ARGV[1]) and its state (KEYS[2]) deleted if the
+// definition is still ARGV[2].
+constexpr std::string_view kRemoveIfSame = R"lua(
+if redis.call('HGET', KEYS[1], ARGV[1]) == ARGV[2] then
+  redis.call('HDEL', KEYS[1], ARGV[1])
+  redis.call('DEL', KEYS[2])
+  return 1
+end
+return 0
+)lua";
+
 constexpr std::string_view kSeedAndRead = R"lua(
 if redis.call('EXISTS', KEYS[1]) == 0 then redis.call('HSET', KEYS[1], unpack(ARGV)) end
 return redis.call('HGETALL', KEYS[1]))lua";
@@ -402,9 +413,33 @@ void RedisRelay::wait_for_resync(SessionSync& sync, const std::string& name, Eve
   sync.waiting.push_back(std::move(e));
 }
 
+void RedisRelay::session_added(const Session& session) {
+  if (!ready_) return;  // shared with the others when the broker is back
+  share(session);
+  resync(session.name());
+}
+
+// A session gone here (a room empty too long, a scene removed): its definition and state leave
+// the broker only if they are still the ones shared here, so a room of the same name opened
+// since on another instance stays.
+void RedisRelay::session_removed(const std::string& name) {
+  syncs_.erase(name);
+  const auto shared = definitions_.find(name);
+  if (shared == definitions_.end()) return;
+  const std::string definition = std::move(shared->second);
+  definitions_.erase(shared);
+  if (!ready_) return;
+  commands_.command({"EVAL", kRemoveIfSame, "2", kSessions, state_key(name), name, definition}, [name](const redisReply* r) {
+    if (is_error(r)) log_warn("broker-session-not-removed", {{"session", name}, {"reason", reason_of(r)}});
+  });
+}
+
 void RedisRelay::share(const Session& session) {
   const std::string name = session.name();
-  commands_.command({"HSETNX", kSessions, name, session_definition(session.stored())}, [this, name](const redisReply* r) {
+  const std::string definition = session_definition(session.stored());
+  // What this instance knows the session by in the broker: its own, unless another's was there first.
+  definitions_.try_emplace(name, definition);
+  commands_.command({"HSETNX", kSessions, name, definition}, [this, name](const redisReply* r) {
     if (is_error(r)) return;
     if (r->type == REDIS_REPLY_INTEGER && r->integer == 1) {
       log_info("broker-session-shared", {{"session", name}});
@@ -459,6 +494,7 @@ void RedisRelay::adopt_remote(const std::string& name, std::string_view definiti
   auto missing = std::make_shared<std::vector<AssetAnnounce>>();
   for (const AssetAnnounce& a : stored.state.assets)
     if (!server_.store().find(a.hash)) missing->push_back(a);
+  definitions_[name] = std::string(definition);
   auto session = std::make_shared<StoredSession>(std::move(stored));
   auto left = std::make_shared<size_t>(missing->size());
   auto failed = std::make_shared<bool>(false);

@@ -46,6 +46,8 @@ class RedisRelay final : public Relay {
   void publish(Session& session, const protocol::Message& change, uint64_t sender) override;
   RelayStatus status() const override;
   void share_call(const CallShare& share) override;
+  void session_added(const Session& session) override;
+  void session_removed(const std::string& name) override;
 
  private:
   using Event = BrokerEvent;
@@ -94,6 +96,7 @@ class RedisRelay final : public Relay {
   std::map<std::string, SessionSync> syncs_;
   std::map<std::pair<std::string, std::string>, Unsent> unsent_;  // (session, field): latest wins
   std::set<std::string> adopting_;                                 // remote sessions whose assets are on their way
+  std::map<std::string, std::string> definitions_;                 // each session's definition as the broker holds it
   RelayStatus status_;
   std::string publish_digest_;  // SHA-1 of the publish script, for EVALSHA
 };

@@ -41,6 +41,10 @@ class Relay {
   virtual RelayStatus status() const = 0;
   // A call's traffic for the members on other instances (call/call.hpp); nothing to do alone.
   virtual void share_call(const CallShare& share) { (void)share; }
+  // A session made while the server runs (a room opened, a scene uploaded), and one gone: the
+  // other instances hear of it; nothing to do alone.
+  virtual void session_added(const Session& session) { (void)session; }
+  virtual void session_removed(const std::string& name) { (void)name; }
 };
 
 // The relay a config asks for: local without "broker", Redis for "redis://HOST:PORT".

@@ -21,7 +21,8 @@ import { PacketRing, SampleRing } from './audio_ring.js';
 import { CaptureClock } from './capture_clock.js';
 
 const kOpusRate = 48000, kBitrate = 10000, kFrameMs = 60;  // as client/call/publisher.hpp
-const kForwarded = ['snapshot', 'roster', 'member-face', 'face-region', 'key-frame-request', 'permissions', 'state', 'refused', 'error', 'close'];
+const kForwarded = ['snapshot', 'roster', 'member-face', 'face-region', 'key-frame-request', 'permissions', 'state', 'refused', 'error', 'close',
+                    'host-key', 'shut-out'];
 
 let session = null, joined = false, sending = false, clockOrigin = 0, encoding = null, playout = null, playoutRing = null, route = null;
 const decoders = new Map();  // member -> {decoder, pending: [time_ms]}
@@ -154,10 +155,10 @@ async function listenByRoute(s, url, ticket) {
   }
 }
 
-function open({ url, session: name, token, name: member, clockOrigin: origin }) {
+function open({ url, session: name, token, name: member, clockOrigin: origin, openRoom }) {
   close();
   clockOrigin = origin;
-  const s = (session = new Session(url, name, token, member));
+  const s = (session = new Session(url, name, token, member, { openRoom }));
   for (const type of kForwarded)
     s.addEventListener(type, (e) => {
       if (session !== s) return;

@@ -120,12 +120,12 @@ export class CallLink {
   }
 
   // A session in the worker; `clockStartMs` (performance.now() of this page) is the call clock's zero.
-  open(url, session, token, name) {
+  open(url, session, token, name, openRoom = false) {
     this.session?.close();
     this.playout?.port.postMessage({ reset: true });
     this.clockStartMs = performance.now();
     this.session = new WorkerSession(this);
-    this.worker.postMessage({ op: 'open', url, session, token, name, clockOrigin: performance.timeOrigin + this.clockStartMs });
+    this.worker.postMessage({ op: 'open', url, session, token, name, openRoom, clockOrigin: performance.timeOrigin + this.clockStartMs });
     this.context?.resume().catch(() => {});
     return this.session;
   }

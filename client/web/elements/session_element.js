@@ -93,7 +93,9 @@ export class SessionElement extends HTMLElement {
     if (this.isConnected && before !== after && before !== null) this.start();
   }
 
+  // What went wrong, on the element's face and as its `reason` (read by tests and the page).
   fail(reason) {
+    this.reason = reason;
     this.message.textContent = reason;
     this.dispatchEvent(new CustomEvent('error', { detail: reason }));
   }

@@ -5,6 +5,7 @@
 export const FacesMixin = (Base) => class extends Base {
   // The session's style on every tile, once the renderer is there.
   async showStyle(style) {
+    this.styleSelect.value = style.renderer;
     await this.tilesReady;
     const reason = this.tiles.setStyle(style);
     if (reason) this.message.textContent = `the faces keep their look: ${reason}`;
@@ -15,6 +16,7 @@ export const FacesMixin = (Base) => class extends Base {
   // as it arrives, the roster then given again so its tile shows the face.
   async updateRoster(session, roster) {
     this.roster = roster;
+    this.showHostControls();
     const mine = roster.members.find((m) => m.member === roster.you);
     if (mine && !mine.face_found && mine.camera) this.message.textContent = 'no face found in your camera picture';
     await this.tilesReady;
@@ -54,7 +56,7 @@ export const FacesMixin = (Base) => class extends Base {
     if (!this.hasAttribute('joined')) return;
     if (this.tiles.view && this.tiles.due()) {
       try {
-        if (this.tiles.draw(performance.now() / 1000)) this.firstFaceAt ??= performance.now();
+        if (this.tiles.draw(performance.now() / 1000, this.isHost ? this.captionDecorator : null)) this.firstFaceAt ??= performance.now();
       } catch (error) {
         this.fail(`the call cannot be drawn: ${error.message}`);
         return;
