@@ -43,8 +43,7 @@ class HttpServer {
 };
 
 // Whether a page of `origin` may open a WebSocket to a server reached as `host` (the Host
-// header): an allowed origin (or any, when "*" is allowed), or the server's own ("http://" +
-// host) when none are configured.
+// header): the server's own ("http://" + host), or an allowed origin (any, when "*" is allowed).
 // A request without an Origin (not from a page) is allowed.
 bool origin_allowed(const std::string& origin, const std::string& host, const std::vector<std::string>& allowed);
 

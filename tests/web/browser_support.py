@@ -32,8 +32,10 @@ GL_FLAGS = {"swiftshader": ("--disable-gpu", "--use-angle=swiftshader", "--enabl
             "llvmpipe": ("--use-angle=gl-egl", "--ignore-gpu-blocklist")}
 
 
-def chromium(out, width, height, extra=()):
-    """Headless Chromium; `extra` flags add to this machine's (e.g. fake camera and microphone)."""
+def chromium(out, width, height, extra=(), mobile=False):
+    """Headless Chromium; `extra` flags add to this machine's (e.g. fake camera and microphone).
+    `mobile`: a phone's viewport of exactly `width` x `height` (Chromium's device emulation: a
+    desktop window is never narrower than 500 pixels)."""
     gl = os.environ.get("INKWIRE_BROWSER_GL", "swiftshader")
     if gl not in GL_FLAGS:
         raise SystemExit(f"INKWIRE_BROWSER_GL={gl}: not one of {', '.join(GL_FLAGS)}")
@@ -44,6 +46,8 @@ def chromium(out, width, height, extra=()):
         options.add_argument(a)
     for a in extra:
         options.add_argument(a)
+    if mobile:
+        options.add_experimental_option("mobileEmulation", {"deviceMetrics": {"width": width, "height": height, "pixelRatio": 1.0}})
     options.binary_location = "/usr/bin/chromium"
     return webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
 
@@ -109,10 +113,14 @@ def null_sound_server(out):
     daemon = subprocess.Popen(["pulseaudio", "--daemonize=no", "--exit-idle-time=-1", "-n", "--load=module-null-sink sink_name=inkwire",
                                "--load=module-native-protocol-unix", f"--log-target=file:{os.path.join(out, 'pulseaudio.log')}"],
                               env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    for _ in range(50):
+    # Up before Firefox starts: a Firefox that finds no sound server keeps its audio suspended
+    # for good (under a loaded machine's start the daemon took over 5 s).
+    for _ in range(600):
         if os.path.exists(os.path.join(runtime, "pulse", "native")):
             break
         time.sleep(0.1)
+    else:
+        raise RuntimeError(f"the test's sound server did not start (see {out}/pulseaudio.log)")
     return env, daemon
 
 

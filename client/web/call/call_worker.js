@@ -145,6 +145,7 @@ async function listenByRoute(s, url, ticket) {
       const { done, value } = await reader.read();
       if (done || session !== s) break;
       frames.feed(value);
+      s.lastHeard = performance.now();  // word from the server, as on its socket
       for (let m; (m = frames.next()); ) if (m.type === 'voice-frame') heard(m);
     }
   } catch {

@@ -93,7 +93,7 @@ export class InkwireCall extends HostingMixin(FacesMixin(PublishingMixin(Members
   get voiceStats() { return this.link?.voiceStats ?? { played: 0, late: 0, dropped: 0, delayMs: 0, skipped: 0 }; }
   get voiceSent() { return this.link?.status.voiceSent ?? 0; }
   // How the voice passes between the worker and the audio worklets: 'rings' (shared memory, on a
-  // cross-origin isolated page) or 'ports' (message ports, elsewhere).
+  // cross-origin isolated page) or 'ports' (message ports, elsewhere: `isolationNote` says so).
   get voicePath() { return this.link?.shared ? 'rings' : 'ports'; }
 
   get members() {

@@ -41,8 +41,9 @@ export const PrejoinMixin = (Base) => class extends Base {
     }
     // Embedded in a page that is not cross-origin isolated, the voice still flows, through message
     // ports instead of shared rings: said, since a busy page then may hold it back in some engines.
+    this.isolationNote = link.shared ? '' : 'this page is not cross-origin isolated: the voice goes through message ports';
     if (this.reason) this.message.textContent = this.reason;
-    else if (!link.shared) this.message.textContent = 'this page is not cross-origin isolated: the voice goes through message ports';
+    else if (this.isolationNote) this.message.textContent = this.isolationNote;
     this.voiceReason = this.reason;  // what a connection's failure said goes once it is in the call
   }
 
