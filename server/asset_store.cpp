@@ -1,5 +1,6 @@
 #include "server/asset_store.hpp"
 
+#include <ctime>
 #include <set>
 #include <utility>
 
@@ -249,7 +250,7 @@ protocol::Bytes AssetStore::read(const protocol::Hash& hash, uint64_t offset, ui
   return bytes;
 }
 
-AssetStore::Swept AssetStore::sweep_unnamed(std::chrono::seconds grace) {
+AssetStore::Swept AssetStore::sweep_unnamed(std::chrono::seconds grace, std::chrono::system_clock::time_point now) {
   Swept out;
   std::set<std::string> named;
   for (const char* table : {"sessions", "products"})
@@ -261,11 +262,16 @@ AssetStore::Swept AssetStore::sweep_unnamed(std::chrono::seconds grace) {
         return out;
       }
     }
-  const std::string cutoff = "-" + std::to_string(grace.count()) + " seconds";
+  // The cutoff as the catalogue writes its times (CURRENT_TIMESTAMP: UTC, whole seconds).
+  const std::time_t cutoff_time = std::chrono::system_clock::to_time_t(now - grace);
+  std::tm cutoff_tm{};
+  gmtime_r(&cutoff_time, &cutoff_tm);
+  char cutoff[32];
+  std::strftime(cutoff, sizeof cutoff, "%Y-%m-%d %H:%M:%S", &cutoff_tm);
   std::vector<std::pair<std::string, uint64_t>> unnamed;
   std::set<std::string> catalogued;
-  Statement q(db_, "SELECT hash, size, added < datetime('now', ?) FROM assets");
-  q.bind(1, cutoff);
+  Statement q(db_, "SELECT hash, size, added < ? FROM assets");
+  q.bind(1, std::string(cutoff));
   while (q.step()) {
     catalogued.insert(q.text(0));
     if (q.integer(2) && !named.count(q.text(0))) unnamed.push_back({q.text(0), uint64_t(q.integer(1))});
@@ -277,7 +283,7 @@ AssetStore::Swept AssetStore::sweep_unnamed(std::chrono::seconds grace) {
     ++out.assets, out.bytes += size;
   }
   // Files the catalogue does not name, as old: never renamed into place, or never catalogued.
-  const auto too_old = fs::file_time_type::clock::now() - grace;
+  const auto too_old = fs::file_time_type::clock::from_sys(now - grace);
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(dir_ / "assets", ec)) {
     const std::string name = entry.path().filename().string();

@@ -83,7 +83,8 @@ class AssetStore {
     uint64_t bytes = 0;
     std::string skipped;
   };
-  Swept sweep_unnamed(std::chrono::seconds grace);
+  // `now` is when the sweep counts from (a test's own clock; the real one otherwise).
+  Swept sweep_unnamed(std::chrono::seconds grace, std::chrono::system_clock::time_point now = std::chrono::system_clock::now());
 
   // Whether another process (add-product, while the server runs) wrote the catalogue since the
   // last call: SQLite's data_version, which this connection's own writes leave alone.

@@ -135,6 +135,7 @@ asio::awaitable<void> Connection::read_loop() {
       // reads nothing meanwhile; the others are served as usual).
       if (h.type == MessageType::Join)
         if (const auto delay = server_.admission().join_delay(address_); delay.count() > 0) {
+          log_info("join-slowed", {{"client", id_}, {"peer", peer_}, {"delay_ms", delay.count()}});
           asio::steady_timer pause(transport_->executor(), delay);
           co_await pause.async_wait(no_throw);
           if (closing_) break;

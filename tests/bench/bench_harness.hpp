@@ -94,5 +94,6 @@ std::vector<Result> run_call_suite(Harness& harness);
 std::vector<Result> run_abuse_suite(Harness& harness);
 std::vector<Result> run_crash_suite(Harness& harness);
 std::vector<Result> run_soak_suite(Harness& harness);
+std::vector<Result> run_window_suite(Harness& harness);
 
 }  // namespace inkwire::bench

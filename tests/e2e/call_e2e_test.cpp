@@ -81,30 +81,44 @@ TEST(CallE2ETest, MembersAreSeenAndHeardAsThemselvesAndBadInputIsDroppedAndCount
   const int mouth = listener.member_faces().at(grace_number).expression.code;
   EXPECT_TRUE(mouth >= int(Expression::VisemeClosed) && mouth <= int(Expression::VisemeRound)) << mouth;
 
-  // Every voice packet came through, stamped with its sender's own number (Grace said 999).
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
-  const auto heard = listener.take_voice();
+  // Every voice packet came through, stamped with its sender's own number (Grace said 999): what
+  // is in flight lands (or the wait ends and the counts say what did).
   int from_ada = 0, from_grace = 0;
-  for (const auto& [v, arrived] : heard) from_ada += v.member == ada_number, from_grace += v.member == grace_number;
+  size_t heard = 0;
+  eventually([&] {
+    for (const auto& [v, arrived] : listener.take_voice()) from_ada += v.member == ada_number, from_grace += v.member == grace_number, ++heard;
+    return from_ada >= sent_voice && from_grace >= sent_voice;
+  });
   EXPECT_GE(from_ada, sent_voice - 2);  // the first packets come before the server heard anyone speak
   EXPECT_GE(from_grace, sent_voice - 2);
-  EXPECT_EQ(size_t(from_ada + from_grace), heard.size()) << "a packet under another member's number";
+  EXPECT_EQ(size_t(from_ada + from_grace), heard) << "a packet under another member's number";
   bool speaking = false;
   for (const auto& m : listener.roster().members) speaking |= m.speaking;
   EXPECT_TRUE(speaking);
 
   // Bad input is dropped and counted; a member may not send session-wide expression codes; the
   // listener is not disturbed.
-  ada.send(protocol::FaceCrop{.time_ms = 5000, .frame_width = 64, .frame_height = 64, .x = 0, .y = 0, .width = 64, .height = 64,
-                              .jpeg = protocol::Bytes{0x89, 'P', 'N', 'G', 0, 0}});
-  ada.send(protocol::VoiceFrame{.member = 0, .time_ms = 5000, .opus = protocol::Bytes(600, 0x11)});
-  ada.send(protocol::VoiceFrame{.member = 0, .time_ms = 5020, .opus = protocol::Bytes{0x03, 0x00}});
+  // (Each is sent again, a quarter of a second apart, until the server counts it: on a loaded
+  // machine the server may read the crops above in a burst, and a bad one that comes while their
+  // allowance is spent is counted as too frequent instead.)
+  const auto counted = [&](const std::string& reason) {
+    return metrics_of(server).find("inkwire_call_dropped_total{reason=\"" + reason + "\"}") != std::string::npos;
+  };
+  const auto dropped_as = [&](const std::string& reason, const protocol::Message& bad) {
+    auto sent = std::chrono::steady_clock::now() - std::chrono::seconds(1);
+    return eventually([&] {
+      if (std::chrono::steady_clock::now() - sent > std::chrono::milliseconds(250)) ada.send(bad), sent = std::chrono::steady_clock::now();
+      return counted(reason);
+    }, std::chrono::seconds(30));
+  };
+  EXPECT_TRUE(dropped_as("crop-not-jpeg", protocol::FaceCrop{.time_ms = 5000, .frame_width = 64, .frame_height = 64, .x = 0, .y = 0, .width = 64,
+                                                              .height = 64, .jpeg = protocol::Bytes{0x89, 'P', 'N', 'G', 0, 0}}))
+      << metrics_of(server);
+  EXPECT_TRUE(dropped_as("voice-too-large", protocol::VoiceFrame{.member = 0, .time_ms = 5000, .opus = protocol::Bytes(600, 0x11)})) << metrics_of(server);
+  EXPECT_TRUE(dropped_as("voice-not-opus", protocol::VoiceFrame{.member = 0, .time_ms = 5020, .opus = protocol::Bytes{0x03, 0x00}})) << metrics_of(server);
   ada.send(protocol::ExpressionCode{.code = 4, .intensity = 255});
   ASSERT_TRUE(eventually([&] { return ada.refusals() == 1; }));
   EXPECT_NE(ada.refusal().find("only as themselves"), std::string::npos) << ada.refusal();
-  const std::string metrics = metrics_of(server);
-  for (const char* reason : {"crop-not-jpeg", "voice-too-large", "voice-not-opus"})
-    EXPECT_NE(metrics.find(std::string("inkwire_call_dropped_total{reason=\"") + reason + "\"} 1"), std::string::npos) << reason << "\n" << metrics;
   EXPECT_TRUE(listener.connected() && ada.connected());
 
   // Leaving takes the member out of everyone's roster.
@@ -140,13 +154,25 @@ TEST(CallE2ETest, FloodsOversizedCropsAndAFacelessCameraAreRefusedOrReportedWhil
   ASSERT_TRUE(reported()) << "the faceless camera is not reported after 15 s of crops";
   EXPECT_FALSE(blank.face_region() && blank.face_region()->found);
 
-  // Thirty crops at once (a second's allowance is 15) and one of 40 KB.
+  // Thirty crops at once (a second's allowance is 15): some are dropped as too frequent.
+  const auto dropped_for = [&](const std::string& reason) {
+    return metrics_of(server).find("inkwire_call_dropped_total{reason=\"" + reason + "\"}") != std::string::npos;
+  };
   for (int k = 0; k < 30; ++k)
     blank.send(protocol::FaceCrop{.time_ms = 5000, .frame_width = 160, .frame_height = 120, .x = 0, .y = 0, .width = 160, .height = 120, .jpeg = wall_jpeg});
-  std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+  ASSERT_TRUE(eventually([&] { return dropped_for("crop-too-frequent"); })) << metrics_of(server);
+  // One of 40 KB: dropped as too large once the allowance has come back (sent again until the
+  // server counts it; before that it may still count as too frequent).
   protocol::Bytes big(40 * 1024, 0x42);
   big[0] = 0xff, big[1] = 0xd8, big[2] = 0xff;
-  blank.send(protocol::FaceCrop{.time_ms = 6000, .frame_width = 160, .frame_height = 120, .x = 0, .y = 0, .width = 160, .height = 120, .jpeg = big});
+  auto sent_big = std::chrono::steady_clock::now() - std::chrono::seconds(1);
+  ASSERT_TRUE(eventually([&] {
+    if (std::chrono::steady_clock::now() - sent_big > std::chrono::milliseconds(250)) {  // well within the allowance
+      blank.send(protocol::FaceCrop{.time_ms = 6000, .frame_width = 160, .frame_height = 120, .x = 0, .y = 0, .width = 160, .height = 120, .jpeg = big});
+      sent_big = std::chrono::steady_clock::now();
+    }
+    return dropped_for("crop-too-large");
+  }, std::chrono::seconds(30))) << metrics_of(server);
 
   // Mallory floods: two thousand voice packets as fast as the socket takes them.
   const auto voice = voice_packets(1);
