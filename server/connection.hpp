@@ -1,5 +1,5 @@
 #pragma once
-// One client connection (STYLE 4, 16): a reader coroutine that decodes and handles messages, a
+// One client connection (asio's pattern): a reader coroutine that decodes and handles messages, a
 // writer coroutine that drains the bounded send queue, and one watchdog for every deadline: the
 // hello, then silence (renewed by anything the peer sends; the server pings a quiet peer) and a
 // write the peer does not take (SPEC D7). Any error ends only this connection, after telling the peer why. Frames come

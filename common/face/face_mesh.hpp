@@ -3,9 +3,9 @@
 // anchors around the face and the image border, triangulated. The landmarks' points follow the
 // received expression; the anchors and border stay, so the deformation fades out between them.
 // When the photo's mouth is closed, the triangles inside the inner lips read a strip of dark
-// mouth-cavity colour under the photo (the atlas) instead of stretched lips. The browser builds
-// the same mesh (client/web/common/face.js buildFaceMesh()), pinned by
-// tests/golden/warp-vectors.json.
+// mouth-cavity colour under the photo (the atlas) instead of stretched lips. The browser draws
+// faces with this same code, compiled to WebAssembly (client/web/module/face_module.cpp), so
+// the mesh exists once.
 #include <vector>
 
 #include <glm/vec4.hpp>

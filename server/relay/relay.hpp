@@ -1,5 +1,5 @@
 #pragma once
-// How a change to a session's state reaches its members (ARCHITECTURE "Networking"): on one
+// How a change to a session's state reaches its members: on one
 // instance it is applied and forwarded at once (LocalRelay); with several instances it goes
 // through a broker, which orders it among every instance's changes and brings it to all of them
 // (RedisRelay). Connections and face feeds only ever call publish(); they never know which.

@@ -111,7 +111,7 @@ asio::awaitable<void> HttpServer::serve(ByteStream accepted) {
     co_await reply(text_reply(503, place.refusal()));
     co_return;
   }
-  // One deadline for the whole exchange (STYLE 16), head and reply, or the connection is cut: a
+  // One deadline for the whole exchange (SPEC D4), head and reply, or the connection is cut: a
   // slow-loris client that sends its head a byte at a time, or a reader that never reads its
   // reply, holds one socket for a few seconds at most. A WebSocket hands the socket over once
   // upgraded, with deadlines of its own. Shared with the watchdog, which may run after this

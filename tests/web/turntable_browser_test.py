@@ -164,7 +164,7 @@ try:
     check(db >= 35.0, f"zoomed in four times the browser's view matches the C++ client's at {db:.2f} dB (>= 35)")
     driver.execute_script(f"{zoomed}.remove()")
 
-    # Lifecycle (STYLE 17): moved in the page, the element's handlers are there once, so the same
+    # Lifecycle (what connectedCallback adds, disconnectedCallback removes): moved in the page, the element's handlers are there once, so the same
     # drag turns it as far as before (twice as far when a re-connection added them again). The
     # turn is read while the button is still held: the fling after it depends on how fast a
     # loaded machine delivers the moves, the turn under the pointer does not.

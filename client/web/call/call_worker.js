@@ -1,4 +1,4 @@
-// A call member's connection and voice, off the page's thread (SPEC F15; STYLE 20): this
+// A call member's connection and voice, off the page's thread (SPEC F15): this
 // dedicated worker holds the call's WebSocket (net/session.js), encodes the microphone's chunks
 // (from call/capture_worklet.js) to Opus with WebCodecs' AudioEncoder and sends them, and decodes
 // every member's voice with an AudioDecoder each, handing the samples to call/playout_worklet.js.

@@ -1,6 +1,6 @@
 // <inkwire-call>'s faces (SPEC F10, F16): the session's style on every tile, the roster with each
 // member's photo and landmarks handed to the renderer (call/tiles.js), each face shown when the
-// sound of its moment plays, and the drawing loop. A mixin over SessionElement (STYLE 13).
+// sound of its moment plays, and the drawing loop. A mixin over SessionElement (one feature a file).
 
 export const FacesMixin = (Base) => class extends Base {
   // The session's style on every tile, once the renderer is there.

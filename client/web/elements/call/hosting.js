@@ -3,7 +3,7 @@
 // room) and given as the token on every join after, so a reload or a lost connection finds the
 // host again; the host's controls: lock or open the room, remove a member, set the call's style.
 // What others may not do the server refuses, and the element says the reason. A mixin over
-// SessionElement (STYLE 13).
+// SessionElement (one feature a file).
 import { RoomAction } from '../../protocol/messages.js';
 
 const storageKey = (server, room) => `inkwire-host-key ${server} ${room}`;

@@ -1,6 +1,6 @@
 // <inkwire-call>'s membership (SPEC F8, F19): joining under a name, entering (the neutral photo
 // and the camera's face video sent, the grid shown), a lost connection joined again under the same
-// name, and leaving. A mixin over SessionElement (STYLE 13).
+// name, and leaving. A mixin over SessionElement (one feature a file).
 import { CameraSender, faceFormat } from '../../call/camera.js';
 
 export const MembershipMixin = (Base) => class extends Base {

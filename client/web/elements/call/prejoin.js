@@ -1,7 +1,7 @@
 // <inkwire-call>'s pre-join (SPEC F7, F15): the camera's preview and the microphone (or the
 // reason there are none, `reason`), captured off the page's thread (call/voice.js) while the
 // person picks a name and takes the neutral photo; the renderer loads meanwhile. A mixin over
-// SessionElement (STYLE 13: one feature a file, as the turntable element).
+// SessionElement (one feature a file, as the turntable element).
 import { photoOf } from '../../call/camera.js';
 import { CallLink, voiceUnsupported } from '../../call/voice.js';
 
