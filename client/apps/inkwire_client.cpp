@@ -1,4 +1,4 @@
-// inkwire-client: joins a session and draws it locally, in a window or headless (CONTRACTS.md).
+// inkwire-client: joins a session and draws it locally, in a window or headless (docs/cli.md).
 #include <csignal>
 #include <cmath>
 #include <cstdio>

@@ -1,4 +1,4 @@
-// inkwire-server: sessions, assets and control messages for thin clients (CONTRACTS.md).
+// inkwire-server: sessions, assets and control messages for thin clients (docs/cli.md, docs/config.md).
 #include <algorithm>
 #include <csignal>
 #include <optional>

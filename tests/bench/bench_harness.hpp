@@ -1,6 +1,6 @@
 #pragma once
 // The benchmark harness every suite plugs into: the study's set-up (SPEC G4), frame timing,
-// and result rows with the names CONTRACTS.md fixes.
+// and result rows with the names docs/cli.md fixes.
 #include <functional>
 #include <map>
 #include <memory>

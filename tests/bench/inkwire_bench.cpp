@@ -1,4 +1,4 @@
-// inkwire-bench: prints the performance tables and writes them as JSON (CONTRACTS.md).
+// inkwire-bench: prints the performance tables and writes them as JSON (docs/cli.md says the shape).
 #include <cstdio>
 #include <fstream>
 #include <iostream>

@@ -274,7 +274,7 @@ try:
     manifest = json.load(open(os.path.join(www, "truck", "product.json")))
     first = [manifest["photos"][0], manifest["mattes"][0]]
     nginx_pids = [nginx.process.pid] + [int(p) for p in open(f"/proc/{nginx.process.pid}/task/{nginx.process.pid}/children").read().split()]
-    visits = {  # via: CONTRACTS.md's names; inkwire-server is the WebSocket path the ratio is against
+    visits = {  # via: the row names docs/cli.md fixes; inkwire-server is the WebSocket path the ratio is against
         "nginx": (lambda: static_visit(nginx.port, "/truck", [f["file"] for f in first]), nginx_pids),
         "inkwire-server": (lambda: websocket_visit(server.http, "truck", [(f["sha256"], f["size"]) for f in first], PROTOCOL_VERSION),
                            [server.process.pid]),
