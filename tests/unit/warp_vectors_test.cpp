@@ -1,6 +1,6 @@
 // What the browser's turntable and call voice compute in JS as the C++ client does (issue:
 // one implementation of each algorithm; the warps stay in JS for the element's first-view budget,
-// docs/benchmarks.md; faces are drawn by the C++ itself, compiled into the browser's module): the C++ answers for fixed inputs, written to tests/golden/warp-vectors.json
+// docs/benchmarks-journal.md; faces are drawn by the C++ itself, compiled into the browser's module): the C++ answers for fixed inputs, written to tests/golden/warp-vectors.json
 // and checked by client/web/test/ (warp, turntable_pose and voice tests). A change to either side fails one of the two until
 // both agree and the file is approved again (INKWIRE_APPROVE_GOLDEN=1).
 #include <algorithm>
