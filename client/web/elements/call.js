@@ -1,5 +1,5 @@
 // <inkwire-call server="ws://HOST:PORT/ws" session="NAME">: a call as a person meets it (SPEC
-// F7-F11, F15-F16, CONTRACTS.md). Before joining: the camera's preview, the microphone's level, a
+// F7-F11, F15-F16, docs/calls.md). Before joining: the camera's preview, the microphone's level, a
 // name and the neutral photo (taken from the preview, retaken at will); the renderer loads
 // meanwhile. In the call: a grid of every member drawn from codes alone by the native C++ in the
 // session's style (elements/call/tiles.js: each member's neutral photo deformed by the expression
@@ -7,7 +7,7 @@
 // framed, captions under the tiles; mute, camera off, leave. The connection and the voice live off
 // the page's thread (call/voice.js: a worker with the WebSocket and WebCodecs' Opus, audio
 // worklets that capture and play), the face goes as VP8 video (JPEG crops where an engine has no
-// encoder) the server analyses (call/camera.js). One feature a file (STYLE 13): elements/call/
+// encoder) the server analyses (call/camera.js). One feature a file: elements/call/
 // prejoin.js, membership.js, publishing.js, faces.js and tiles.js. A member without a camera, a microphone, permission or what its engine lacks
 // joins as a listener and says why (`reason`).
 // Attributes: server, session, token, name, muted, camera ("off"), open-room (open a call room of

@@ -1,7 +1,7 @@
 // <inkwire-turntable server="ws://HOST:PORT/ws" session="NAME">, or <inkwire-turntable
 // src="https://CDN/PRODUCT/product.json"> for a product exported as static files (SPEC T20-T21;
 // the server serves each of its products so too): a product a shop embeds with one script tag
-// (SPEC W2, CONTRACTS.md). It downloads the product progressively (each photo's
+// (SPEC W2, docs/products.md). It downloads the product progressively (each photo's
 // matte and photo, nearest the view first; a first view after one photo; a progress bar), then
 // synthesises every view locally (render/tween/tween_view.js). Drag with mouse, touch or pen
 // (with inertia; up and down too on a product in rows), wheel or pinch to zoom, arrow keys step
