@@ -2,13 +2,14 @@
 """Checks that the docs point inside the repository.
 
     scripts/check_docs.py            # relative links in every Markdown file
-    scripts/check_docs.py --paths    # also file paths named in source comments
+    scripts/check_docs.py --paths    # also file paths named in comments, and requirement ids
 
 Links: every relative link in a tracked Markdown file must name a tracked file or folder, and a
 `#fragment` must name a heading (GitHub's anchor of it) or an `id=` in the target. Paths: every
 token in a comment that looks like a repository path (a folder of the tree then a file name, such
 as `client/web/net/session.js`) must name a tracked file, from the repository's root, from the
-file's own folder, or as the tail of a tracked path. Prints one line per broken reference
+file's own folder, or as the tail of a tracked path; every requirement id cited as `SPEC D7` must
+be defined in docs/requirements.md. Prints one line per broken reference
 (FILE:LINE: what) and exits 1 when there is any, 0 when there is none.
 """
 import argparse
@@ -151,9 +152,33 @@ def check_paths(files):
     return problems
 
 
+def check_requirement_ids(files):
+    """Every id cited as `SPEC D7` (or a range, `SPEC F7-F11`) in a source file or a doc is defined in docs/requirements.md."""
+    with open(os.path.join(ROOT, "docs", "requirements.md"), encoding="utf-8") as f:
+        defined = set(re.findall(r"^- \*\*([A-Z][0-9]+)\*\*", f.read(), re.M))
+    problems = []
+    for name in files:
+        if not (name.endswith(SOURCE_EXTENSIONS + (".md",)) or os.path.basename(name) == "CMakeLists.txt"):
+            continue
+        if name.startswith("third_party/") or name == "docs/requirements.md":
+            continue
+        try:
+            with open(os.path.join(ROOT, name), encoding="utf-8") as f:
+                lines = f.read().splitlines()
+        except (UnicodeDecodeError, FileNotFoundError):
+            continue
+        for number, line in enumerate(lines, 1):
+            for m in re.finditer(r"\bSPEC ([A-Z])([0-9]+)(?:-([A-Z]?)([0-9]+))?", line):
+                ids = [m.group(1) + m.group(2)] + ([(m.group(3) or m.group(1)) + m.group(4)] if m.group(4) else [])
+                for rid in ids:
+                    if rid not in defined:
+                        problems.append(f"{name}:{number}: SPEC {rid} is not defined in docs/requirements.md")
+    return problems
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--paths", action="store_true", help="also check file paths named in source comments")
+    parser.add_argument("--paths", action="store_true", help="also check file paths named in source comments and the requirement ids cited")
     args = parser.parse_args()
     files = tracked_files()
     if files is None:
@@ -166,7 +191,7 @@ def main():
             folders.add(folder)
     problems = check_links(set(files), folders)
     if args.paths:
-        problems += check_paths(files)
+        problems += check_paths(files) + check_requirement_ids(files)
     for p in problems:
         print(p)
     return 1 if problems else 0
