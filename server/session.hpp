@@ -68,6 +68,9 @@ class Session {
     call_ = std::make_unique<Call>(name(), options, analyst, counters, relay, origin);
   }
 
+  // Kept however long it goes unused (the operator's keep-scene).
+  void keep() { stored_.kept = true; }
+
   // Set by apply(); cleared by whoever persists the state.
   bool dirty = false;
 

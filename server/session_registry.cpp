@@ -138,6 +138,8 @@ void SessionRegistry::adopt_stored_elsewhere() {
     if (served == sessions_.end()) serve(std::move(stored));  // already in the catalogue: not written again
     else if (stored.maker == MadeBy::Command && stored.state.assets != served->second->state().assets && !stored.state.assets.empty())
       served->second->replace_model(stored.state.assets.front());  // add-scene gave a served scene a new model
+    else if (stored.kept && !served->second->stored().kept)
+      served->second->keep();  // keep-scene: an uploaded scene the operator keeps
   }
   for (auto it = sessions_.begin(); it != sessions_.end();) {
     const bool removable = it->second->state().kind == protocol::SessionKind::Turntable || it->second->stored().maker != MadeBy::Operator;

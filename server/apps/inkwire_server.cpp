@@ -219,6 +219,10 @@ int main(int argc, char** argv) {
   adding_scene->add_option("--editor-token", scene_editor_token, "who joins with this token steers the scene; the others follow");
   adding_scene->add_option("--up", scene_up, "which axis is up in the model file: y, z or auto")->check(CLI::IsMember({"auto", "y", "z"}));
   adding_scene->add_option("--data", scene_data, "data folder (default ./inkwire-data)");
+  CLI::App* keeping_scene = app.add_subcommand("keep-scene", "keep scene NAME (one a visitor uploaded) however long it goes unvisited; a running "
+                                                             "server takes it up within a second");
+  keeping_scene->add_option("name", scene_name, "the scene's name")->required();
+  keeping_scene->add_option("--data", scene_data, "data folder (default ./inkwire-data)");
   CLI::App* removing_scene = app.add_subcommand("remove-scene", "take scene NAME out of the data folder: a running server stops serving it within a "
                                                                  "second (its members are told)");
   removing_scene->add_option("name", scene_name, "the scene's name")->required();
@@ -234,6 +238,22 @@ int main(int argc, char** argv) {
       return add_scene(scene_name, scene_mesh, scene_style, scene_settings, scene_editor_token, parse_up_axis(scene_up), scene_data);
     } catch (const std::exception& e) {
       std::cerr << "inkwire-server add-scene: " << e.what() << "\n";
+      return 1;
+    }
+  }
+  if (keeping_scene->parsed()) {
+    try {
+      server::AssetStore store(scene_data.empty() ? "inkwire-data" : scene_data);
+      std::optional<server::StoredSession> scene;
+      for (auto& s : store.sessions())
+        if (s.state.session == scene_name && s.state.kind == protocol::SessionKind::Scene) scene = std::move(s);
+      if (!scene) throw Error("no scene named '" + scene_name + "' in " + store.dir().string());
+      scene->kept = true;
+      store.save_session(*scene);
+      std::printf("scene '%s' is kept\n", scene_name.c_str());
+      return 0;
+    } catch (const std::exception& e) {
+      std::cerr << "inkwire-server keep-scene: " << e.what() << "\n";
       return 1;
     }
   }

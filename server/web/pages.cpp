@@ -88,8 +88,10 @@ std::string invite(const std::string& name, const std::string& host, bool tls) {
 std::optional<std::string> session_page(Server& server, const Request& request, const std::string& path) {
   // "Start a call": a room with an unguessable name (96 random bits), opened when its first member joins.
   if (path == "/call/" || path == "/call") {
-    const size_t query = request.path.find('?');  // the creator token, where the form asked for one
-    return http_reply(303, "text/plain", "", "Location: /call/" + SessionMaker::random_name() + (query == std::string::npos ? "" : request.path.substr(query)) + "\r\n");
+    // The creator token goes along, where the form asked for one (percent-encoded as it came).
+    const size_t at = request.path.find("token=");
+    const std::string token = at == std::string::npos ? "" : request.path.substr(at, request.path.find('&', at) - at);
+    return http_reply(303, "text/plain", "", "Location: /call/" + SessionMaker::random_name() + (token.size() > 6 ? "?" + token : "") + "\r\n");
   }
   for (const PageFamily& family : kFamilies) {
     if (!path.starts_with(family.prefix)) continue;
