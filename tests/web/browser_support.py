@@ -13,7 +13,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
-from inkwire_test import PROTOCOL_VERSION, Checks, Server, psnr, read_image, skip  # noqa: E402,F401  (re-exported for the tests)
+from inkwire_test import PROTOCOL_VERSION, Checks, Server, psnr, read_image, skip, steady, wait_until  # noqa: E402,F401  (re-exported for the tests)
 
 try:
     from selenium import webdriver
@@ -49,7 +49,11 @@ def chromium(out, width, height, extra=(), mobile=False):
     if mobile:
         options.add_experimental_option("mobileEmulation", {"deviceMetrics": {"width": width, "height": height, "pixelRatio": 1.0}})
     options.binary_location = "/usr/bin/chromium"
-    return webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
+    driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
+    # A script waits behind the page's own work, which on a machine whose cores are busy elsewhere
+    # can take long: one generous timeout, not the driver's 30 s.
+    driver.set_script_timeout(300)
+    return driver
 
 
 def face_frames(folder, neutral, smile, seconds):
@@ -114,12 +118,8 @@ def null_sound_server(out):
                                "--load=module-native-protocol-unix", f"--log-target=file:{os.path.join(out, 'pulseaudio.log')}"],
                               env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     # Up before Firefox starts: a Firefox that finds no sound server keeps its audio suspended
-    # for good (under a loaded machine's start the daemon took over 5 s).
-    for _ in range(600):
-        if os.path.exists(os.path.join(runtime, "pulse", "native")):
-            break
-        time.sleep(0.1)
-    else:
+    # for good.
+    if not wait_until(lambda: os.path.exists(os.path.join(runtime, "pulse", "native")), 60):
         raise RuntimeError(f"the test's sound server did not start (see {out}/pulseaudio.log)")
     return env, daemon
 
@@ -221,10 +221,8 @@ http {{ access_log {prefix}/logs/access.log; client_body_temp_path {prefix}/tmp;
         self.access_log = os.path.join(prefix, "logs", "access.log")
         self.process = subprocess.Popen([binary, "-p", prefix, "-c", os.path.join(prefix, "nginx.conf")],
                                         stderr=open(os.path.join(prefix, "stderr.log"), "w"))
-        for _ in range(100):
-            if os.path.exists(self.access_log):
-                return
-            time.sleep(0.05)
+        if wait_until(lambda: os.path.exists(self.access_log), 30, poll=0.05):
+            return
         raise SystemExit(f"nginx did not start: {open(os.path.join(prefix, 'stderr.log')).read()}")
 
     def log_size(self):

@@ -29,7 +29,7 @@ import time
 import urllib.request
 
 sys.path.insert(0, os.path.dirname(__file__))
-from browser_support import ENGINES, Checks, Server, chromium, engine, engine_missing, read_image, skip  # skips without Chromium's tooling
+from browser_support import wait_until as shared_wait_until, ENGINES, Checks, Server, chromium, engine, engine_missing, read_image, skip  # skips without Chromium's tooling
 
 BIN, OUT = sys.argv[1], os.path.abspath(sys.argv[2])
 wanted = [a for a in sys.argv[3:] if a in ENGINES] or list(ENGINES)
@@ -46,17 +46,10 @@ checks = Checks()
 check = checks.check
 
 
+
 def wait_until(condition, seconds):
-    """True once `condition()` is, polling, or False after `seconds`."""
-    end = time.time() + seconds
-    while time.time() < end:
-        try:
-            if condition():
-                return True
-        except Exception:  # a page still loading answers nothing yet
-            pass
-        time.sleep(0.2)
-    return False
+    """browser_support's wait, a page's script errors taken as "not yet" (it is still loading)."""
+    return shared_wait_until(condition, seconds, poll=0.2, ignore=(Exception,))
 
 
 class Site:

@@ -27,7 +27,7 @@ import wave
 import array
 
 sys.path.insert(0, os.path.dirname(__file__))
-from browser_support import Checks, Server, chromium, engine, engine_missing, face_clip, skip  # skips without Chromium's tooling
+from browser_support import wait_until as shared_wait_until, Checks, Server, chromium, engine, engine_missing, face_clip, skip  # skips without Chromium's tooling
 from selenium.webdriver.common.by import By
 
 BIN, OUT = sys.argv[1], os.path.abspath(sys.argv[2])
@@ -43,17 +43,10 @@ check = checks.check
 IDLE = 4  # room_idle_seconds here
 
 
+
 def wait_until(condition, seconds):
-    """True once `condition()` is, polling, or False after `seconds`."""
-    end = time.time() + seconds
-    while time.time() < end:
-        try:
-            if condition():
-                return True
-        except Exception:  # a page still loading answers nothing yet
-            pass
-        time.sleep(0.2)
-    return False
+    """browser_support's wait, a page's script errors taken as "not yet" (it is still loading)."""
+    return shared_wait_until(condition, seconds, poll=0.2, ignore=(Exception,))
 
 
 def speech(name, text):

@@ -17,7 +17,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from browser_support import Checks, Server, chromium, engine, engine_missing, psnr, read_image, skip  # skips without Chromium's tooling
+from browser_support import wait_until as shared_wait_until, Checks, Server, chromium, engine, engine_missing, psnr, read_image, skip  # skips without Chromium's tooling
 from selenium.webdriver.common.by import By
 
 BIN, OUT = sys.argv[1], os.path.abspath(sys.argv[2])
@@ -36,17 +36,10 @@ W, H = 320, 240
 element = "document.querySelector('inkwire-scene')"
 
 
+
 def wait_until(condition, seconds):
-    """True once `condition()` is, polling, or False after `seconds`."""
-    end = time.time() + seconds
-    while time.time() < end:
-        try:
-            if condition():
-                return True
-        except Exception:  # a page still loading answers nothing yet
-            pass
-        time.sleep(0.2)
-    return False
+    """browser_support's wait, a page's script errors taken as "not yet" (it is still loading)."""
+    return shared_wait_until(condition, seconds, poll=0.2, ignore=(Exception,))
 
 
 def canvas(driver, name):
