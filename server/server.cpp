@@ -59,7 +59,7 @@ Server::Server(asio::io_context& io, ServerConfig config) : io_(io), config_(std
   if (!ec) acceptor_.listen(asio::socket_base::max_listen_connections, ec);
   if (ec) throw Error("cannot listen on " + config_.host + ":" + std::to_string(config_.port) + ": " + ec.message());
   if (config_.http) http_ = std::make_unique<HttpServer>(io, *this);
-  relay_ = make_relay(*this, config_);  // a broker this build cannot use is refused before the data folder is made
+  relay_ = make_relay(*this, config_.broker);  // a broker this build cannot use is refused before the data folder is made
   store_.emplace(config_.data_dir);
   registry_.emplace(*store_, config_);
   maker_.emplace(config_.making, !loopback(config_.host) || (config_.http && !loopback(config_.http_host)), *registry_);

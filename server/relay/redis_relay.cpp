@@ -11,7 +11,9 @@
 #include "common/log.hpp"
 #include "protocol/framing.hpp"
 #include "server/relay/broker_formats.hpp"
-#include "server/server.hpp"
+#include "server/asset_store.hpp"
+#include "server/relay/session_fanout.hpp"
+#include "server/session.hpp"
 
 namespace inkwire::server {
 namespace {
@@ -112,8 +114,8 @@ BrokerAddress parse_broker(const std::string& url) {
   return a;
 }
 
-RedisRelay::RedisRelay(Server& server, BrokerAddress address)
-    : server_(server), address_(std::move(address)), io_(server.io()), commands_(io_), events_(io_), retry_timer_(io_), heartbeat_timer_(io_),
+RedisRelay::RedisRelay(SessionFanout& sessions, BrokerAddress address)
+    : sessions_(sessions), address_(std::move(address)), io_(sessions.io()), commands_(io_), events_(io_), retry_timer_(io_), heartbeat_timer_(io_),
       publish_digest_(script_digest(kPublish)) {
   status_.broker = true;
   status_.connected = false;
@@ -210,8 +212,8 @@ void RedisRelay::share_call(const CallShare& share) {
 void RedisRelay::on_call(std::string_view payload) {
   try {
     CallShare share = parse_call_share(payload);
-    if (share.origin == server_.config().name) return;  // its own
-    if (const auto session = server_.find_session(share.session); session && session->call()) session->call()->remote(share);
+    if (share.origin == sessions_.instance_name()) return;  // its own
+    if (const auto session = sessions_.find_session(share.session); session && session->call()) session->call()->remote(share);
   } catch (const protocol::ProtocolError& e) {
     log_warn("broker-call-garbled", {{"reason", e.what()}});
   }
@@ -247,20 +249,20 @@ void RedisRelay::ready() {
   commands_.command({"SCRIPT", "LOAD", kPublish}, [](const redisReply*) {});  // before any EVALSHA: one connection keeps order
   backoff_ = 100ms;
   if (std::exchange(ever_ready_, true)) ++status_.reconnects;
-  log_info("broker-connected", {{"instance", server_.config().name}, {"unsent", unsent_.size()}});
+  log_info("broker-connected", {{"instance", sessions_.instance_name()}, {"unsent", unsent_.size()}});
   // Every session waits for its resync from here on, so no change is applied out of order. Each
   // resync sends the changes made here while the broker was away that it does not hold yet.
-  for (const auto& [name, session] : server_.sessions()) syncs_[name].syncing = true;
-  for (const auto& [name, session] : server_.sessions()) share(*session);
+  for (const auto& [name, session] : sessions_.sessions()) syncs_[name].syncing = true;
+  for (const auto& [name, session] : sessions_.sessions()) share(*session);
   discover();
-  for (const auto& [name, session] : server_.sessions()) resync(name);
+  for (const auto& [name, session] : sessions_.sessions()) resync(name);
 }
 
 void RedisRelay::publish(Session& session, const Message& change, uint64_t sender) {
   const std::string field = state_field(change);
   const Bytes frame = encode(change);
   if (!ready_) {
-    server_.deliver(session, change, sender);
+    sessions_.deliver(session, change, sender);
     keep_unsent(session.name(), field, frame, sender);
     return;
   }
@@ -273,7 +275,7 @@ void RedisRelay::keep_unsent(const std::string& session, const std::string& fiel
 
 void RedisRelay::send_change(const std::string& session, const std::string& field, const Bytes& frame, uint64_t sender, bool by_digest) {
   const std::string key = state_key(session);
-  const std::string header = event_header(now_us(), sender, server_.config().name, session);
+  const std::string header = event_header(now_us(), sender, sessions_.instance_name(), session);
   const std::string_view bytes(reinterpret_cast<const char*>(frame.data()), frame.size());
   // By the script's digest (loaded on connecting): Redis then neither receives nor hashes the
   // script's text for every change.
@@ -284,8 +286,8 @@ void RedisRelay::send_change(const std::string& session, const std::string& fiel
     if (r && text_of(r).starts_with("NOSCRIPT")) return send_change(session, field, frame, sender, false);  // its script cache was flushed
     // Not known to be published: applied here at once, and sent again once the broker is back.
     log_warn("broker-publish-failed", {{"session", session}, {"field", field}, {"reason", reason_of(r)}});
-    if (const auto s = server_.find_session(session)) {
-      server_.deliver(*s, decode_frame(frame.data(), frame.size()), sender);
+    if (const auto s = sessions_.find_session(session)) {
+      sessions_.deliver(*s, decode_frame(frame.data(), frame.size()), sender);
       keep_unsent(session, field, frame, sender);
     }
   });
@@ -302,8 +304,8 @@ void RedisRelay::on_event(std::string_view payload) {
     return;
   }
   ++status_.received;
-  if (e.origin == server_.config().name) status_.lag_seconds = double(now_us() - e.published_us) / 1e6;
-  const auto session = server_.find_session(e.session);
+  if (e.origin == sessions_.instance_name()) status_.lag_seconds = double(now_us() - e.published_us) / 1e6;
+  const auto session = sessions_.find_session(e.session);
   if (!session) return;  // not here (yet): adopted with its state when its notice comes
   SessionSync& sync = syncs_[e.session];
   if (sync.syncing) wait_for_resync(sync, e.session, std::move(e));
@@ -318,11 +320,11 @@ void RedisRelay::apply_in_order(Session& session, SessionSync& sync, Event e) {
     return;
   }
   sync.revision = e.revision;
-  server_.deliver(session, e.change, e.origin == server_.config().name ? e.sender : 0, e.revision);
+  sessions_.deliver(session, e.change, e.origin == sessions_.instance_name() ? e.sender : 0, e.revision);
 }
 
 void RedisRelay::resync(const std::string& name) {
-  const auto session = server_.find_session(name);
+  const auto session = sessions_.find_session(name);
   if (!session) return;
   syncs_[name].syncing = true;
   ++status_.resyncs;
@@ -339,7 +341,7 @@ void RedisRelay::resync(const std::string& name) {
   args.insert(args.end(), own.begin(), own.end());
   const bool sent = commands_.command(args, [this, name](const redisReply* r) {
     SessionSync& sync = syncs_[name];
-    const auto session = server_.find_session(name);
+    const auto session = sessions_.find_session(name);
     if (!session) {
       sync.syncing = false;
       return;
@@ -376,7 +378,7 @@ void RedisRelay::resync(const std::string& name) {
       try {
         const Message change = decode_frame(reinterpret_cast<const uint8_t*>(value.data()), value.size());
         if (state_field(change) != field) continue;
-        if (differs(session->state(), change)) server_.deliver(*session, change, 0);  // members hear only what changed
+        if (differs(session->state(), change)) sessions_.deliver(*session, change, 0);  // members hear only what changed
       } catch (const std::exception& e) {
         log_warn("broker-state-malformed", {{"session", name}, {"field", field}, {"reason", e.what()}});
       }
@@ -458,7 +460,7 @@ void RedisRelay::share_asset(const AssetAnnounce& asset) {
   commands_.command({"EXISTS", key}, [this, key, asset](const redisReply* r) {
     if (is_error(r) || r->integer != 0) return;
     try {
-      const Bytes bytes = server_.store().read_verified(asset.hash);
+      const Bytes bytes = sessions_.store().read_verified(asset.hash);
       commands_.command({"SET", key, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), "NX"}, [](const redisReply*) {});
     } catch (const Error& e) {
       log_warn("broker-asset-not-shared", {{"asset", asset.name}, {"reason", e.what()}});
@@ -471,7 +473,7 @@ void RedisRelay::discover() {
     if (is_error(r) || r->type != REDIS_REPLY_ARRAY) return;
     for (size_t i = 0; i + 1 < r->elements; i += 2) {
       const std::string name(text_of(r->element[i]));
-      if (!server_.find_session(name) && !adopting_.count(name)) adopt_remote(name, text_of(r->element[i + 1]));
+      if (!sessions_.find_session(name) && !adopting_.count(name)) adopt_remote(name, text_of(r->element[i + 1]));
     }
   });
 }
@@ -493,15 +495,15 @@ void RedisRelay::adopt_remote(const std::string& name, std::string_view definiti
   adopting_.insert(name);
   auto missing = std::make_shared<std::vector<AssetAnnounce>>();
   for (const AssetAnnounce& a : stored.state.assets)
-    if (!server_.store().find(a.hash)) missing->push_back(a);
+    if (!sessions_.store().find(a.hash)) missing->push_back(a);
   definitions_[name] = std::string(definition);
   auto session = std::make_shared<StoredSession>(std::move(stored));
   auto left = std::make_shared<size_t>(missing->size());
   auto failed = std::make_shared<bool>(false);
   const auto finish = [this, name, session, failed] {
     adopting_.erase(name);
-    if (*failed || server_.find_session(name)) return;
-    if (server_.add_session(std::move(*session))) resync(name);
+    if (*failed || sessions_.find_session(name)) return;
+    if (sessions_.add_session(std::move(*session))) resync(name);
   };
   if (missing->empty()) return finish();
   for (const AssetAnnounce& asset : *missing) {
@@ -516,7 +518,7 @@ void RedisRelay::adopt_remote(const std::string& name, std::string_view definiti
           *failed = true;
         } else {
           try {
-            server_.store().add_bytes(Bytes(bytes.begin(), bytes.end()), asset.kind, asset.name);
+            sessions_.store().add_bytes(Bytes(bytes.begin(), bytes.end()), asset.kind, asset.name);
           } catch (const Error& e) {
             log(LogLevel::Error, "broker-asset-not-stored", {{"session", name}, {"asset", asset.name}, {"reason", e.what()}});
             *failed = true;

@@ -39,7 +39,7 @@ BrokerAddress parse_broker(const std::string& url);
 
 class RedisRelay final : public Relay {
  public:
-  RedisRelay(Server& server, BrokerAddress address);
+  RedisRelay(SessionFanout& sessions, BrokerAddress address);
   ~RedisRelay() override;
   void start() override;
   void stop() override;
@@ -79,7 +79,7 @@ class RedisRelay final : public Relay {
   void discover();
   void adopt_remote(const std::string& name, std::string_view value);
 
-  Server& server_;
+  SessionFanout& sessions_;
   BrokerAddress address_;
   asio::io_context& io_;
   RedisConnection commands_, events_;

@@ -12,9 +12,8 @@
 
 namespace inkwire::server {
 
-class Server;
 class Session;
-struct ServerConfig;
+class SessionFanout;
 
 // What /healthz and /metrics say of the relay.
 struct RelayStatus {
@@ -47,8 +46,8 @@ class Relay {
   virtual void session_removed(const std::string& name) { (void)name; }
 };
 
-// The relay a config asks for: local without "broker", Redis for "redis://HOST:PORT".
+// The relay a config's "broker" asks for: local without one, Redis for "redis://HOST:PORT".
 // Throws inkwire::Error for a broker this build cannot use.
-std::unique_ptr<Relay> make_relay(Server& server, const ServerConfig& config);
+std::unique_ptr<Relay> make_relay(SessionFanout& sessions, const std::string& broker);
 
 }  // namespace inkwire::server
