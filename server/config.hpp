@@ -11,7 +11,7 @@
 
 #include "protocol/messages.hpp"
 #include "common/mesh_import.hpp"
-#include "server/call/call.hpp"
+#include "server/call/call_options.hpp"
 #include "server/making/making_options.hpp"
 #include "server/products/product_store.hpp"
 

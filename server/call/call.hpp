@@ -19,6 +19,7 @@
 
 #include "protocol/messages.hpp"
 #include "server/call/call_analyst.hpp"
+#include "server/call/call_options.hpp"
 #include "server/call/voice_analysis.hpp"
 
 namespace inkwire::server {
@@ -27,13 +28,6 @@ class Connection;
 class Relay;
 struct CallShare;
 
-struct CallOptions {
-  int loudest = 3;                // K: voices each member hears at once
-  double crops_per_second = 15;   // per publisher
-  double voice_per_second = 60;   // packets per publisher (20 ms packets are 50 a second)
-  size_t max_crop_bytes = 32 * 1024;
-  size_t max_voice_bytes = 400;
-};
 
 class Call {
  public:
