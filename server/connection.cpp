@@ -111,8 +111,10 @@ asio::awaitable<void> Connection::watchdog() {
       ++server_.counters().idle_closed;
       log_warn("idle-timeout", {{"client", id_}, {"name", client_name_}, {"seconds", config.idle_timeout_seconds}});
       close_with(ErrorCode::Refused, "nothing heard for " + std::to_string(int(config.idle_timeout_seconds)) + " seconds: closed as gone");
-    } else if (now - last_heard_ > beat && now - last_ping_ > beat) {
-      // Only a quiet peer is pinged: one that talks renews its deadline by itself.
+    } else if ((now - last_heard_ > beat || now - last_written_ > beat) && now - last_ping_ > beat) {
+      // A quiet peer is pinged, and so is one that talks but is sent nothing (a member steering
+      // a session nobody else changes): a client takes a server it has not heard from for a
+      // while as gone (SessionClient::kServerSilence), whatever it sends itself.
       last_ping_ = now;
       send(Ping{.nonce = ++pings_sent_});
     }
@@ -163,7 +165,7 @@ asio::awaitable<void> Connection::write_loop() {
     }
     // Everything queued goes out in one gathered write.
     const std::deque<Outgoing> batch = queue_.take_all();
-    writing_since_ = Clock::now();
+    writing_since_ = last_written_ = Clock::now();
     const std::error_code failed = co_await transport_->write_frames(batch);
     writing_since_.reset();
     if (failed) break;

@@ -74,7 +74,7 @@ class Connection : public std::enable_shared_from_this<Connection> {
   std::pair<protocol::ErrorCode, std::string> closed_for_;  // why close_with() ends the connection
   bool greeted_ = false, closing_ = false, shut_ = false;
   using Clock = std::chrono::steady_clock;
-  Clock::time_point last_heard_ = Clock::now(), last_ping_ = Clock::now();
+  Clock::time_point last_heard_ = Clock::now(), last_ping_ = Clock::now(), last_written_ = Clock::now();
   std::optional<Clock::time_point> writing_since_;  // set while a write waits for the peer
   uint64_t pings_sent_ = 0;
   std::string voice_ticket_;                   // sent in voice-route, not yet used
