@@ -31,8 +31,10 @@ class SessionMaker {
   using Clock = std::chrono::steady_clock;
 
   // `public_listener`: some listener is reachable from other machines (then the policy defaults
-  // to the creator token).
-  SessionMaker(const MakingOptions& options, bool public_listener, SessionRegistry& registry);
+  // to the creator token). `limit_loopback`: the limits per address apply to 127.0.0.1 and ::1
+  // too, as the config's limit_loopback says for connections; without it they leave this
+  // machine alone (a proxy on it speaks for many people), and only the overall caps hold there.
+  SessionMaker(const MakingOptions& options, bool public_listener, SessionRegistry& registry, bool limit_loopback = false);
 
   MakingPolicy policy() const { return policy_; }
   const MakingOptions& options() const { return options_; }
@@ -83,9 +85,11 @@ class SessionMaker {
   std::string cap_refusal(MadeBy maker, const std::string& address, std::string* reason_key) const;   // how many
 
   size_t count_made(MadeBy maker, const std::string& address) const;  // every address when empty
+  bool limited(const std::string& address) const;                     // whether the per-address limits apply to it
 
   MakingOptions options_;
   MakingPolicy policy_;
+  bool limit_loopback_;
   std::string creator_token_hash_;
   SessionRegistry& registry_;
   std::map<std::string, Clock::time_point> unused_since_;  // sessions made on demand without members, since when

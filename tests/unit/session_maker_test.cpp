@@ -29,8 +29,8 @@ std::filesystem::path fresh_data() {
 
 // A store and a registry with nothing configured, and a maker over them.
 struct Making {
-  explicit Making(MakingOptions options, bool public_listener = false)
-      : store(fresh_data()), registry(store, config), maker(options, public_listener, registry) {
+  explicit Making(MakingOptions options, bool public_listener = false, bool limit_loopback = false)
+      : store(fresh_data()), registry(store, config), maker(options, public_listener, registry, limit_loopback) {
     config.sessions.clear();
     registry.load();
   }
@@ -139,4 +139,25 @@ TEST(SessionMakerTest, UploadsFromOneAddressAreSlowedPastTheirRate) {
   EXPECT_TRUE(m.maker.take_upload("10.0.0.2", t0, &wait).empty()) << "other addresses are not slowed";
   m.maker.upload_done();
   EXPECT_TRUE(m.maker.take_upload("10.0.0.1", t0 + 4s, &wait).empty()) << "one again after 3 s";
+}
+
+// A proxy on this machine speaks for many people: the per-address limits leave 127.0.0.1 and ::1
+// to the overall caps, as they do for connections, unless the config's limit_loopback asks.
+TEST(SessionMakerTest, ThisMachinesAddressesAreLeftToTheOverallCapsUnlessAsked) {
+  Making m({.max_rooms = 4, .max_rooms_per_address = 2, .uploads_per_minute_per_address = 1});
+  for (const char* name : {"r1", "r2", "r3"}) EXPECT_TRUE(m.maker.open_room(name, "", "127.0.0.1", t0).session) << name;
+  EXPECT_TRUE(m.maker.open_room("r4", "", "::1", t0).session);
+  EXPECT_NE(m.maker.open_room("r5", "", "127.0.0.1", t0).refusal.find("as many rooms"), std::string::npos) << "the overall cap still holds";
+  double wait = 0;
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_EQ(m.maker.take_upload("127.0.0.1", t0, &wait), "") << i;
+    m.maker.upload_done();
+  }
+  Making limited({.max_rooms = 4, .max_rooms_per_address = 2, .uploads_per_minute_per_address = 1}, false, true);
+  EXPECT_TRUE(limited.maker.open_room("r1", "", "127.0.0.1", t0).session);
+  EXPECT_TRUE(limited.maker.open_room("r2", "", "127.0.0.1", t0).session);
+  EXPECT_NE(limited.maker.open_room("r3", "", "127.0.0.1", t0).refusal.find("your address"), std::string::npos);
+  EXPECT_EQ(limited.maker.take_upload("127.0.0.1", t0, &wait), "");
+  limited.maker.upload_done();
+  EXPECT_NE(limited.maker.take_upload("127.0.0.1", t0, &wait).find("too many uploads"), std::string::npos);
 }
