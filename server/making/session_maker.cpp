@@ -177,14 +177,30 @@ std::string SessionMaker::take_upload(const std::string& address, Clock::time_po
       return "too many uploads from your address: wait " + std::to_string(int(std::ceil(*retry_after))) + " s";
     }
   }
+  if (allowance && uploads_from_[address] >= kMaxUploadsPerAddress) {
+    *retry_after = 5;
+    ++counters_.refused["busy-address"];
+    return "your address is sending " + std::to_string(kMaxUploadsPerAddress) + " uploads already: wait for them to end";
+  }
   if (uploads_running_ >= kMaxUploadsAtOnce) {
     *retry_after = 2;
     ++counters_.refused["busy"];
-    return "this server is importing other models: try again in a moment";
+    return "this server is receiving as many uploads as it takes: try again in a moment";
   }
-  if (allowance) allowance->uploads -= 1;
+  if (allowance) allowance->uploads -= 1, ++uploads_from_[address];
   ++uploads_running_;
   return "";
+}
+
+void SessionMaker::upload_done(const std::string& address) {
+  --uploads_running_;
+  if (const auto it = uploads_from_.find(address); it != uploads_from_.end() && --it->second <= 0) uploads_from_.erase(it);
+}
+
+bool SessionMaker::take_import() {
+  if (imports_running_ >= kMaxImportsAtOnce) return false;
+  ++imports_running_;
+  return true;
 }
 
 void SessionMaker::sweep(Clock::time_point now) {

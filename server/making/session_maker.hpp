@@ -63,12 +63,19 @@ class SessionMaker {
   // this one knows of.
   void sweep(Clock::time_point now);
 
-  // Whether `address` may upload now: within uploads_per_minute_per_address (a burst of a
-  // minute's worth at most) and within the imports running at once. Otherwise the refusal, and
-  // in `retry_after` the seconds to wait. A taken upload ends with upload_done().
+  // Whether `address` may begin an upload now: within uploads_per_minute_per_address (a burst of
+  // a minute's worth at most) and within the uploads being received at once, from it and in
+  // all. Otherwise the refusal, and in `retry_after` the seconds to wait. A begun upload ends
+  // with upload_done(address).
   std::string take_upload(const std::string& address, Clock::time_point now, double* retry_after);
-  void upload_done() { --uploads_running_; }
-  static constexpr int kMaxUploadsAtOnce = 2;
+  void upload_done(const std::string& address);
+  static constexpr int kMaxUploadsAtOnce = 16, kMaxUploadsPerAddress = 2;
+  // Whether an upload received whole may be imported now (an importer may use
+  // import_memory_bytes): at most kMaxImportsAtOnce run; one taken ends with import_done(). An
+  // upload's body is no import: a sender that stalls holds no import's place.
+  bool take_import();
+  void import_done() { --imports_running_; }
+  static constexpr int kMaxImportsAtOnce = 2;
 
   // A refusal counted under `reason_key` (uploads refused for their size or content).
   void count_refusal(const std::string& reason_key) { ++counters_.refused[reason_key]; }
@@ -98,7 +105,8 @@ class SessionMaker {
     Clock::time_point at{};
   };
   std::map<std::string, Allowance> upload_allowance_;  // per address: uploads it may still make now
-  int uploads_running_ = 0;
+  int uploads_running_ = 0, imports_running_ = 0;
+  std::map<std::string, int> uploads_from_;  // uploads being received, by (limited) address
   MakingCounters counters_;
 };
 

@@ -362,3 +362,41 @@ TEST_F(UploadsE2ETest, ModelsOverTheTriangleOrTexturePixelCapsAreRefusedSayingWh
   EXPECT_EQ(files_under(dir / "data" / "uploads"), 0u);
 }
 
+
+// Uploads that stall (a head and a little of the body, then nothing) cost their senders only:
+// someone else's upload meanwhile becomes a scene, and the stalled ones are cut off with the
+// reason, leaving nothing behind. (Each upload held one of the server's two import places from
+// its head on, so two stalled senders refused every other upload for as long as they stalled.)
+TEST_F(UploadsE2ETest, StalledUploadsCostOnlyTheirSenders) {
+  const fs::path dir = output_dir("uploads-stalled");
+  ServerUnderTest server(dir, upload_config(nlohmann::json::object(), {{"limit_loopback", true}}));
+  const int port = http_port(server);
+  asio::io_context io;
+  std::vector<std::unique_ptr<asio::ip::tcp::socket>> stalled;
+  for (int i = 0; i < 3; ++i) {
+    auto s = std::make_unique<asio::ip::tcp::socket>(io);
+    s->open(asio::ip::tcp::v4());
+    s->bind({asio::ip::make_address("127.0.0.3"), 0});  // the stalling sender's own address
+    s->connect({asio::ip::make_address("127.0.0.1"), uint16_t(port)});
+    const std::string start = "--" + kBoundary + "\r\nContent-Disposition: form-data; name=\"files\"; filename=\"big.obj\"\r\n\r\nv 0 0 0\n";
+    asio::write(*s, asio::buffer("POST /scenes HTTP/1.1\r\nHost: x\r\nContent-Type: multipart/form-data; boundary=" + kBoundary +
+                                 "\r\nContent-Length: 1000000\r\n\r\n" + start));
+    stalled.push_back(std::move(s));
+  }
+  ASSERT_TRUE(eventually([&] { return files_under(dir / "data" / "uploads") >= 2; })) << "the stalled uploads were not begun";
+  const auto since = std::chrono::steady_clock::now();
+  const HttpAnswer other = upload_files(port, kBoxFiles);
+  EXPECT_EQ(other.status, 201) << "another sender's upload was refused while uploads stalled:\n" << other.raw;
+  EXPECT_LT(std::chrono::steady_clock::now() - since, 10s);
+  // The stalled ones are answered with why, and their files go.
+  for (auto& s : stalled) {
+    std::string raw;
+    std::error_code ec;
+    asio::read(*s, asio::dynamic_buffer(raw), ec);  // until the server closes, 15 s without a byte
+    const HttpAnswer answer = parse_answer(raw);
+    if (answer.status == 429) continue;  // the third, if its sender's address may upload two at once
+    EXPECT_EQ(answer.status, 400) << raw;
+    EXPECT_NE(answer.error().find("stalled"), std::string::npos) << raw;
+  }
+  EXPECT_TRUE(eventually([&] { return files_under(dir / "data" / "uploads") == 0; })) << "a stalled upload left its files";
+}
