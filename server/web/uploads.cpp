@@ -10,6 +10,7 @@
 #include "common/log.hpp"
 #include "server/making/import_process.hpp"
 #include "server/making/multipart.hpp"
+#include "server/relay/relay.hpp"
 #include "server/server.hpp"
 #include "server/session_token.hpp"
 #include "server/web/http_reply.hpp"
@@ -186,6 +187,7 @@ asio::awaitable<std::string> receive_upload(Server& server, ByteStream& socket, 
   }
   if (scene) {
     if (const std::string why = maker.replace_model(*scene, model); !why.empty()) co_return refusal(409, why);
+    server.relay().model_replaced(*scene);  // and the members on other instances
     co_return json_reply(200, {{"name", scene->name()}, {"page", "/scene/" + scene->name()}, {"triangles", imported.triangles}, {"bytes", model.size}});
   }
   const SessionMaker::Made made = maker.make_scene(model, address, SessionMaker::Clock::now());

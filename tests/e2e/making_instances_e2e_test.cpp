@@ -2,7 +2,8 @@
 // a real Redis on 127.0.0.1. A room opened on instance one (`inkwire-client --new`) is joined
 // from instance two and each side's native member shows the other, and the host's lock and
 // removal hold there too; a scene uploaded to instance one is joined and drawn from instance
-// two (its model fetched through two). Skipped with a message without redis-server.
+// two (its model fetched through two), and its editor's new model reaches a member there, who
+// draws it. Skipped with a message without redis-server.
 #include <set>
 
 #include <gtest/gtest.h>
@@ -23,6 +24,7 @@ namespace {
 
 const fs::path kBox = "/usr/share/assimp/models/glTF2/BoxTextured-glTF";
 const std::vector<fs::path> kBoxFiles = {kBox / "BoxTextured.gltf", kBox / "BoxTextured0.bin", kBox / "CesiumLogoFlat.png"};
+const fs::path kJeep = "/usr/share/assimp/models/MS3D";
 
 fs::path with_instance_folders(const fs::path& dir) {
   fs::create_directories(dir / "one");
@@ -101,13 +103,13 @@ TEST_F(MakingInstancesE2ETest, ARoomOpenedOnOneInstanceIsJoinedFromTheOther) {
   EXPECT_THROW(late.join("crossing", ""), Error) << "the room outlived its members on instance two";
 }
 
-TEST_F(MakingInstancesE2ETest, ASceneUploadedToOneInstanceIsDrawnFromTheOther) {
+TEST_F(MakingInstancesE2ETest, ASceneUploadedToOneInstanceIsDrawnFromTheOtherAndItsNewModelReachesMembersThere) {
   const fs::path dir = output_dir("making-instances-scene");
   TwoInstances instances(dir);
   ServerUnderTest &one = instances.one, &two = instances.two;
   const HttpAnswer made = upload_files(http_port(one), kBoxFiles);
   ASSERT_EQ(made.status, 201) << made.raw;
-  const std::string name = made.json().value("name", "");
+  const std::string name = made.json().value("name", ""), key = made.json().value("editor_key", "");
   ASSERT_TRUE(eventually([&] { return events_for(two, "session-added", name) == 1; })) << two.process().output();
   auto viewer = headless_client(two, name, dir, "viewer", 1, 10);
   ASSERT_EQ(viewer->wait(), 0) << viewer->output();
@@ -116,6 +118,23 @@ TEST_F(MakingInstancesE2ETest, ASceneUploadedToOneInstanceIsDrawnFromTheOther) {
                  dir / "render.log");
   ASSERT_EQ(render.wait(), 0) << render.output();
   EXPECT_GE(psnr(load_image(client_frame(dir, "viewer", 0)), load_image(dir / "render.png")), 35.0) << "instance two's member drew another box";
+
+  // The editor (on instance one) replaces the model: a member on instance two gets it.
+  SessionClient member(two.address(), "member");
+  const protocol::Snapshot first = member.join(name, "");
+  const HttpAnswer replaced =
+      upload_files(http_port(one), {kJeep / "jeep1.ms3d", kJeep / "jeep1.jpg"}, "/scenes/" + name + "/model", "X-Inkwire-Editor-Key: " + key + "\r\n");
+  ASSERT_EQ(replaced.status, 200) << replaced.raw;
+  ASSERT_TRUE(eventually([&] { return member.state().assets != first.assets; }, 30s)) << "the new model did not reach instance two's member";
+  EXPECT_EQ(member.state().assets.at(0).name, "jeep1.glb");
+  EXPECT_EQ(member.state().camera, first.camera);
+  auto after = headless_client(two, name, dir, "after", 1, 10);
+  ASSERT_EQ(after->wait(), 0) << after->output();
+  Process jeep("inkwire-render", {"--mesh", (kJeep / "jeep1.ms3d").string(), "--style", "comic-extended", "--view", "30,20,1.4", "--size", "240x180",
+                                  "--out", (dir / "jeep.png").string()},
+               dir / "jeep.log");
+  ASSERT_EQ(jeep.wait(), 0) << jeep.output();
+  EXPECT_GE(psnr(load_image(client_frame(dir, "after", 0)), load_image(dir / "jeep.png")), 35.0) << "instance two draws another model than the jeep";
 }
 
 TEST_F(MakingInstancesE2ETest, ARoomLockedOnOneInstanceTakesNoNewcomerOnTheOther) {
