@@ -62,7 +62,7 @@ Server::Server(asio::io_context& io, ServerConfig config) : io_(io), config_(std
   relay_ = make_relay(*this, config_.broker);  // a broker this build cannot use is refused before the data folder is made
   store_.emplace(config_.data_dir);
   registry_.emplace(*store_, config_);
-  maker_.emplace(config_.making, !loopback(config_.host) || (config_.http && !loopback(config_.http_host)), *registry_);
+  maker_.emplace(config_.making, !loopback(config_.host) || (config_.http && !loopback(config_.http_host)), *registry_, config_.limit_loopback);
   create_sessions();
 }
 

@@ -92,11 +92,21 @@ void Call::set_locked(bool locked) {
   locked_ = locked;
   log_info(locked ? "room-locked" : "room-unlocked", {{"session", session_}});
   send_roster();
+  share_roster();  // the other instances take newcomers no more either
 }
 
 bool Call::remove(uint16_t member, const std::string& reason) {
   Member* m = find_member(member);
-  if (!m) return false;
+  if (!m) {
+    // A member of another instance: that instance removes it (and its roster then says so).
+    const auto remote = std::find_if(remotes_.begin(), remotes_.end(), [&](const auto& r) { return r.second.entry.member == member; });
+    if (remote == remotes_.end()) return false;
+    log_info("room-member-removed", {{"session", session_}, {"member", member}, {"name", remote->second.entry.name}, {"on", remote->first.first}});
+    relay_.share_call({.origin = origin_, .session = session_, .removal = CallShare::Removal{remote->first.first, remote->first.second, reason}});
+    remotes_.erase(remote);
+    send_roster();
+    return true;
+  }
   log_info("room-member-removed", {{"session", session_}, {"member", member}, {"name", m->entry.name}});
   const auto connection = m->connection.lock();
   // Not kept among those who left: coming back, it is a newcomer (refused while the room is locked).
@@ -111,6 +121,8 @@ bool Call::remove(uint16_t member, const std::string& reason) {
 std::string Call::host_name() const {
   for (const auto& [id, m] : members_)
     if (m->host) return m->entry.name;
+  for (const auto& [key, r] : remotes_)
+    if (r.host) return r.entry.name;
   return "";
 }
 
@@ -154,6 +166,8 @@ void Call::send_roster() {
   roster.locked = locked_;
   for (const auto& [id, m] : members_)
     if (m->host) roster.host = m->entry.member;
+  for (const auto& [key, r] : remotes_)
+    if (r.host && roster.host == 0) roster.host = r.entry.member;
   for (const auto& [id, m] : members_)
     if (const auto c = m->connection.lock()) {
       roster.you = m->entry.member;

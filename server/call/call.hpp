@@ -52,10 +52,12 @@ class Call {
 
   // The room's host controls (SPEC N7): a locked room takes no newcomers but its host; a member
   // removed is closed with error 12 and the reason. False when no member has that number.
+  // With several instances the room is one: the instance its host is on says whether it is
+  // locked (in the roster it shares), and a member of another instance is removed there.
   bool locked() const { return locked_; }
   void set_locked(bool locked);
   bool remove(uint16_t member, const std::string& reason);
-  // The name of the host while it is in the call, else empty.
+  // The name of the host while it is in the call (on any instance), else empty.
   std::string host_name() const;
   // Members of other instances in the roster now.
   size_t remote_members() const { return remotes_.size(); }
@@ -123,6 +125,7 @@ class Call {
   // loudest few across the whole call (SPEC F19), not a few of its own each.
   struct Remote {
     protocol::CallMember entry;
+    bool host = false;  // the room's host, by its origin's roster
     std::map<protocol::Hash, protocol::Bytes> asset_bytes;
     Clock::time_point heard;
     VoiceAnalysis voice;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <openssl/rand.h>
 
+#include <asio/ip/address.hpp>
+
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "server/session.hpp"
@@ -21,9 +23,10 @@ bool good_name(const std::string& name, size_t max) {
 
 }  // namespace
 
-SessionMaker::SessionMaker(const MakingOptions& options, bool public_listener, SessionRegistry& registry)
+SessionMaker::SessionMaker(const MakingOptions& options, bool public_listener, SessionRegistry& registry, bool limit_loopback)
     : options_(options),
       policy_(options.who_given ? options.who : public_listener ? MakingPolicy::Token : MakingPolicy::Anyone),
+      limit_loopback_(limit_loopback),
       creator_token_hash_(hash_token(options.creator_token)),
       registry_(registry) {}
 
@@ -44,6 +47,12 @@ size_t SessionMaker::count_made(MadeBy maker, const std::string& address) const 
   for (const auto& [name, session] : registry_.all())
     if (session->stored().maker == maker && (address.empty() || session->stored().creator == address)) ++n;
   return n;
+}
+
+bool SessionMaker::limited(const std::string& address) const {
+  std::error_code ec;
+  const auto ip = asio::ip::make_address(address, ec);
+  return limit_loopback_ || ec || !ip.is_loopback();
 }
 
 size_t SessionMaker::open_rooms() const { return count_made(MadeBy::Room, ""); }
@@ -75,7 +84,7 @@ std::string SessionMaker::cap_refusal(MadeBy maker, const std::string& address, 
     if (reason_key) *reason_key = "cap";
     return std::string("this server has as many ") + kinds + " open as it takes (" + std::to_string(cap) + ")";
   }
-  if (count_made(maker, address) >= per_address) {
+  if (limited(address) && count_made(maker, address) >= per_address) {
     if (reason_key) *reason_key = "cap-per-address";
     return "your address has " + std::to_string(per_address) + " " + kinds + " open already, as many as this server allows one address";
   }
@@ -154,26 +163,44 @@ std::string SessionMaker::replace_model(Session& scene, const protocol::AssetAnn
 }
 
 std::string SessionMaker::take_upload(const std::string& address, Clock::time_point now, double* retry_after) {
-  const double rate = options_.uploads_per_minute_per_address / 60.0, burst = std::max(1.0, options_.uploads_per_minute_per_address);
-  // Addresses whose allowance is full again are forgotten, so the map holds only the busy ones.
-  std::erase_if(upload_allowance_, [&](const auto& a) { return a.second.uploads + rate * std::chrono::duration<double>(now - a.second.at).count() >= burst; });
-  auto [it, fresh] = upload_allowance_.try_emplace(address, Allowance{burst, now});
-  Allowance& a = it->second;
-  a.uploads = std::min(burst, a.uploads + rate * std::chrono::duration<double>(now - a.at).count());
-  a.at = now;
-  if (a.uploads < 1) {
-    *retry_after = (1 - a.uploads) / rate;
-    ++counters_.refused["rate"];
-    return "too many uploads from your address: wait " + std::to_string(int(std::ceil(*retry_after))) + " s";
+  Allowance* allowance = nullptr;  // none for an address the per-address limits leave alone
+  if (limited(address)) {
+    const double rate = options_.uploads_per_minute_per_address / 60.0, burst = std::max(1.0, options_.uploads_per_minute_per_address);
+    // Addresses whose allowance is full again are forgotten, so the map holds only the busy ones.
+    std::erase_if(upload_allowance_, [&](const auto& a) { return a.second.uploads + rate * std::chrono::duration<double>(now - a.second.at).count() >= burst; });
+    allowance = &upload_allowance_.try_emplace(address, Allowance{burst, now}).first->second;
+    allowance->uploads = std::min(burst, allowance->uploads + rate * std::chrono::duration<double>(now - allowance->at).count());
+    allowance->at = now;
+    if (allowance->uploads < 1) {
+      *retry_after = (1 - allowance->uploads) / rate;
+      ++counters_.refused["rate"];
+      return "too many uploads from your address: wait " + std::to_string(int(std::ceil(*retry_after))) + " s";
+    }
+  }
+  if (allowance && uploads_from_[address] >= kMaxUploadsPerAddress) {
+    *retry_after = 5;
+    ++counters_.refused["busy-address"];
+    return "your address is sending " + std::to_string(kMaxUploadsPerAddress) + " uploads already: wait for them to end";
   }
   if (uploads_running_ >= kMaxUploadsAtOnce) {
     *retry_after = 2;
     ++counters_.refused["busy"];
-    return "this server is importing other models: try again in a moment";
+    return "this server is receiving as many uploads as it takes: try again in a moment";
   }
-  a.uploads -= 1;
+  if (allowance) allowance->uploads -= 1, ++uploads_from_[address];
   ++uploads_running_;
   return "";
+}
+
+void SessionMaker::upload_done(const std::string& address) {
+  --uploads_running_;
+  if (const auto it = uploads_from_.find(address); it != uploads_from_.end() && --it->second <= 0) uploads_from_.erase(it);
+}
+
+bool SessionMaker::take_import() {
+  if (imports_running_ >= kMaxImportsAtOnce) return false;
+  ++imports_running_;
+  return true;
 }
 
 void SessionMaker::sweep(Clock::time_point now) {

@@ -31,8 +31,10 @@ class SessionMaker {
   using Clock = std::chrono::steady_clock;
 
   // `public_listener`: some listener is reachable from other machines (then the policy defaults
-  // to the creator token).
-  SessionMaker(const MakingOptions& options, bool public_listener, SessionRegistry& registry);
+  // to the creator token). `limit_loopback`: the limits per address apply to 127.0.0.1 and ::1
+  // too, as the config's limit_loopback says for connections; without it they leave this
+  // machine alone (a proxy on it speaks for many people), and only the overall caps hold there.
+  SessionMaker(const MakingOptions& options, bool public_listener, SessionRegistry& registry, bool limit_loopback = false);
 
   MakingPolicy policy() const { return policy_; }
   const MakingOptions& options() const { return options_; }
@@ -61,12 +63,19 @@ class SessionMaker {
   // this one knows of.
   void sweep(Clock::time_point now);
 
-  // Whether `address` may upload now: within uploads_per_minute_per_address (a burst of a
-  // minute's worth at most) and within the imports running at once. Otherwise the refusal, and
-  // in `retry_after` the seconds to wait. A taken upload ends with upload_done().
+  // Whether `address` may begin an upload now: within uploads_per_minute_per_address (a burst of
+  // a minute's worth at most) and within the uploads being received at once, from it and in
+  // all. Otherwise the refusal, and in `retry_after` the seconds to wait. A begun upload ends
+  // with upload_done(address).
   std::string take_upload(const std::string& address, Clock::time_point now, double* retry_after);
-  void upload_done() { --uploads_running_; }
-  static constexpr int kMaxUploadsAtOnce = 2;
+  void upload_done(const std::string& address);
+  static constexpr int kMaxUploadsAtOnce = 16, kMaxUploadsPerAddress = 2;
+  // Whether an upload received whole may be imported now (an importer may use
+  // import_memory_bytes): at most kMaxImportsAtOnce run; one taken ends with import_done(). An
+  // upload's body is no import: a sender that stalls holds no import's place.
+  bool take_import();
+  void import_done() { --imports_running_; }
+  static constexpr int kMaxImportsAtOnce = 2;
 
   // A refusal counted under `reason_key` (uploads refused for their size or content).
   void count_refusal(const std::string& reason_key) { ++counters_.refused[reason_key]; }
@@ -83,9 +92,11 @@ class SessionMaker {
   std::string cap_refusal(MadeBy maker, const std::string& address, std::string* reason_key) const;   // how many
 
   size_t count_made(MadeBy maker, const std::string& address) const;  // every address when empty
+  bool limited(const std::string& address) const;                     // whether the per-address limits apply to it
 
   MakingOptions options_;
   MakingPolicy policy_;
+  bool limit_loopback_;
   std::string creator_token_hash_;
   SessionRegistry& registry_;
   std::map<std::string, Clock::time_point> unused_since_;  // sessions made on demand without members, since when
@@ -94,7 +105,8 @@ class SessionMaker {
     Clock::time_point at{};
   };
   std::map<std::string, Allowance> upload_allowance_;  // per address: uploads it may still make now
-  int uploads_running_ = 0;
+  int uploads_running_ = 0, imports_running_ = 0;
+  std::map<std::string, int> uploads_from_;  // uploads being received, by (limited) address
   MakingCounters counters_;
 };
 

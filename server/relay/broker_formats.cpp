@@ -42,6 +42,9 @@ struct Reader {
 }  // namespace
 
 std::string call_share(const CallShare& share) {
+  if (share.removal)
+    return "R" + counted(share.origin) + counted(share.session) + counted(share.removal->instance) + std::to_string(share.removal->member) + " " +
+           counted(share.removal->reason);
   std::string out = (share.message ? "M" : "P") + counted(share.origin) + counted(share.session);
   if (share.message) {
     const protocol::Bytes frame = protocol::encode(*share.message);
@@ -51,11 +54,22 @@ std::string call_share(const CallShare& share) {
 }
 
 CallShare parse_call_share(std::string_view text) {
-  if (text.empty() || (text[0] != 'M' && text[0] != 'P')) throw ProtocolError("broker text: not a call share");
+  if (text.empty() || (text[0] != 'M' && text[0] != 'P' && text[0] != 'R')) throw ProtocolError("broker text: not a call share");
   Reader r{text.substr(1)};
   CallShare share;
   share.origin = r.name("origin");
   share.session = r.name("session");
+  if (text[0] == 'R') {
+    CallShare::Removal removal;
+    removal.instance = r.name("instance");
+    const uint64_t member = r.number(' ', "member");
+    if (member == 0 || member > 65535) throw ProtocolError("broker text: member number outside 1..65535");
+    removal.member = uint16_t(member);
+    removal.reason = r.bytes(protocol::kMaxReason, "reason");
+    if (!r.rest.empty()) throw ProtocolError("broker text: bytes after a removal");
+    share.removal = std::move(removal);
+    return share;
+  }
   if (text[0] == 'M') {
     share.message = r.frame();
     const auto type = protocol::type_of(*share.message);

@@ -22,7 +22,7 @@ using namespace protocol;
 using namespace std::chrono_literals;
 
 constexpr std::string_view kEvents = "inkwire:events";      // changes, published by kPublish
-constexpr std::string_view kNotices = "inkwire:notices";    // a session was shared: its name
+constexpr std::string_view kNotices = "inkwire:notices";    // a session was shared, or its model replaced: its name
 constexpr std::string_view kCalls = "inkwire:calls";        // calls' voice, faces, rosters and photos (broker_formats.hpp)
 constexpr std::string_view kSessions = "inkwire:sessions";  // hash: name -> definition
 constexpr uint64_t kMaxSharedAsset = 64 << 20;              // larger assets need a shared data folder
@@ -197,7 +197,14 @@ void RedisRelay::on_subscription(const redisReply* r) {
   }
   if (kind != "message") return;
   if (channel == kEvents) on_event(text_of(r->element[2]));
-  else if (channel == kNotices) discover();
+  else if (channel == kNotices) {
+    // Only the session named: every instance reading every definition at each notice costs the
+    // square of the sessions when rooms open by the thousand.
+    const std::string name(text_of(r->element[2]));
+    commands_.command({"HGET", kSessions, name}, [this, name](const redisReply* r) {
+      if (!is_error(r) && r->type == REDIS_REPLY_STRING) take_definition(name, text_of(r));
+    });
+  }
   else if (channel == kCalls) on_call(text_of(r->element[2]));
 }
 
@@ -471,10 +478,65 @@ void RedisRelay::share_asset(const AssetAnnounce& asset) {
 void RedisRelay::discover() {
   commands_.command({"HGETALL", kSessions}, [this](const redisReply* r) {
     if (is_error(r) || r->type != REDIS_REPLY_ARRAY) return;
-    for (size_t i = 0; i + 1 < r->elements; i += 2) {
-      const std::string name(text_of(r->element[i]));
-      if (!sessions_.find_session(name) && !adopting_.count(name)) adopt_remote(name, text_of(r->element[i + 1]));
-    }
+    for (size_t i = 0; i + 1 < r->elements; i += 2) take_definition(std::string(text_of(r->element[i])), text_of(r->element[i + 1]));
+  });
+}
+
+void RedisRelay::take_definition(const std::string& name, std::string_view definition) {
+  if (adopting_.count(name)) return;
+  const std::shared_ptr<Session> served = sessions_.find_session(name);
+  if (!served) return adopt_remote(name, definition);
+  if (const auto known = definitions_.find(name); known != definitions_.end() && known->second == definition) return;
+  StoredSession stored;
+  try {
+    stored = parse_session_definition(definition);
+  } catch (const std::exception& e) {
+    log_warn("broker-session-malformed", {{"session", name}, {"reason", e.what()}});
+    return;
+  }
+  // Only a made scene's model changes while it runs (its editor's new upload); other differences
+  // (the same name configured otherwise on two instances) are left as they are.
+  const auto mesh = [](const protocol::Snapshot& s) {
+    for (const AssetAnnounce& a : s.assets)
+      if (a.kind == AssetKind::Mesh) return std::optional(a);
+    return std::optional<AssetAnnounce>();
+  };
+  const bool scene = served->state().kind == SessionKind::Scene && served->state().product.directions.empty() && stored.state.kind == SessionKind::Scene &&
+                     served->stored().maker != MadeBy::Operator;
+  if (!scene || !mesh(stored.state) || mesh(stored.state) == mesh(served->state())) return;
+  adopt_model(name, definition, std::move(stored));
+}
+
+// Another instance's editor gave a scene served here a new model: fetched, then every member
+// here gets it (its style and camera kept, as on the instance it was uploaded to).
+void RedisRelay::adopt_model(const std::string& name, std::string_view definition, StoredSession stored) {
+  adopting_.insert(name);
+  definitions_[name] = std::string(definition);
+  const std::vector<AssetAnnounce> assets = stored.state.assets;
+  fetch_missing(name, assets, [this, name, assets](bool fetched) {
+    adopting_.erase(name);
+    const std::shared_ptr<Session> session = sessions_.find_session(name);
+    if (!fetched || !session) return;
+    for (const AssetAnnounce& a : assets)
+      if (a.kind == AssetKind::Mesh) {
+        session->replace_model(a);
+        log_info("broker-model-replaced", {{"session", name}, {"model", a.name}, {"members", session->members()}});
+        return;
+      }
+  });
+}
+
+// The new model goes to the broker before the definition naming it (one connection keeps the
+// order), then the notice that brings the other instances to read it.
+void RedisRelay::model_replaced(const Session& session) {
+  const std::string name = session.name();
+  const std::string definition = session_definition(session.stored());
+  definitions_[name] = definition;
+  if (!ready_) return;
+  for (const AssetAnnounce& asset : session.state().assets) share_asset(asset);
+  commands_.command({"HSET", kSessions, name, definition}, [this, name](const redisReply* r) {
+    if (is_error(r)) return log_warn("broker-session-not-shared", {{"session", name}, {"reason", reason_of(r)}});
+    commands_.command({"PUBLISH", kNotices, name}, [](const redisReply*) {});
   });
 }
 
@@ -493,18 +555,22 @@ void RedisRelay::adopt_remote(const std::string& name, std::string_view definiti
     return;
   }
   adopting_.insert(name);
-  auto missing = std::make_shared<std::vector<AssetAnnounce>>();
-  for (const AssetAnnounce& a : stored.state.assets)
-    if (!sessions_.store().find(a.hash)) missing->push_back(a);
   definitions_[name] = std::string(definition);
   auto session = std::make_shared<StoredSession>(std::move(stored));
+  fetch_missing(name, session->state.assets, [this, name, session](bool fetched) {
+    adopting_.erase(name);
+    if (!fetched || sessions_.find_session(name)) return;
+    if (sessions_.add_session(std::move(*session))) resync(name);
+  });
+}
+
+void RedisRelay::fetch_missing(const std::string& name, const std::vector<AssetAnnounce>& assets, std::function<void(bool)> done) {
+  auto missing = std::make_shared<std::vector<AssetAnnounce>>();
+  for (const AssetAnnounce& a : assets)
+    if (!sessions_.store().find(a.hash)) missing->push_back(a);
   auto left = std::make_shared<size_t>(missing->size());
   auto failed = std::make_shared<bool>(false);
-  const auto finish = [this, name, session, failed] {
-    adopting_.erase(name);
-    if (*failed || sessions_.find_session(name)) return;
-    if (sessions_.add_session(std::move(*session))) resync(name);
-  };
+  const auto finish = [failed, done = std::move(done)] { done(!*failed); };
   if (missing->empty()) return finish();
   for (const AssetAnnounce& asset : *missing) {
     const bool sent = commands_.command({"GET", asset_key(asset.hash)}, [this, name, asset, left, failed, finish](const redisReply* r) {
@@ -527,7 +593,7 @@ void RedisRelay::adopt_remote(const std::string& name, std::string_view definiti
       }
       if (--*left == 0) finish();
     });
-    // Not sent (the broker went away meanwhile): the adoption fails now instead of never ending;
+    // Not sent (the broker went away meanwhile): the fetch fails now instead of never ending;
     // the next discovery after the broker is back tries again.
     if (!sent) {
       *failed = true;

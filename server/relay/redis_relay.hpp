@@ -13,6 +13,7 @@
 //   (reconnecting with back-off) and then resynchronises.
 // All of it runs on the server's I/O thread through asynchronous hiredis calls.
 #include <chrono>
+#include <functional>
 #include <map>
 #include <set>
 #include <string>
@@ -48,6 +49,7 @@ class RedisRelay final : public Relay {
   void share_call(const CallShare& share) override;
   void session_added(const Session& session) override;
   void session_removed(const std::string& name) override;
+  void model_replaced(const Session& session) override;
 
  private:
   using Event = BrokerEvent;
@@ -77,7 +79,14 @@ class RedisRelay final : public Relay {
   void share(const Session& session);
   void share_asset(const protocol::AssetAnnounce& asset);
   void discover();
+  // A session's definition as the broker holds it: a session this instance lacks is adopted, a
+  // scene it serves whose model the definition changed takes the new model.
+  void take_definition(const std::string& name, std::string_view definition);
   void adopt_remote(const std::string& name, std::string_view value);
+  void adopt_model(const std::string& name, std::string_view definition, StoredSession stored);
+  // The assets of `assets` this instance lacks, fetched from the broker and stored (each checked
+  // against its hash); then `done(true)`, or `done(false)` once one could not be had.
+  void fetch_missing(const std::string& name, const std::vector<protocol::AssetAnnounce>& assets, std::function<void(bool)> done);
 
   SessionFanout& sessions_;
   BrokerAddress address_;

@@ -44,6 +44,9 @@ class Relay {
   // other instances hear of it; nothing to do alone.
   virtual void session_added(const Session& session) { (void)session; }
   virtual void session_removed(const std::string& name) { (void)name; }
+  // A running scene given a new model (its editor's upload): the other instances' members get it
+  // too; nothing to do alone.
+  virtual void model_replaced(const Session& session) { (void)session; }
 };
 
 // The relay a config's "broker" asks for: local without one, Redis for "redis://HOST:PORT".

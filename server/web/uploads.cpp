@@ -10,6 +10,7 @@
 #include "common/log.hpp"
 #include "server/making/import_process.hpp"
 #include "server/making/multipart.hpp"
+#include "server/relay/relay.hpp"
 #include "server/server.hpp"
 #include "server/session_token.hpp"
 #include "server/web/http_reply.hpp"
@@ -57,8 +58,10 @@ asio::awaitable<std::string> read_body(ByteStream& socket, uint64_t length, std:
     watchdog->async_wait([&socket, heard, stalled, watchdog, &watch](std::error_code ec) {
       if (ec) return;
       if (std::chrono::steady_clock::now() - *heard > kStall) {
+        // The read waiting for it ends; the socket stays open for the reply saying why.
         *stalled = true;
-        socket.close();
+        std::error_code ignored;
+        socket.socket().cancel(ignored);
         return;
       }
       watch();
@@ -139,8 +142,9 @@ asio::awaitable<std::string> receive_upload(Server& server, ByteStream& socket, 
     co_return refusal(429, busy, "Retry-After: " + std::to_string(int(std::ceil(retry_after))) + "\r\n");
   struct Done {
     SessionMaker& maker;
-    ~Done() { maker.upload_done(); }
-  } done{maker};
+    const std::string& address;
+    ~Done() { maker.upload_done(address); }
+  } done{maker, address};
   std::optional<UploadFolder> folder;
   try {
     folder.emplace(server.config().data_dir);
@@ -154,6 +158,21 @@ asio::awaitable<std::string> receive_upload(Server& server, ByteStream& socket, 
     log_info("upload-refused", {{"peer", address}, {"reason", problem}});
     co_return refusal(400, problem);
   }
+  // Imports run a few at a time (each may take import_memory_bytes): an upload read whole waits
+  // its turn, for as long as two imports may take, then is refused.
+  const auto waiting_since = std::chrono::steady_clock::now();
+  while (!maker.take_import()) {
+    if (std::chrono::steady_clock::now() - waiting_since > std::chrono::duration<double>(2 * options.import_seconds + 5)) {
+      maker.count_refusal("busy");
+      co_return refusal(503, "this server is importing other models: try again in a moment", "Retry-After: 10\r\n");
+    }
+    asio::steady_timer pause(socket.get_executor(), std::chrono::milliseconds(100));
+    co_await pause.async_wait(no_throw);
+  }
+  struct ImportDone {
+    SessionMaker& maker;
+    ~ImportDone() { maker.import_done(); }
+  } import_done{maker};
   const ImportOutcome imported = co_await import_model(folder->path / "files", folder->path / "model.glb", options);
   if (!imported.error.empty()) {
     maker.count_refusal("import");
@@ -168,6 +187,7 @@ asio::awaitable<std::string> receive_upload(Server& server, ByteStream& socket, 
   }
   if (scene) {
     if (const std::string why = maker.replace_model(*scene, model); !why.empty()) co_return refusal(409, why);
+    server.relay().model_replaced(*scene);  // and the members on other instances
     co_return json_reply(200, {{"name", scene->name()}, {"page", "/scene/" + scene->name()}, {"triangles", imported.triangles}, {"bytes", model.size}});
   }
   const SessionMaker::Made made = maker.make_scene(model, address, SessionMaker::Clock::now());

@@ -29,8 +29,8 @@ std::filesystem::path fresh_data() {
 
 // A store and a registry with nothing configured, and a maker over them.
 struct Making {
-  explicit Making(MakingOptions options, bool public_listener = false)
-      : store(fresh_data()), registry(store, config), maker(options, public_listener, registry) {
+  explicit Making(MakingOptions options, bool public_listener = false, bool limit_loopback = false)
+      : store(fresh_data()), registry(store, config), maker(options, public_listener, registry, limit_loopback) {
     config.sessions.clear();
     registry.load();
   }
@@ -131,12 +131,54 @@ TEST(SessionMakerTest, UploadsFromOneAddressAreSlowedPastTheirRate) {
   for (int i = 0; i < 50; ++i) {  // 50 in the same moment
     if (m.maker.take_upload("10.0.0.1", t0, &wait).empty()) {
       ++taken;
-      m.maker.upload_done();
+      m.maker.upload_done("10.0.0.1");
     }
   }
   EXPECT_EQ(taken, 20) << "a minute's worth at once, then slowed";
   EXPECT_GT(wait, 0.0);
   EXPECT_TRUE(m.maker.take_upload("10.0.0.2", t0, &wait).empty()) << "other addresses are not slowed";
-  m.maker.upload_done();
+  m.maker.upload_done("10.0.0.2");
   EXPECT_TRUE(m.maker.take_upload("10.0.0.1", t0 + 4s, &wait).empty()) << "one again after 3 s";
+}
+
+// A proxy on this machine speaks for many people: the per-address limits leave 127.0.0.1 and ::1
+// to the overall caps, as they do for connections, unless the config's limit_loopback asks.
+TEST(SessionMakerTest, ThisMachinesAddressesAreLeftToTheOverallCapsUnlessAsked) {
+  Making m({.max_rooms = 4, .max_rooms_per_address = 2, .uploads_per_minute_per_address = 1});
+  for (const char* name : {"r1", "r2", "r3"}) EXPECT_TRUE(m.maker.open_room(name, "", "127.0.0.1", t0).session) << name;
+  EXPECT_TRUE(m.maker.open_room("r4", "", "::1", t0).session);
+  EXPECT_NE(m.maker.open_room("r5", "", "127.0.0.1", t0).refusal.find("as many rooms"), std::string::npos) << "the overall cap still holds";
+  double wait = 0;
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_EQ(m.maker.take_upload("127.0.0.1", t0, &wait), "") << i;
+    m.maker.upload_done("127.0.0.1");
+  }
+  Making limited({.max_rooms = 4, .max_rooms_per_address = 2, .uploads_per_minute_per_address = 1}, false, true);
+  EXPECT_TRUE(limited.maker.open_room("r1", "", "127.0.0.1", t0).session);
+  EXPECT_TRUE(limited.maker.open_room("r2", "", "127.0.0.1", t0).session);
+  EXPECT_NE(limited.maker.open_room("r3", "", "127.0.0.1", t0).refusal.find("your address"), std::string::npos);
+  EXPECT_EQ(limited.maker.take_upload("127.0.0.1", t0, &wait), "");
+  limited.maker.upload_done("127.0.0.1");
+  EXPECT_NE(limited.maker.take_upload("127.0.0.1", t0, &wait).find("too many uploads"), std::string::npos);
+}
+
+// Uploads being received are bounded per address and in all; imports apart from them, so a
+// sender whose body stalls holds no import's place.
+TEST(SessionMakerTest, UploadsAtOnceAreBoundedPerAddressAndImportsApart) {
+  Making m({.uploads_per_minute_per_address = 100});
+  double wait = 0;
+  EXPECT_EQ(m.maker.take_upload("10.0.0.1", t0, &wait), "");
+  EXPECT_EQ(m.maker.take_upload("10.0.0.1", t0, &wait), "");
+  EXPECT_NE(m.maker.take_upload("10.0.0.1", t0, &wait).find("your address is sending 2 uploads already"), std::string::npos);
+  EXPECT_GT(wait, 0.0);
+  for (int i = 0; i < SessionMaker::kMaxUploadsAtOnce - 2; ++i) EXPECT_EQ(m.maker.take_upload("10.0.1." + std::to_string(i), t0, &wait), "") << i;
+  EXPECT_NE(m.maker.take_upload("10.0.0.9", t0, &wait).find("as many uploads as it takes"), std::string::npos);
+  m.maker.upload_done("10.0.0.1");
+  EXPECT_EQ(m.maker.take_upload("10.0.0.1", t0, &wait), "") << "one ended: its sender may send another";
+  EXPECT_TRUE(m.maker.take_import());
+  EXPECT_TRUE(m.maker.take_import());
+  EXPECT_FALSE(m.maker.take_import()) << "two imports at once";
+  m.maker.import_done();
+  EXPECT_TRUE(m.maker.take_import());
+  EXPECT_EQ(m.maker.counters().refused.at("busy-address"), 1u);
 }
