@@ -88,7 +88,7 @@ void Server::create_sessions() {
   registry_->on_removed = [this](Session& session) {
     const char* what = !session.state().product.directions.empty() ? "product " : session.call() ? "room " : "scene ";
     session.close_members(protocol::ErrorCode::NoSession, what + session.name() + " was removed");
-    relay_->session_removed(session.name());
+    relay_->session_removed(session);
   };
   for (auto& [name, session] : registry_->all()) start_call(*session);
 }

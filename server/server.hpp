@@ -86,6 +86,7 @@ class Server final : public SessionFanout {
   // A session defined elsewhere (another instance): stored in the catalogue and served. Null if
   // a session of that name exists or it cannot be stored.
   std::shared_ptr<Session> add_session(StoredSession stored) override { return registry_->add(std::move(stored)); }
+  bool remove_session(const std::string& name) override { return registry_->remove(name); }
 
  private:
   void create_sessions();

@@ -10,7 +10,7 @@
 #include <string_view>
 
 #include "protocol/messages.hpp"
-#include "server/asset_store.hpp"
+#include "server/stored_session.hpp"
 
 namespace inkwire::server {
 

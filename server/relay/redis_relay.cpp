@@ -22,7 +22,7 @@ using namespace protocol;
 using namespace std::chrono_literals;
 
 constexpr std::string_view kEvents = "inkwire:events";      // changes, published by kPublish
-constexpr std::string_view kNotices = "inkwire:notices";    // a session was shared, or its model replaced: its name
+constexpr std::string_view kNotices = "inkwire:notices";    // a session was shared, its model replaced, or it was removed: its name
 constexpr std::string_view kCalls = "inkwire:calls";        // calls' voice, faces, rosters and photos (broker_formats.hpp)
 constexpr std::string_view kSessions = "inkwire:sessions";  // hash: name -> definition
 constexpr uint64_t kMaxSharedAsset = 64 << 20;              // larger assets need a shared data folder
@@ -202,7 +202,9 @@ void RedisRelay::on_subscription(const redisReply* r) {
     // square of the sessions when rooms open by the thousand.
     const std::string name(text_of(r->element[2]));
     commands_.command({"HGET", kSessions, name}, [this, name](const redisReply* r) {
-      if (!is_error(r) && r->type == REDIS_REPLY_STRING) take_definition(name, text_of(r));
+      if (is_error(r)) return;
+      if (r->type == REDIS_REPLY_STRING) take_definition(name, text_of(r));
+      else if (r->type == REDIS_REPLY_NIL) removed_elsewhere(name);
     });
   }
   else if (channel == kCalls) on_call(text_of(r->element[2]));
@@ -428,19 +430,38 @@ void RedisRelay::session_added(const Session& session) {
   resync(session.name());
 }
 
-// A session gone here (a room empty too long, a scene removed): its definition and state leave
-// the broker only if they are still the ones shared here, so a room of the same name opened
-// since on another instance stays.
-void RedisRelay::session_removed(const std::string& name) {
+// A session gone here. A call room empty too long: its definition and state leave the broker
+// only if they are still the ones shared here, so a room of the same name opened since on another
+// instance stays. A product or scene removed by its operator: gone from the broker whoever shared
+// it last, and the notice that follows (a name with no definition) has every other instance drop
+// its copy, so none shares it again when it restarts.
+void RedisRelay::session_removed(const Session& session) {
+  const std::string name = session.name();
   syncs_.erase(name);
   const auto shared = definitions_.find(name);
   if (shared == definitions_.end()) return;
   const std::string definition = std::move(shared->second);
   definitions_.erase(shared);
   if (!ready_) return;
-  commands_.command({"EVAL", kRemoveIfSame, "2", kSessions, state_key(name), name, definition}, [name](const redisReply* r) {
+  const auto refused = [name](const redisReply* r) {
     if (is_error(r)) log_warn("broker-session-not-removed", {{"session", name}, {"reason", reason_of(r)}});
-  });
+  };
+  if (session.state().kind == SessionKind::Conference) {
+    commands_.command({"EVAL", kRemoveIfSame, "2", kSessions, state_key(name), name, definition}, refused);
+    return;
+  }
+  commands_.command({"HDEL", kSessions, name}, refused);
+  commands_.command({"DEL", state_key(name)}, refused);
+  commands_.command({"PUBLISH", kNotices, name}, [](const redisReply*) {});
+}
+
+// A notice naming a session the broker no longer defines: removed on the instance that sent it.
+// Call rooms are not dropped so (each instance's copy goes when idle there).
+void RedisRelay::removed_elsewhere(const std::string& name) {
+  const std::shared_ptr<Session> served = sessions_.find_session(name);
+  if (!served || served->state().kind == SessionKind::Conference || adopting_.count(name)) return;
+  log_info("broker-session-removed", {{"session", name}, {"members", served->members()}});
+  sessions_.remove_session(name);
 }
 
 void RedisRelay::share(const Session& session) {

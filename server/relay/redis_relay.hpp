@@ -48,10 +48,11 @@ class RedisRelay final : public Relay {
   RelayStatus status() const override;
   void share_call(const CallShare& share) override;
   void session_added(const Session& session) override;
-  void session_removed(const std::string& name) override;
+  void session_removed(const Session& session) override;
   void model_replaced(const Session& session) override;
 
  private:
+  void removed_elsewhere(const std::string& name);
   using Event = BrokerEvent;
   struct SessionSync {
     uint32_t revision = 0;  // the broker's revision applied here

@@ -41,9 +41,10 @@ class Relay {
   // A call's traffic for the members on other instances (call/call.hpp); nothing to do alone.
   virtual void share_call(const CallShare& share) { (void)share; }
   // A session made while the server runs (a room opened, a scene uploaded), and one gone: the
-  // other instances hear of it; nothing to do alone.
+  // other instances hear of it; nothing to do alone. A product or scene removed is removed on
+  // every instance; a call room gone idle here is gone here only (members elsewhere keep theirs).
   virtual void session_added(const Session& session) { (void)session; }
-  virtual void session_removed(const std::string& name) { (void)name; }
+  virtual void session_removed(const Session& session) { (void)session; }
   // A running scene given a new model (its editor's upload): the other instances' members get it
   // too; nothing to do alone.
   virtual void model_replaced(const Session& session) { (void)session; }
