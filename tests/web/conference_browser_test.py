@@ -66,7 +66,7 @@ class Director:
     def __init__(self):
         self.socket = socket.create_connection(("127.0.0.1", server.tcp))
         self.lock = threading.Lock()
-        self.send(frame(1, struct.pack("<IH", 0x574B4E49, PROTOCOL_VERSION) + text("director")) + frame(6, text("meeting") + text("d1rector")))
+        self.send(frame(1, struct.pack("<IH", 0x574B4E49, PROTOCOL_VERSION) + text("director")) + frame(6, text("meeting") + text("d1rector") + b"\0"))  # Join: session, token, open_room
         threading.Thread(target=self.read, daemon=True).start()
 
     def send(self, data):
