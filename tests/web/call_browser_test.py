@@ -150,10 +150,15 @@ try:
     # fewer than three, Ada listens 12 s of sound longer and all she heard is recognised again. Two of
     # Bea's words and more of hers than of Ada's own still say whose voice arrived (Ada's own
     # sentence gives 5 of hers and 1 of Bea's).
+    # recording() hands over what was played since it was last asked: the page keeps every part.
+    gather = f"""const r = await {element}.link.recording();
+      if (r.sampleRate !== 48000) throw new Error(`played at ${{r.sampleRate}} Hz`);
+      window.heardSoFar = [...(window.heardSoFar ?? []), r.samples];
+      return window.heardSoFar.reduce((n, p) => n + p.length, 0);"""
     for listen in range(2):
-        heard = ada.execute_script(f"""const r = await {element}.link.recording(), s = r.samples, out = [];
-          if (r.sampleRate !== 48000) throw new Error(`played at ${{r.sampleRate}} Hz`);
-          for (let i = 0; i + 2 < s.length; i += 3) out.push((s[i] + s[i + 1] + s[i + 2]) / 3);
+        ada.execute_script(gather)
+        heard = ada.execute_script("""const out = [];
+          for (const s of window.heardSoFar) for (let i = 0; i + 2 < s.length; i += 3) out.push((s[i] + s[i + 1] + s[i + 2]) / 3);
           return out;""")
         got = recognised(heard, 16000, "ada-heard")
         beas, adas = sorted(OWN_WORDS["bea"] & set(got)), sorted(OWN_WORDS["ada"] & set(got))
@@ -161,8 +166,7 @@ try:
         print(f"Ada heard ({stats['played']} packets played, {stats['late']} too late to play, delay {stats['delayMs']:.0f} ms):", " ".join(got))
         if len(beas) >= 3 or listen == 1:
             break
-        recorded = f"return (await {element}.link.recording()).samples.length"
-        wait_until(lambda: ada.execute_script(recorded) >= len(heard) * 3 + 12 * 48000, 120, poll=0.5)
+        wait_until(lambda: ada.execute_script(gather) >= len(heard) * 3 + 12 * 48000, 120, poll=0.5)
     checks.check(len(heard) > 16000 and len(beas) >= 2 and len(beas) > len(adas),
                  f"Ada hears Bea: in {len(heard) / 16000:.1f} s of sound, Bea's words {beas} (2 or more, more than her own), her own {adas}")
 
@@ -173,7 +177,8 @@ try:
     bea_entry = lambda: [m for m in ada.execute_script(f"return {element}.roster.members") if m["name"] == "Bea"]
     wait_until(lambda: bea_entry() and not bea_entry()[0]["microphone"] and not bea_entry()[0]["camera"], 60)
     checks.check(bool(bea_entry()) and not bea_entry()[0]["microphone"] and not bea_entry()[0]["camera"], "Ada sees Bea muted with her camera off")
-    sent = lambda d: d.execute_script(f"return [{element}.voiceSent, {element}.camera.sent]")
+    # The worker's own count, asked afresh (the page's copy of it is refreshed only now and then).
+    sent = lambda d: d.execute_script(f"const e = {element}, f = await e.link.figures(); return [f.voiceSent, e.camera.sent]")
     voice0, crops0 = sent(bea)
     ada0 = sent(ada)
     wait_until(lambda: (lambda now: now[0] - ada0[0] >= 30 and now[1] - ada0[1] >= 15)(sent(ada)), 60, poll=0.2)
@@ -199,9 +204,11 @@ try:
     checks.check(gone and number_of(bea, "Ada") == before,
                  f"Ada's cut connection: gone from Bea's roster and back (in {back:.1f} s) in one tile, number {number_of(bea, 'Ada')} (was {before})")
     checks.check(ada.execute_script(f"return {element}.hasAttribute('joined')"), "Ada's page is in the call again")
+    # The native member's clip may have ended by now on a slow machine: it then left by itself.
+    staying = ["Ada", "Nat"] if native.poll() is None else ["Ada"]
     bea.execute_script(f"{element}.hangUp()")
     wait_until(lambda: "Bea" not in names(ada), 60)
-    checks.check(names(ada) == ["Ada", "Nat"], f"Bea left: her tile is gone ({names(ada)})")
+    checks.check(names(ada) == staying, f"Bea left: her tile is gone, the others stay ({names(ada)}, {staying} expected)")
     ada.save_screenshot(os.path.join(OUT, "ada-after-bea-left.png"))
     import urllib.request
     metrics = urllib.request.urlopen(f"http://127.0.0.1:{server.http}/metrics").read().decode()
