@@ -95,5 +95,6 @@ std::vector<Result> run_abuse_suite(Harness& harness);
 std::vector<Result> run_crash_suite(Harness& harness);
 std::vector<Result> run_soak_suite(Harness& harness);
 std::vector<Result> run_window_suite(Harness& harness);
+std::vector<Result> run_rooms_suite(Harness& harness);
 
 }  // namespace inkwire::bench
