@@ -39,12 +39,6 @@ bool parse_bool(const std::string& text, bool& out) {
   return false;
 }
 
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof(buf), "%g", v);
-  return buf;
-}
-
 std::string join(const std::vector<std::string>& items) {
   std::string s;
   for (const auto& i : items) s += (s.empty() ? "" : "|") + i;
@@ -52,6 +46,12 @@ std::string join(const std::vector<std::string>& items) {
 }
 
 }  // namespace
+
+std::string param_number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
 
 ParamSpec float_param(std::string name, std::string def, double min, double max, std::string help) {
   return {std::move(name), ParamType::Float, std::move(def), std::move(help), min, max, {}};
@@ -124,13 +124,13 @@ void StyleParams::set(const std::string& key, const std::string& value) {
     case ParamType::Float: {
       double v;
       if (!parse_number(value, v) || !std::isfinite(v)) throw Error(bad + "not a number");
-      if (v < s.min || v > s.max) throw Error(bad + "outside " + number(s.min) + ".." + number(s.max));
+      if (v < s.min || v > s.max) throw Error(bad + "outside " + param_number(s.min) + ".." + param_number(s.max));
       break;
     }
     case ParamType::Int: {
       long v;
       if (!parse_number(value, v)) throw Error(bad + "not an integer");
-      if (v < s.min || v > s.max) throw Error(bad + "outside " + number(s.min) + ".." + number(s.max));
+      if (v < s.min || v > s.max) throw Error(bad + "outside " + param_number(s.min) + ".." + param_number(s.max));
       break;
     }
     case ParamType::Bool: {

@@ -31,6 +31,8 @@ ParamSpec text_param(std::string name, std::string default_value, std::string he
 // Text that names a file, or one of `suggestions` (shipped names).
 ParamSpec file_param(std::string name, std::string default_value, std::string help, std::vector<std::string> suggestions = {});
 ParamSpec choice_param(std::string name, std::string default_value, std::vector<std::string> choices, std::string help);
+// A number as a parameter's value is written ("%g": 0.5, 12, 1e-06).
+std::string param_number(double v);
 
 class StyleParams {
  public:

@@ -9,18 +9,10 @@ extern "C" {
 #include <libswscale/swscale.h>
 }
 
+#include "common/av_reason.hpp"
 #include "common/error.hpp"
 
 namespace inkwire {
-namespace {
-
-std::string av_reason(int code) {
-  char text[AV_ERROR_MAX_STRING_SIZE] = {};
-  av_strerror(code, text, sizeof text);
-  return text;
-}
-
-}  // namespace
 
 struct FaceVideoEncoder::Codec {
   AVCodecContext* context = nullptr;

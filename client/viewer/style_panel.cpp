@@ -22,12 +22,6 @@ std::pair<std::string, std::string> split_overlay(const std::string& style) {
   return {style.substr(0, plus), style.substr(plus + 1)};
 }
 
-std::string number_text(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", v);
-  return text;
-}
-
 bool combo(const char* label, std::string& value, const std::vector<std::string>& choices) {
   bool changed = false;
   if (ImGui::BeginCombo(label, value.c_str())) {
@@ -58,7 +52,7 @@ bool StylePanel::parameter(const ParamSpec& p, std::string& v) {
     case ParamType::Float: {
       float f = std::strtof(v.c_str(), nullptr);
       const ImGuiSliderFlags flags = p.max - p.min > 1000 ? ImGuiSliderFlags_Logarithmic : 0;
-      if (ImGui::SliderFloat(label, &f, float(p.min), float(p.max), "%.3g", flags)) return v = number_text(f), true;
+      if (ImGui::SliderFloat(label, &f, float(p.min), float(p.max), "%.3g", flags)) return v = param_number(f), true;
       return false;
     }
     case ParamType::Int: {

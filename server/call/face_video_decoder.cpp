@@ -8,18 +8,10 @@ extern "C" {
 #include <libswscale/swscale.h>
 }
 
+#include "common/av_reason.hpp"
 #include "common/error.hpp"
 
 namespace inkwire::server {
-namespace {
-
-std::string av_reason(int code) {
-  char text[AV_ERROR_MAX_STRING_SIZE] = {};
-  av_strerror(code, text, sizeof text);
-  return text;
-}
-
-}  // namespace
 
 Vp8FrameHeader read_vp8_header(const protocol::Bytes& f) {
   if (f.size() < 3) throw Error("a VP8 frame of " + std::to_string(f.size()) + " bytes is too short");

@@ -6,17 +6,13 @@
 #include "common/error.hpp"
 #include "common/noise.hpp"
 #include "common/random.hpp"
+#include "common/shaping.hpp"
 
 namespace inkwire {
 
 namespace {
 
 const std::vector<std::string> kNames = {"dot", "stroke", "blotch", "spatter", "wash"};
-
-float smoothstep(float e0, float e1, float x) {
-  const float t = std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f);
-  return t * t * (3 - 2 * t);
-}
 
 void put(Image& image, int x, int y, float shade, float alpha) {
   uint8_t* p = image.at(x, y);

@@ -29,12 +29,6 @@ const char* orientation_name(OrientationKind kind) {
   return "gradient";
 }
 
-std::string number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", v);
-  return text;
-}
-
 }  // namespace
 
 std::vector<ParamSpec> PainterlyRenderer::params() {
@@ -85,15 +79,15 @@ std::map<std::string, std::string> painterly_settings_in_effect(const StyleParam
   const PaintStyle style = paint_style_from_params(p);
   std::map<std::string, std::string> values = p.values();
   values["brushes"] = std::to_string(style.brushes);
-  values["coverage"] = number(style.coverage);
+  values["coverage"] = param_number(style.coverage);
   values["palette"] = palette_kind_names()[size_t(style.palette.kind)];
   values["shades"] = std::to_string(style.palette.shades);
   values["orientation"] = orientation_name(style.orientation.kind);
-  values["angle"] = number(style.orientation.angle_degrees);
+  values["angle"] = param_number(style.orientation.angle_degrees);
   values["ttl"] = std::to_string(style.motion.time_to_live);
-  values["underpaint"] = number(style.underpaint);
-  values["edge_softness"] = number(style.edge_softness);
-  values["glow"] = number(style.glow);
+  values["underpaint"] = param_number(style.underpaint);
+  values["edge_softness"] = param_number(style.edge_softness);
+  values["glow"] = param_number(style.glow);
   return values;
 }
 

@@ -7,17 +7,9 @@
 
 #include "common/error.hpp"
 #include "common/noise.hpp"
+#include "common/shaping.hpp"
 
 namespace inkwire {
-
-namespace {
-
-float smoothstep(float e0, float e1, float x) {
-  const float t = std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f);
-  return t * t * (3 - 2 * t);
-}
-
-}  // namespace
 
 std::vector<Image> make_stroke_textures(Medium medium, int variants, int length, int width, uint32_t seed) {
   if (variants < 1 || variants > 64 || length < 16 || length > 2048 || width < 4 || width > 256)
