@@ -9,7 +9,6 @@ namespace {
 
 using namespace protocol;
 constexpr auto kReplyTimeout = std::chrono::seconds(10);
-constexpr int kRequestsAhead = 4;  // protocol/SPEC.md: at most 4 asset requests outstanding
 
 }  // namespace
 

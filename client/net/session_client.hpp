@@ -28,6 +28,8 @@ class SessionClient {
   // A server pings a quiet client every few seconds (SPEC D7, at most 5 s): this long with no
   // word from it and the connection is taken as dead (connected() turns false with the reason).
   static constexpr std::chrono::seconds kServerSilence{15};
+  // Asset chunks asked for at once (protocol/SPEC.md: at most 4 outstanding).
+  static constexpr int kRequestsAhead = 4;
 
   // Connects to HOST:PORT (over TLS when `tls` is given: the server's certificate must be
   // trusted by it and name HOST) and completes the handshake; throws inkwire::Error with the

@@ -85,8 +85,8 @@ void WindowInput::attach(GLFWwindow* window) {
     ++in.events;
     Orbit& o = in.orbit;
     if (o.dragging) {
-      o.azimuth -= float(x - o.last_x) * 0.4f;
-      o.elevation = std::clamp(o.elevation + float(y - o.last_y) * 0.4f, -85.0f, 85.0f);
+      o.azimuth -= float(x - o.last_x) * kDragDegreesPerPixel;
+      o.elevation = std::clamp(o.elevation + float(y - o.last_y) * kDragDegreesPerPixel, -85.0f, 85.0f);
       o.changed = true;
     }
     o.last_x = x, o.last_y = y, o.pointer_seen = true;

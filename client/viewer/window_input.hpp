@@ -26,6 +26,7 @@ struct Orbit {
 inline constexpr float kMaxTurnSpeed = 360.0f;   // degrees a second a fling may keep: a turn a second
 inline constexpr float kInertiaSeconds = 0.4f;   // the speed falls by a factor e in this long
 inline constexpr float kInertiaStop = 2.0f;      // degrees a second below which it stops
+inline constexpr float kDragDegreesPerPixel = 0.4f;  // a drag turns the view this far a pixel, either way
 
 // The speed a drag leaves: the last moments of the drag smoothed, a drag of `degrees` in
 // `seconds` the newest, at most kMaxTurnSpeed either way.

@@ -20,6 +20,7 @@
 #include "client/call/face_crop.hpp"
 #include "client/gl/resources.hpp"
 #include "client/call/playout_delay.hpp"
+#include "client/net/session_client.hpp"
 #include "client/render/tween/matte_sample.hpp"
 #include "client/viewer/photo_fetch.hpp"
 #include "client/viewer/turntable_view.hpp"
@@ -309,7 +310,7 @@ nlohmann::json inertia_cases() {
     coasts.push_back({{"velocity", velocity}, {"seconds", seconds}, {"turn", c.turn}, {"next", c.velocity}});
     velocity = c.velocity;
   }
-  return {{"limits", {kMaxTurnSpeed, kInertiaSeconds, kInertiaStop}}, {"drags", drags}, {"coasts", coasts}};
+  return {{"limits", {kMaxTurnSpeed, kInertiaSeconds, kInertiaStop}}, {"degrees_per_pixel", kDragDegreesPerPixel}, {"drags", drags}, {"coasts", coasts}};
 }
 
 TEST(WarpVectorsTest, AFlingIsHeldToATurnASecondAndCoastsToAStop) {
@@ -348,11 +349,17 @@ TEST(WarpVectorsTest, APortraitViewportShowsTheWholePictureAndAWideOneItsFullHei
   EXPECT_NEAR(wide.y / wide.w, 1.0f, 1e-5f) << "a landscape viewport keeps fov_y across its height";
 }
 
+// The session connection's constants the page's (net/session.js) keeps as the native client does.
+nlohmann::json session_constants() {
+  return {{"requests_ahead", SessionClient::kRequestsAhead},
+          {"server_silence_ms", std::chrono::duration_cast<std::chrono::milliseconds>(SessionClient::kServerSilence).count()}};
+}
+
 TEST(WarpVectorsTest, GoldenVectorsForTheWebClientAreTheseNumbers) {
   const nlohmann::json golden = {{"delaunay", delaunay_cases()}, {"warp_meshes", warp_mesh_cases()}, {"distance_field", distance_case()},
                                  {"matte_samples", matte_cases()}, {"locate_view", locate_cases()}, {"photo_fetch", photo_fetch_cases()},
                                  {"turntable", turntable_cases()}, {"playout", playout_cases()},
-                                 {"face_crop", face_crop_cases()}, {"inertia", inertia_cases()}, {"framing", framing_cases()},
+                                 {"face_crop", face_crop_cases()}, {"inertia", inertia_cases()}, {"framing", framing_cases()}, {"session", session_constants()},
                                  {"shader_header", gl::kWebGlShaderHeader}};
   const std::filesystem::path file = std::filesystem::path(INKWIRE_GOLDEN_DIR) / "warp-vectors.json";
   if (const char* approve = std::getenv("INKWIRE_APPROVE_GOLDEN"); approve && std::string(approve) == "1") {

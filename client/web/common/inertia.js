@@ -5,6 +5,7 @@
 export const kMaxTurnSpeed = 360;   // degrees a second a fling may keep: a turn a second
 export const kInertiaSeconds = 0.4; // the speed falls by a factor e in this long
 export const kInertiaStop = 2;      // degrees a second below which it stops
+export const kDegreesPerPixel = 0.4;  // a drag turns the view this far a pixel, either way
 
 // The speed a drag leaves (degrees a second): the last moments of the drag, smoothed, a drag of
 // `degrees` in `seconds` the newest, at most a turn a second either way.

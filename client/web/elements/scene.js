@@ -10,6 +10,7 @@
 // the editor replaces arrives in a new snapshot and is drawn as the first was). Properties: styleName, settings (object),
 // camera ({azimuth, elevation, distance}); setting them changes the session as the panel would.
 import { fitCanvas, lendBytes, loadRenderModule, SessionElement } from './session_element.js';
+import { kDegreesPerPixel } from '../common/inertia.js';
 import { AssetKind } from '../net/session.js';
 import { ScenePanel } from './scene/panel.js';
 
@@ -36,7 +37,7 @@ const template = `
 <details part="panel"><summary>Style</summary><div class="panel"></div></details>`;
 
 // Dragging and the wheel as the native window does (client/viewer/window_input.cpp).
-const kDegreesPerPixel = 0.4, kMaxElevation = 85, kWheelStep = 0.9, kMinDistance = 0.25, kMaxDistance = 20;
+const kMaxElevation = 85, kWheelStep = 0.9, kMinDistance = 0.25, kMaxDistance = 20;
 
 export class InkwireScene extends SessionElement {
   static observedAttributes = [...SessionElement.observedAttributes, 'editor-token'];

@@ -4,7 +4,8 @@
 // against its SHA-256 before use, so a second visit downloads only what changed.
 import { AssetKind, decodeFrame, encode, ErrorCode, kMaxChunk } from '../protocol/messages.js';
 
-const kRequestsAhead = 4;
+// As client/net/session_client.hpp (both pinned by tests/golden/warp-vectors.json "session").
+export const kRequestsAhead = 4;
 // The server pings a quiet client at least every 5 s (protocol/SPEC.md "Deadlines"): this long
 // with no word from it and the connection is taken as dead, as client/net/session_client.hpp.
 export const kServerSilenceMs = 15000;

@@ -5,7 +5,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { test } from 'node:test';
 
-import { coast, draggedVelocity, kInertiaSeconds, kInertiaStop, kMaxTurnSpeed } from '../common/inertia.js';
+import { coast, draggedVelocity, kDegreesPerPixel, kInertiaSeconds, kInertiaStop, kMaxTurnSpeed } from '../common/inertia.js';
 
 const golden = JSON.parse(readFileSync(new URL('../../../tests/golden/warp-vectors.json', import.meta.url))).inertia;
 // C++ reckons in float, the script in double.
@@ -13,6 +13,7 @@ const near = (a, b, what) => assert.ok(Math.abs(a - b) <= 1e-3 * Math.max(1, Mat
 
 test('a drag leaves the speed the native window keeps, at most a turn a second', () => {
   [kMaxTurnSpeed, kInertiaSeconds, kInertiaStop].forEach((value, i) => near(value, golden.limits[i], 'the rule\'s constants'));
+  near(kDegreesPerPixel, golden.degrees_per_pixel, 'a drag\'s degrees a pixel');
   for (const step of golden.drags) near(draggedVelocity(step.velocity, step.degrees, step.seconds), step.next, JSON.stringify(step));
 });
 

@@ -4,10 +4,9 @@
 // AbortSignal and go when the element leaves the page, so an element moved in the
 // page turns once as far, never twice.
 
-import { draggedVelocity } from '../../common/inertia.js';
+import { draggedVelocity, kDegreesPerPixel } from '../../common/inertia.js';
 import { kMaxZoom, kMinZoom } from '../../common/turntable_pose.js';
 
-const kDegreesPerPixel = 0.4;  // as the C++ window turns
 
 function nearestIndex(values, value) {
   let best = 0;
