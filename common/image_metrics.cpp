@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "common/error.hpp"
+#include "common/luminance.hpp"
 
 namespace inkwire {
 namespace {
@@ -38,7 +39,7 @@ cv::Mat luma(const Image& image) {
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
       const uint8_t* p = image.at(x, y);
-      out.at<double>(y, x) = 0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2];
+      out.at<double>(y, x) = rec601_luma<double>(p[0], p[1], p[2]);
     }
   return out;
 }

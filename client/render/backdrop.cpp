@@ -7,6 +7,7 @@
 #include <glm/vec4.hpp>
 
 #include "common/error.hpp"
+#include "common/luminance.hpp"
 #include "common/noise.hpp"
 #include "common/style_params.hpp"
 
@@ -145,7 +146,7 @@ Image paper_tooth(int size) {
   std::vector<float> lum;
   double sum = 0.0, squares = 0.0;
   for (size_t i = 0; i < paper.pixels.size(); i += 4) {
-    lum.push_back(0.299f * paper.pixels[i] + 0.587f * paper.pixels[i + 1] + 0.114f * paper.pixels[i + 2]);
+    lum.push_back(rec601_luma<float>(paper.pixels[i], paper.pixels[i + 1], paper.pixels[i + 2]));
     sum += lum.back();
     squares += double(lum.back()) * lum.back();
   }

@@ -5,6 +5,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "common/luminance.hpp"
+
 namespace inkwire {
 
 using namespace face_index;
@@ -39,7 +41,7 @@ float eye_shade(const Image& frame, const FaceLandmarks& p, int first) {
   for (int y = top; y <= bottom; ++y)
     for (int x = left; x <= right; ++x) {
       const uint8_t* c = frame.at(x, y);
-      const double luma = 0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2];
+      const double luma = rec601_luma<double>(c[0], c[1], c[2]);
       sum += luma, sum2 += luma * luma, ++n;
     }
   if (n < 4) return 0.0f;

@@ -6,6 +6,8 @@
 #include <glm/geometric.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "common/luminance.hpp"
+
 namespace inkwire {
 namespace {
 
@@ -32,7 +34,7 @@ cv::Mat grey_of(const Image& image) {
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
       const uint8_t* p = image.at(x, y);
-      grey.at<float>(y, x) = (0.299f * p[0] + 0.587f * p[1] + 0.114f * p[2]) / 255.0f;
+      grey.at<float>(y, x) = rec601_luma<float>(p[0], p[1], p[2]) / 255.0f;
     }
   return grey;
 }

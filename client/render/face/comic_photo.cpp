@@ -5,6 +5,8 @@
 #include <cmath>
 #include <vector>
 
+#include "common/luminance.hpp"
+
 // Plain C++ on purpose: the browser's module draws call faces with this same code (SPEC F16), and
 // OpenCV is not there. The steps are the classic ones (bilateral smoothing at half size, tone
 // bands, Canny's edges), each small enough to read here. Bit for bit the same in both: only
@@ -84,7 +86,7 @@ Rgb bilinear(const Plane& p, float x, float y) {
   return mix(mix(p.at(x0, y0), p.at(x1, y0), fx), mix(p.at(x0, y1), p.at(x1, y1), fx), fy);
 }
 
-float luma(float r, float g, float b) { return 0.299f * r + 0.587f * g + 0.114f * b; }
+float luma(float r, float g, float b) { return rec601_luma(r, g, b); }
 
 // Canny's edges of a grey picture: a 5x5 median against the photo's grain, Sobel gradients,
 // thinned to their ridge, kept above `high` or joined to such an edge above `low`.

@@ -12,6 +12,7 @@
 #include "client/render/painterly/glow.hpp"
 #include "client/render/painterly/wash_map.hpp"
 #include "common/error.hpp"
+#include "common/luminance.hpp"
 #include "common/noise.hpp"
 
 namespace inkwire {
@@ -35,7 +36,7 @@ float stroke_angle_difference(float to, float from) {
 float luminance_at(const Image& image, int x, int y) {
   x = std::clamp(x, 0, image.width - 1), y = std::clamp(y, 0, image.height - 1);
   const uint8_t* p = image.at(x, y);
-  return (0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]) / 255.0f;
+  return rec709_luminance<float>(p[0], p[1], p[2]) / 255.0f;
 }
 
 // The premultiplied mean colour of the object pixels in each cell of `cell` x `cell` pixels,

@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "common/error.hpp"
+#include "common/luminance.hpp"
 
 namespace inkwire {
 
@@ -48,7 +49,7 @@ glm::vec3 neon(glm::vec3 rgb) {
 
 }  // namespace
 
-float luminance(glm::vec3 rgb) { return glm::dot(rgb, glm::vec3(0.2126f, 0.7152f, 0.0722f)); }
+float luminance(glm::vec3 rgb) { return rec709_luminance(rgb.r, rgb.g, rgb.b); }
 
 const std::vector<std::string>& palette_kind_names() { return kNames; }
 

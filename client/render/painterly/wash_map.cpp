@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "common/luminance.hpp"
+
 namespace inkwire {
 namespace {
 
@@ -45,7 +47,7 @@ void blur_columns(const std::vector<float>& in, std::vector<float>& out, int wid
   }
 }
 
-float luminance(const uint8_t* p) { return (0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]) / 255.0f; }
+float luminance(const uint8_t* p) { return rec709_luminance<float>(p[0], p[1], p[2]) / 255.0f; }
 
 }  // namespace
 
