@@ -42,6 +42,8 @@ void Connection::send(const Message& message) {
 
 void Connection::send_frame(std::shared_ptr<const Bytes> frame, MessageType type) {
   if (closing_) return;
+  // A message type newer than the peer would end its connection: its callers send it what it reads instead.
+  if (type == MessageType::MemberLayers && version_ < 8) return;
   if (type == MessageType::VoiceFrame && voice_stream_) {
     if (voice_stream_->open()) {
       voice_stream_->send(std::move(frame));
@@ -176,16 +178,18 @@ void Connection::handle(Message& message) {
   if (!greeted_) {
     const auto* hello = std::get_if<Hello>(&message);
     if (!hello) throw ProtocolError(std::string("expected hello, got ") + name_of(type_of(message)));
-    if (hello->magic != kMagic || hello->version != kVersion) {
+    if (hello->magic != kMagic || hello->version < kOldestVersion || hello->version > kVersion) {
       log_warn("bad-version", {{"client", id_}, {"peer", peer_}, {"version", hello->version}});
-      close_with(ErrorCode::BadVersion, "protocol mismatch: server speaks Inkwire version " + std::to_string(kVersion) +
-                                            ", client sent magic " + std::to_string(hello->magic) + " version " + std::to_string(hello->version));
+      close_with(ErrorCode::BadVersion, "protocol mismatch: server speaks Inkwire version " + std::to_string(kVersion) + " (and back to " +
+                                            std::to_string(kOldestVersion) + "), client sent magic " + std::to_string(hello->magic) + " version " +
+                                            std::to_string(hello->version));
       return;
     }
     greeted_ = true;
+    version_ = hello->version;
     client_name_ = hello->client_name;
     log_info("hello", {{"client", id_}, {"peer", peer_}, {"name", client_name_}});
-    send(Welcome{.version = kVersion, .server_name = server_.config().name});
+    send(Welcome{.version = version_, .server_name = server_.config().name});  // the version it is spoken to in
     return;
   }
   switch (type_of(message)) {

@@ -67,7 +67,7 @@ struct CropAnalysed {
   int frames_dropped = 0;             // video frames that could not be decoded (the first one's reason in `error`)
   bool key_frame_wanted = false;      // the member's video waits for a key frame: ask for one
   std::optional<protocol::FaceRegion> region;  // where to crop next, for the publisher (none: nothing was analysed)
-  std::optional<protocol::MemberFace> face;  // what to send the others, when it changed (or once a second)
+  std::optional<protocol::MemberLayers> face;  // what to send the others, when it changed (or every two seconds)
 };
 
 class CallAnalyst {

@@ -121,7 +121,8 @@ void Call::analysed(const CropAnalysed& result) {
   }
   // Everyone, the member too: its own tile shows what the others see of it.
   if (result.face) {
-    send_to_all(*result.face);
+    m->camera_face = *result.face;
+    send_face(*result.face);
     relay_.share_call({.origin = origin_, .session = session_, .message = *result.face});
   }
 }

@@ -68,6 +68,7 @@ struct Call::Member {
   Clock::time_point last_voice{}, last_face{};
   std::optional<Clock::time_point> faceless_since;  // crops have come without a face since then
   bool faceless = false;                            // ... for longer than kNoFaceAfter
+  std::optional<protocol::MemberLayers> camera_face;  // what the camera read last: the voice's mouth goes over it
   ExpressionState voice_mouth;
   Clock::time_point voice_mouth_sent{};
   uint32_t latest_voice_time = 0;

@@ -40,10 +40,15 @@ void Call::voice(uint64_t connection, protocol::VoiceFrame frame) {
   if (face_gone && (changed || now - m->voice_mouth_sent > kVoiceMouthKeepalive)) {
     m->voice_mouth = reading->mouth;
     m->voice_mouth_sent = now;
-    const protocol::MemberFace face{.member = m->entry.member, .time_ms = frame.time_ms,
-                                    .expression = {.code = uint8_t(reading->mouth.expression), .intensity = reading->mouth.intensity},
-                                    .source = protocol::FaceSource::Voice};
-    send_to_all(face);
+    // The mouth over what the camera read last (its expression, eyes and pose), while the camera is
+    // on: a member whose face the camera lost a moment keeps its smile; with the camera off, a
+    // neutral face.
+    protocol::MemberLayers face = m->entry.camera && m->camera_face ? *m->camera_face : protocol::MemberLayers{};
+    face.member = m->entry.member;
+    face.time_ms = frame.time_ms;
+    face.mouth = reading->mouth;
+    face.source = protocol::FaceSource::Voice;
+    send_face(face);
     relay_.share_call({.origin = origin_, .session = session_, .message = face});
   }
 }

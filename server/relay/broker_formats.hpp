@@ -35,8 +35,9 @@ std::string session_definition(const StoredSession& stored);
 StoredSession parse_session_definition(std::string_view text);
 
 // A call's traffic between instances (SPEC F12): what an instance's own members publish, for
-// the members on other instances. `message` is a voice-frame or member-face of one of the
-// origin's members (by the origin's member number), or a roster of the origin's own members; a
+// the members on other instances. `message` is a voice-frame or member-layers (member-face from
+// an instance of version 7) of one of the origin's members (by the origin's member number), or a
+// roster of the origin's own members; a
 // member's neutral photo travels with its landmarks' JSON (photo_member non-zero).
 struct CallShare {
   std::string origin, session;

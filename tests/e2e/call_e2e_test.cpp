@@ -4,7 +4,11 @@
 // the crops and relays the voice. Reads the Yale faces' development subjects from
 // ../shared/data/yalefaces when they are there, else libdlib's example photo with no change of
 // expression (then the expression check is skipped with a message).
+#include <atomic>
 #include <cmath>
+#include <map>
+#include <mutex>
+#include <optional>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -13,6 +17,7 @@
 #include "client/net/session_client.hpp"
 #include "common/image.hpp"
 #include "e2e_support.hpp"
+#include "protocol/face_versions.hpp"
 
 using namespace inkwire;
 using namespace inkwire::e2e;
@@ -70,7 +75,8 @@ TEST(CallE2ETest, MembersAreSeenAndHeardAsThemselvesAndBadInputIsDroppedAndCount
   }
   ASSERT_TRUE(ada.face_region() && ada.face_region()->found) << "the server never found Ada's face";
   ASSERT_TRUE(eventually([&] { return listener.member_faces().count(ada_number); }));
-  const protocol::MemberFace ada_face = listener.member_faces().at(ada_number);
+  // The one code its layers say most (what a peer of protocol version 7 is sent).
+  const protocol::MemberFace ada_face = protocol::member_face_of(listener.member_faces().at(ada_number));
   EXPECT_EQ(ada_face.source, protocol::FaceSource::Camera);
   if (yale) {
     EXPECT_EQ(expression_from_code(ada_face.expression.code), Expression::Smile) << "neutral then smile arrives as " << int(ada_face.expression.code);
@@ -78,7 +84,7 @@ TEST(CallE2ETest, MembersAreSeenAndHeardAsThemselvesAndBadInputIsDroppedAndCount
   // Grace has no camera: her voice moves her mouth.
   ASSERT_TRUE(listener.member_faces().count(grace_number));
   EXPECT_EQ(listener.member_faces().at(grace_number).source, protocol::FaceSource::Voice);
-  const int mouth = listener.member_faces().at(grace_number).expression.code;
+  const int mouth = int(listener.member_faces().at(grace_number).mouth.expression);
   EXPECT_TRUE(mouth >= int(Expression::VisemeClosed) && mouth <= int(Expression::VisemeRound)) << mouth;
 
   // Every voice packet came through, stamped with its sender's own number (Grace said 999).
@@ -159,4 +165,65 @@ TEST(CallE2ETest, FloodsOversizedCropsAndAFacelessCameraAreRefusedOrReportedWhil
     EXPECT_NE(metrics.find(std::string("inkwire_call_dropped_total{reason=\"") + reason + "\"}"), std::string::npos) << reason << "\n" << metrics;
   EXPECT_TRUE(listener.connected() && blank.connected());
   EXPECT_TRUE(eventually([&] { return !named(listener.roster(), "Mallory"); })) << "the flooder stays in the roster";
+}
+
+// A client of protocol version 7 (before faces came in layers) still joins a call and reads every
+// frame it is sent (SPEC "Versioning"): a member's face comes to it as member-face, one code,
+// never as member-layers, which its decoder would refuse. Read here as raw frames by type.
+TEST(CallE2ETest, AClientOfVersion7IsSentMemberFacesNotLayers) {
+  if (!fs::exists(kFaceModel) || !fs::exists(kDlibPhoto)) GTEST_SKIP() << "libdlib-data's model or libdlib-dev's example photo is missing";
+  const fs::path dir = output_dir("call-version-7");
+  ServerUnderTest server(dir, {{"http", "127.0.0.1:0"}, {"sessions", {{{"name", "call"}, {"kind", "conference"}}}}});
+  asio::io_context io;
+  asio::ip::tcp::socket old(io);
+  old.connect(server.endpoint());
+  for (const protocol::Message& m : {protocol::Message(protocol::Hello{.magic = protocol::kMagic, .version = 7, .client_name = "old"}),
+                                     protocol::Message(protocol::Join{.session = "call", .token = ""})}) {
+    const protocol::Bytes frame = protocol::encode(m);
+    asio::write(old, asio::buffer(frame));
+  }
+  std::mutex mutex;  // guards what the reader saw
+  std::map<protocol::MessageType, int> seen;
+  std::optional<uint16_t> welcomed;
+  std::atomic<bool> reading{true};
+  std::thread reader([&] {
+    protocol::FrameDecoder decoder;
+    std::array<uint8_t, 4096> buffer{};
+    std::error_code ec;
+    while (reading) {
+      const size_t n = old.read_some(asio::buffer(buffer), ec);
+      if (ec) return;
+      decoder.feed(buffer.data(), n);
+      while (auto m = decoder.next()) {
+        std::lock_guard lock(mutex);
+        ++seen[protocol::type_of(*m)];
+        if (const auto* w = std::get_if<protocol::Welcome>(&*m)) welcomed = w->version;
+      }
+    }
+  });
+  SessionClient ada(server.address(), "Ada");
+  ada.join("call", "");
+  ada.send(protocol::Publish{.camera = true, .microphone = false});
+  const Image photo = load_image(kDlibPhoto);
+  ada.send(protocol::NeutralPhoto{.jpeg = encode_image(photo, "jpg", 90)});
+  for (int frame = 0; frame < 30; ++frame) {
+    protocol::FaceCrop crop{.time_ms = uint32_t(frame * 100), .frame_width = uint16_t(photo.width), .frame_height = uint16_t(photo.height),
+                            .x = 0, .y = 0, .width = uint16_t(photo.width), .height = uint16_t(photo.height), .jpeg = {}};
+    const PictureSize whole = search_picture_size(photo.width, photo.height);
+    crop.jpeg = encode_image(resized(photo, whole.width, whole.height), "jpg", 90);
+    ada.send(crop);
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  const bool faced = eventually([&] {
+    std::lock_guard lock(mutex);
+    return seen[protocol::MessageType::MemberFace] > 0;
+  });
+  reading = false;
+  old.shutdown(asio::ip::tcp::socket::shutdown_both);
+  reader.join();
+  std::lock_guard lock(mutex);
+  EXPECT_EQ(welcomed, std::optional<uint16_t>(7)) << "the welcome says the version it is spoken to in";
+  EXPECT_TRUE(faced) << "no member-face reached the client of version 7";
+  EXPECT_EQ(seen[protocol::MessageType::MemberLayers], 0) << "a member-layers, which version 7 cannot read";
+  EXPECT_GT(seen[protocol::MessageType::Roster], 0);
 }
