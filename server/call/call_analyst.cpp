@@ -343,6 +343,7 @@ void CallAnalyst::analyse_picture(const MemberKey& who, const Picture& crop, Cro
     // Features from the picture's landmarks (the eyes' shade is read in it), the pose from the
     // frame's (a crop at the frame's edge may be scaled unevenly).
     const FaceState& state = member->reader.read(*found, &image, &in_frame);
+    out.mouth_sure = std::abs(state.pose.yaw) <= kSureYaw && face_frame(*found).scale >= kSureEyes;
     out.face = member->stream.next(state, crop.time_ms / 1000.0, who.member, crop.time_ms);
   }
 }

@@ -32,8 +32,9 @@ void Call::voice(uint64_t connection, protocol::VoiceFrame frame) {
     counters_.voice_relayed += send_to_others(*m, frame);
     relay_.share_call({.origin = origin_, .session = session_, .message = frame});
   }
-  // Without a face to read, the voice moves the mouth (SPEC F10).
-  const bool face_gone = !m->entry.camera || m->faceless || now - m->last_face > kFaceLost;
+  // Without a face to read, or a mouth the camera cannot say, the voice moves the mouth (SPEC F10, F21).
+  // (Speaking: heard lately, so the pauses between syllables close the mouth too.)
+  const bool face_gone = m->voice_moves_mouth(now, now - m->last_voice < kSpeakingHold);
   // Mouths change with syllables, four to seven a second: one every packet would be more codes
   // than speech needs (SPEC F14 counts them).
   const bool changed = !(reading->mouth == m->voice_mouth) && now - m->voice_mouth_sent >= kVoiceMouthStep;

@@ -37,6 +37,10 @@ bool LayersStream::changed(const FaceState& s) const {
 std::optional<protocol::MemberLayers> LayersStream::next(const FaceState& state, double now, uint16_t member, uint32_t time_ms,
                                                          protocol::FaceSource source) {
   if (last_ && !changed(state) && now - last_time_ < keepalive_) return std::nullopt;
+  room_ = std::min(kBurst, room_ + (now - room_at_) * kPerSecond);
+  room_at_ = now;
+  if (room_ < 1.0) return std::nullopt;
+  room_ -= 1.0;
   const protocol::MemberLayers message = member_layers(state, member, time_ms, source);
   last_ = protocol::face_state_of(message);
   last_time_ = now;

@@ -2,7 +2,10 @@
 // A member's face on the wire (SPEC F20-F22): member-layers when what the face shows changes
 // (a layer's code, its intensity by a step, an eye's openness by a step, the head turned
 // kPoseStep degrees) and otherwise once every `keepalive` seconds, so a late or lossy receiver
-// converges. Counts what it sends in framed bytes. The receiver tweens each change over ~100 ms.
+// converges; at most kPerSecond a second on average, kBurst at once (a blink is two in 150 ms):
+// a change that finds no room goes with the next picture that does, as it then is. 22 bytes
+// each, so at most 0.9 kbit/s (SPEC F21: 1). Counts what it sends in framed bytes. The receiver
+// tweens each change over ~100 ms.
 #include <cstdint>
 #include <optional>
 
@@ -16,6 +19,7 @@ class LayersStream {
   static constexpr float kPoseStep = 3;        // degrees a head must turn before it is sent again
   static constexpr int kIntensityStep = 16;    // of 255, as the single code's stream steps
   static constexpr int kEyeStep = 15;          // percent of the neutral photo's openness
+  static constexpr double kPerSecond = 5, kBurst = 3;
 
   explicit LayersStream(double keepalive_seconds = 2.0) : keepalive_(keepalive_seconds) {}
 
@@ -31,6 +35,7 @@ class LayersStream {
   double keepalive_;
   std::optional<FaceState> last_;  // as sent (the wire's whole degrees)
   double last_time_ = 0;
+  double room_ = kBurst, room_at_ = 0;  // messages that may go now, as of room_at_
   uint64_t bytes_ = 0, messages_ = 0;
 };
 

@@ -227,3 +227,59 @@ TEST(CallE2ETest, AClientOfVersion7IsSentMemberFacesNotLayers) {
   EXPECT_EQ(seen[protocol::MessageType::MemberLayers], 0) << "a member-layers, which version 7 cannot read";
   EXPECT_GT(seen[protocol::MessageType::Roster], 0);
 }
+
+// A smile while speaking (SPEC F21): the camera shows a still smile while the member talks in
+// syllables; the listener's faces keep the smile as their expression while their mouth opens and
+// closes with the voice (a camera's mouth that holds still while the voice speaks is not the
+// camera's to say). Needs the Yale faces (a smile to read).
+TEST(CallE2ETest, ASmileWhileSpeakingKeepsTheSmileWhileTheVoiceMovesTheMouth) {
+  if (!fs::exists(kFaceModel) || !fs::exists(kYale / "subject02_happy.png")) GTEST_SKIP() << "needs libdlib-data's model and ../shared/data/yalefaces";
+  const fs::path dir = output_dir("call-smile-speaking");
+  ServerUnderTest server(dir, {{"http", "127.0.0.1:0"}, {"sessions", {{{"name", "call"}, {"kind", "conference"}}}}});
+  const Image neutral = load_image(kYale / "subject02_normal.png"), happy = load_image(kYale / "subject02_happy.png");
+  SessionClient ada(server.address(), "Ada"), listener(server.address(), "Listener");
+  for (SessionClient* c : {&ada, &listener}) c->join("call", "");
+  ada.send(protocol::Publish{.camera = true, .microphone = true});
+  ada.send(protocol::NeutralPhoto{.jpeg = encode_image(neutral, "jpg", 90)});
+  ASSERT_TRUE(eventually([&] { return named(listener.roster(), "Ada") && named(listener.roster(), "Ada")->assets.size() == 2; }));
+  const uint16_t number = named(listener.roster(), "Ada")->member;
+  // Syllables: 200 ms of voice, 160 ms of silence.
+  const auto loud = voice_packets(10), quiet = voice_packets(8, 0.0f);
+  std::vector<protocol::Bytes> voice;
+  while (voice.size() < 300) voice.insert(voice.end(), loud.begin(), loud.end()), voice.insert(voice.end(), quiet.begin(), quiet.end());
+  std::vector<protocol::MemberLayers> faces;
+  int sent_voice = 0;
+  for (int frame = 0; frame < 60; ++frame) {
+    const Image& shown = frame < 10 ? neutral : happy;
+    protocol::FaceCrop crop{.time_ms = uint32_t(frame * 100), .frame_width = uint16_t(shown.width), .frame_height = uint16_t(shown.height), .x = 0,
+                            .y = 0, .width = uint16_t(shown.width), .height = uint16_t(shown.height), .jpeg = {}};
+    if (const auto region = ada.face_region(); region && region->found) {
+      crop.x = region->x, crop.y = region->y, crop.width = region->width, crop.height = region->height;
+      crop.jpeg = encode_image(resized(cropped(shown, crop.x, crop.y, crop.width, crop.height), kFaceVideoSide, kFaceVideoSide), "jpg", 90);
+    } else {
+      crop.jpeg = encode_image(shown, "jpg", 90);
+    }
+    ada.send(crop);
+    for (int k = 0; k < 5; ++k, ++sent_voice) {
+      ada.send(protocol::VoiceFrame{.member = 0, .time_ms = uint32_t(sent_voice * 20), .opus = voice[size_t(sent_voice)]});
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    for (const auto& f : listener.take_member_faces())
+      if (f.member == number) faces.push_back(f);
+  }
+  // From the moment the smile is read on.
+  const auto smiling = std::find_if(faces.begin(), faces.end(), [](const auto& f) { return f.expression.expression == Expression::Smile; });
+  ASSERT_NE(smiling, faces.end()) << "Ada's smile never came (" << faces.size() << " faces)";
+  int smile = 0, open = 0, closed = 0, n = 0;
+  std::string mouths;
+  for (auto it = smiling; it != faces.end(); ++it, ++n) {
+    smile += it->expression.expression == Expression::Smile;
+    open += is_viseme(it->mouth.expression) && it->mouth.expression != Expression::VisemeClosed;
+    closed += it->mouth.expression == Expression::VisemeClosed;
+    mouths += std::string(" ") + name_of(it->mouth.expression);
+  }
+  EXPECT_GE(n, 8) << "too few faces:" << mouths;
+  EXPECT_GE(smile, n * 8 / 10) << smile << " of " << n << " keep the smile";
+  EXPECT_GE(open, 2) << "the mouth never opened with the voice:" << mouths;
+  EXPECT_GE(closed, 2) << "the mouth never closed between syllables:" << mouths;
+}

@@ -19,6 +19,7 @@
 #include "server/face/face_analyzer.hpp"
 #include "server/face/face_reader.hpp"
 #include "server/face/head_pose.hpp"
+#include "server/face/expression_stream.hpp"
 #include "server/face/layers_stream.hpp"
 
 namespace inkwire::eval {
@@ -78,46 +79,6 @@ float nme(const FaceLandmarks& drawn, const FaceLandmarks& seen) {
 
 float angle_error(float a, float b) { return std::abs(std::remainder(a - b, 360.0f)); }
 
-// The sender's member: a neutral photo, the server's reading, and a receiver drawing it.
-class Member {
- public:
-  Member(const Image& neutral, const FaceLandmarks& landmarks) : neutral_(landmarks), receiver_(neutral, landmarks) {
-    reader_.calibrate(landmarks, &neutral);
-  }
-  const FaceLandmarks& neutral() const { return neutral_; }
-
-  // Reads the sender's frame as a call's analyst does; draws it both ways; reads the drawings.
-  Frame compare(FaceAnalyzer& analyzer, const Image& frame, const FaceLandmarks& seen, int index, std::vector<Image>* drawn_out) {
-    Frame out{.index = index, .sender = head_pose(seen, neutral_), .turn_sender = turn_reading(seen)};
-    const FaceState& read = reader_.read(seen, &frame);
-    // What the wire carries: whole degrees, openness in percent.
-    const FaceState sent = protocol::face_state_of(member_layers(read, 1, 0, protocol::FaceSource::Camera));
-    for (const bool with_pose : {false, true}) {
-      Frame::Drawn& d = with_pose ? out.now : out.before;
-      if (with_pose) receiver_.set_face(sent, time_);
-      else receiver_.set_face({.layers = layers_of(reader_.expression())}, time_);
-      receiver_.render(time_ + 1.0);  // settled: the geometry drawn, not the tween on its way
-      time_ += 2.0;
-      const Image drawn = receiver_.read();
-      if (drawn_out) drawn_out->push_back(drawn);
-      const auto found = server::find_face(analyzer, server::looked_at(drawn));
-      if (!found) continue;
-      // find_face reads a picture scaled up to 200 px when smaller: back to the drawing's pixels.
-      FaceLandmarks landmarks = found->landmarks;
-      const float back = float(drawn.width) / float(server::looked_at(drawn).width);
-      for (glm::vec2& p : landmarks) p *= back;
-      d = {.found = true, .pose = head_pose(landmarks, neutral_), .nme = nme(landmarks, seen), .turn = turn_reading(landmarks)};
-    }
-    return out;
-  }
-
- private:
-  FaceLandmarks neutral_;
-  FaceReader reader_;
-  FaceReconstructor receiver_;
-  double time_ = 0;
-};
-
 // The largest face of a picture as the call's analyst finds one it does not track, in its pixels.
 std::optional<FaceLandmarks> landmarks_of(FaceAnalyzer& analyzer, const Image& picture) {
   const Image looked = server::looked_at(picture);
@@ -128,6 +89,47 @@ std::optional<FaceLandmarks> landmarks_of(FaceAnalyzer& analyzer, const Image& p
   for (glm::vec2& p : out) p *= back;
   return out;
 }
+
+// The sender's member: a neutral photo, the server's reading, what the call sends of it, and two
+// receivers drawing that as the call's clients do (tweened over 100 ms, at the frames' times):
+// before (the single code a server of before poses sent, on a change or every two seconds; no
+// pose) and now (member-layers as the call's stream sends them).
+class Member {
+ public:
+  Member(const Image& neutral, const FaceLandmarks& landmarks) : neutral_(landmarks), before_(neutral, landmarks), now_(neutral, landmarks) {
+    reader_.calibrate(landmarks, &neutral);
+  }
+  const FaceLandmarks& neutral() const { return neutral_; }
+
+  // Reads the sender's frame (shown at `seconds`) as a call's analyst does; draws it both ways;
+  // reads the drawings.
+  Frame compare(FaceAnalyzer& analyzer, const Image& frame, const FaceLandmarks& seen, int index, double seconds, std::vector<Image>* drawn_out) {
+    Frame out{.index = index, .sender = head_pose(seen, neutral_), .turn_sender = turn_reading(seen)};
+    const FaceState& read = reader_.read(seen, &frame);
+    if (const auto code = single_.next(reader_.expression(), seconds))
+      if (const auto state = protocol::expression_state(*code)) before_.set_expression(*state, seconds);
+    if (const auto sent = layers_.next(read, seconds, 1, uint32_t(seconds * 1000.0))) now_.set_face(protocol::face_state_of(*sent), seconds);
+    for (const bool with_pose : {false, true}) {
+      FaceReconstructor& receiver = with_pose ? now_ : before_;
+      Frame::Drawn& d = with_pose ? out.now : out.before;
+      // Drawn once a change of this moment has tweened in (the receiver's 100 ms): the face the
+      // others see of it; a change the stream holds back (its rate) still shows the last one sent.
+      receiver.render(seconds + 0.1);
+      const Image drawn = receiver.read();
+      if (drawn_out) drawn_out->push_back(drawn);
+      const auto landmarks = landmarks_of(analyzer, drawn);
+      if (landmarks) d = {.found = true, .pose = head_pose(*landmarks, neutral_), .nme = nme(*landmarks, seen), .turn = turn_reading(*landmarks)};
+    }
+    return out;
+  }
+
+ private:
+  FaceLandmarks neutral_;
+  FaceReader reader_;
+  ExpressionStream single_{2.0};
+  LayersStream layers_{2.0};
+  FaceReconstructor before_, now_;
+};
 
 // The figures of a set of frames: before (the one code, no pose) and now.
 nlohmann::json figures(const std::vector<Frame>& frames) {
@@ -216,7 +218,7 @@ nlohmann::json run_clip(const FacePoseOptions& o, FaceAnalyzer& analyzer) {
     }
     const bool picture = !o.images_dir.empty() && frames % 15 == 0;
     std::vector<Image> drawn;
-    tracks.back().push_back(member->compare(analyzer, *frame, *seen, frames, picture ? &drawn : nullptr));
+    tracks.back().push_back(member->compare(analyzer, *frame, *seen, frames, frames / source.fps(), picture ? &drawn : nullptr));
     track_list.back()["frames"] = tracks.back().size();
     if (picture) sheet(o.images_dir, "clip-" + std::to_string(1000 + frames).substr(1), *frame, drawn);
     if (frames % 25 == 0) std::cerr << "face-pose: frame " << frames << ", " << tracks.size() << " tracks\n";
@@ -241,7 +243,17 @@ nlohmann::json run_clip(const FacePoseOptions& o, FaceAnalyzer& analyzer) {
       per_track.back()["first_frame"] = tracks[k].front().index;
     }
   out["tracks_of_20_frames_or_more"] = per_track;
-  if (!per_track.empty()) out["last_shot"] = per_track.back();
+  if (!per_track.empty()) {
+    out["last_shot"] = per_track.back();
+    // Its frames one by one: the turn's reading and the roll, the sender's and each drawing's.
+    nlohmann::json frames_json = nlohmann::json::array();
+    for (const auto& t : tracks)
+      if (t.size() >= 20 && t.front().index == per_track.back()["first_frame"].get<int>())
+        for (const Frame& f : t)
+          frames_json.push_back({{"frame", f.index}, {"turn", {f.turn_sender, f.before.found ? f.before.turn : NAN, f.now.found ? f.now.turn : NAN}},
+                                 {"yaw", {f.sender.yaw, f.now.pose.yaw}}, {"roll", {f.sender.roll, f.now.pose.roll}}});
+    out["last_shot"]["per_frame"] = frames_json;
+  }
   return out;
 }
 
@@ -282,7 +294,9 @@ nlohmann::json run_yale(const FacePoseOptions& o, FaceAnalyzer& analyzer) {
       }
       std::vector<Image> drawn;
       const bool picture = !o.images_dir.empty() && (roll == 20.0f || roll == -30.0f);
-      Frame f = member.compare(analyzer, turned, *seen, k++, picture ? &drawn : nullptr);
+      // A still each second: the tween long settled.
+      Frame f = member.compare(analyzer, turned, *seen, k, k + 1.0, picture ? &drawn : nullptr);
+      ++k;
       if (picture) sheet(o.images_dir, "yale-" + file.stem().string() + "-roll" + std::to_string(int(roll)), turned, drawn);
       if (f.before.found) truth_error_before.push_back(angle_error(f.before.pose.roll, roll));
       if (f.now.found) truth_error_now.push_back(angle_error(f.now.pose.roll, roll));

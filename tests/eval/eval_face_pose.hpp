@@ -1,10 +1,11 @@
 #pragma once
 // `inkwire-eval face-pose`: the face the others see against the face that was there (SPEC F20).
 // Clips with head motion are read by the server's own reading of a member's camera
-// (server/face/face_reader.hpp) into the faces a call sends (as the wire rounds them), drawn by
-// the receiver's renderer (client/render/face/face_reconstructor.hpp) twice: as before poses
-// travelled (the one code, the head held as in the neutral photo) and with the pose and the
-// layers; the server's analyser then reads each drawn face again. Figures: head pose error
+// (server/face/face_reader.hpp) into the faces a call sends, when it sends them (its streams:
+// server/face/layers_stream.hpp), and drawn as the receiver's renderer draws them at each frame's
+// time (client/render/face/face_reconstructor.hpp, tweened), twice: as before poses travelled
+// (the one code, the head held as in the neutral photo) and with the pose and the layers; the
+// server's analyser then reads each drawn face again. Figures: head pose error
 // (median degrees, all frames and where the sender's head is tilted more than 8 degrees), the
 // landmarks' error normalised by the distance between the outer eye corners (NME, as 300-W
 // reports it; the drawn face moved and scaled onto the sender's, since a call sends no place in

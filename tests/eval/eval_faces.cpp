@@ -119,7 +119,7 @@ FaceAnalyzerOptions still_options(int upsample) { return {.detect_every = 1, .de
 nlohmann::json features_json(const FaceFeatures& f) {
   return {{"brow_raise", {f.brow_raise_left, f.brow_raise_right}}, {"eye_open", {f.eye_open_left, f.eye_open_right}},
           {"mouth_open", f.mouth_open}, {"mouth_width", f.mouth_width}, {"corner_lift", f.corner_lift},
-          {"jaw_drop", f.jaw_drop}, {"brow_inner_raise", f.brow_inner_raise}};
+          {"jaw_drop", f.jaw_drop}, {"brow_inner_raise", f.brow_inner_raise}, {"eye_shade", {f.eye_shade_left, f.eye_shade_right}}};
 }
 
 }  // namespace
