@@ -11,7 +11,13 @@ namespace inkwire {
 glm::mat4 Camera::view() const { return glm::lookAt(position, target, up); }
 
 glm::mat4 Camera::projection(float aspect) const {
-  return glm::perspective(glm::radians(fov_y_degrees), aspect, near_plane, far_plane);
+  const float half = std::atan(std::tan(glm::radians(fov_y_degrees) / 2.0f) / fit_scale(aspect, 1.0f));
+  return glm::perspective(2.0f * half, aspect, near_plane, far_plane);
+}
+
+float fit_scale(float viewport_aspect, float picture_aspect) {
+  if (!(viewport_aspect > 0.0f) || !(picture_aspect > 0.0f)) return 1.0f;
+  return std::min(1.0f, viewport_aspect / picture_aspect);
 }
 
 Camera thesis_camera() {

@@ -17,8 +17,18 @@ struct Camera {
   float far_plane = 100.0f;
 
   glm::mat4 view() const;
+  // `fov_y_degrees` spans the viewport's height where it is at least as wide as high, and its
+  // width where it is narrower (fit_scale): a portrait viewport (a phone held upright) shows what
+  // a square one does, with more above and below, instead of cutting the sides off.
   glm::mat4 projection(float aspect) const;
 };
+
+// How much a picture of `picture_aspect` (width / height) drawn at a viewport's full height is
+// scaled so it fits the viewport's width as well: 1 where the viewport (of `viewport_aspect`)
+// is at least as wide as the picture, less where it is narrower. The turntable's photos
+// (letterboxed) and a scene's field of view (as a square picture) both follow it; the browser's
+// element keeps the same rule (client/web/common/framing.js, pinned by warp-vectors.json).
+float fit_scale(float viewport_aspect, float picture_aspect);
 
 // The study's viewer: at (12.73, 17.85, 12.52) with orientation (w,x,y,z) =
 // (0.866, -0.091, 0.490, 0.051). Read as a camera-to-world rotation, that quaternion leaves

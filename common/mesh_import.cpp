@@ -19,6 +19,7 @@
 #include <assimp/scene.h>
 #include <glm/mat4x4.hpp>
 
+#include "common/model_files.hpp"
 #include "common/error.hpp"
 #include "common/mesh_welder.hpp"
 
@@ -61,7 +62,7 @@ std::optional<std::filesystem::path> find_texture_file(const std::filesystem::pa
   portable.erase(0, portable.find_first_not_of('/'));
   const std::filesystem::path folder = model.parent_path();
   for (const std::filesystem::path& path : {folder / portable, folder / std::filesystem::path(portable).filename()})
-    if (std::optional<std::filesystem::path> found = existing_file_any_case(path.lexically_normal())) return found;
+    if (std::optional<std::filesystem::path> found = existing_file_any_case(path.lexically_normal()); found && model_file_allowed(*found)) return found;
   return std::nullopt;
 }
 
@@ -256,6 +257,7 @@ glm::mat4 upright(const std::filesystem::path& file, UpAxis up) {
 UpAxis file_up_axis(const std::filesystem::path& file) {
   if (lower_case(file.extension().string()) != ".fbx") return z_up_format_assimp_turns(file) ? UpAxis::Z : UpAxis::Y;
   Assimp::Importer importer;
+  importer.SetIOHandler(new ModelIOSystem);  // the importer owns it
   const aiScene* scene = importer.ReadFile(file.string(), 0);
   return scene ? scene_up_axis(*scene, file) : UpAxis::Y;
 }
@@ -276,6 +278,7 @@ Mesh load_mesh(const std::filesystem::path& file, ImportReport* report_out, UpAx
   check_declared_counts(file, bytes);
 
   Assimp::Importer importer;
+  importer.SetIOHandler(new ModelIOSystem);  // the importer owns it
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
   const unsigned flags = aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure;
   const aiScene* scene = nullptr;

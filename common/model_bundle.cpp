@@ -19,6 +19,7 @@
 
 #include "common/error.hpp"
 #include "common/mesh_import.hpp"
+#include "common/model_files.hpp"
 
 namespace inkwire {
 namespace {
@@ -26,10 +27,10 @@ namespace {
 namespace fs = std::filesystem;
 
 // The file system as assimp sees it, noting every file it opens: what a model "follows".
-class RecordingIOSystem final : public Assimp::DefaultIOSystem {
+class RecordingIOSystem final : public ModelIOSystem {
  public:
   Assimp::IOStream* Open(const char* file, const char* mode) override {
-    Assimp::IOStream* stream = DefaultIOSystem::Open(file, mode);
+    Assimp::IOStream* stream = ModelIOSystem::Open(file, mode);
     if (stream) opened.insert(fs::weakly_canonical(file));
     return stream;
   }

@@ -1,6 +1,6 @@
 #pragma once
-// A member's face across protocol versions (protocol/SPEC.md, "Versioning"). Version 8 sends
-// member-layers: the layers and the head's pose (SPEC F20-F22). A peer of version 7 reads only
+// A member's face across protocol versions (protocol/SPEC.md, "Versioning"). Version 9 sends
+// member-layers: the layers and the head's pose (SPEC F20-F22). A peer of version 7 or 8 reads only
 // member-face, one code: it is sent the code that says most of what the layers show
 // (common/face/face_layers.hpp dominant_expression), and still draws expressions, without blinks
 // or a smile while talking. A member-face from such a peer or recording reads as layers.

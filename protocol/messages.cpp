@@ -33,6 +33,16 @@ void enumeration(Stream& s, Enum& v, unsigned first, unsigned last, const char* 
     if (unsigned(v) < first || unsigned(v) > last) throw ProtocolError(std::string("unknown ") + what + " " + std::to_string(unsigned(v)));
 }
 
+template <class Stream>
+void flag(Stream& s, bool& v, const char* what) {
+  uint8_t raw = v;
+  s.u8(raw);
+  if constexpr (Stream::reading) {
+    if (raw > 1) throw ProtocolError(std::string(what) + " is not 0 or 1");
+    v = raw == 1;
+  }
+}
+
 // Names (sessions, renderers, setting keys) are plain: letters, digits and - _ . + =, so they
 // can be logged, used as keys and passed to the style registry without quoting.
 bool plain(const std::string& text, const char* extra) {
@@ -56,7 +66,7 @@ void serialise(Stream& s, Welcome& m) {
 
 template <class Stream>
 void serialise(Stream& s, ErrorMessage& m) {
-  enumeration(s, m.code, 1, 10, "error code");
+  enumeration(s, m.code, 1, 12, "error code");
   s.text(m.reason, kMaxReason);
 }
 
@@ -74,6 +84,7 @@ template <class Stream>
 void serialise(Stream& s, Join& m) {
   s.text(m.session, kMaxName);
   s.text(m.token, kMaxToken);
+  flag(s, m.open_room, "join open room");
   if constexpr (Stream::reading) check(!m.session.empty() && plain(m.session, "-_."), "session name must be letters, digits, - _ .");
 }
 
@@ -228,16 +239,6 @@ void serialise(Stream& s, Snapshot& m) {
 }
 
 template <class Stream>
-void flag(Stream& s, bool& v, const char* what) {
-  uint8_t raw = v;
-  s.u8(raw);
-  if constexpr (Stream::reading) {
-    if (raw > 1) throw ProtocolError(std::string(what) + " is not 0 or 1");
-    v = raw == 1;
-  }
-}
-
-template <class Stream>
 void serialise(Stream& s, Publish& m) {
   flag(s, m.camera, "publish camera");
   flag(s, m.microphone, "publish microphone");
@@ -367,6 +368,22 @@ void serialise(Stream& s, Roster& m) {
   const size_t n = s.count(m.members.size(), kMaxMembers, "call members");
   if constexpr (Stream::reading) m.members.resize(n);
   for (CallMember& member : m.members) serialise(s, member);
+  s.u16(m.host);
+  flag(s, m.locked, "roster locked");
+}
+
+template <class Stream>
+void serialise(Stream& s, HostKey& m) {
+  s.text(m.key, kHostKeyChars);
+  if constexpr (Stream::reading)
+    check(m.key.size() == kHostKeyChars && m.key.find_first_not_of("0123456789abcdef") == std::string::npos, "host key is not 32 hex digits");
+}
+
+template <class Stream>
+void serialise(Stream& s, RoomControl& m) {
+  enumeration(s, m.action, 1, 3, "room action");
+  s.u16(m.member);
+  if constexpr (Stream::reading) check(m.action == RoomAction::Remove ? m.member != 0 : m.member == 0, "room control names a member only to remove");
 }
 
 template <class Stream>
@@ -423,7 +440,7 @@ const char* name_of(MessageType type) {
                                 "style-change", "camera-pose", "object-pose", "expression-code", "tween-data",
                                 "asset-announce", "asset-request", "asset-chunk", "publish", "neutral-photo",
                                 "face-crop", "face-region", "voice-frame", "member-face", "roster", "permissions",
-                                "face-video", "key-frame-request", "voice-route", "member-layers"};
+                                "face-video", "key-frame-request", "voice-route", "host-key", "room-control", "member-layers"};
   const auto i = unsigned(type);
   return i >= 1 && i <= kMessageTypes ? names[i - 1] : "unknown";
 }

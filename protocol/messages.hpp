@@ -18,8 +18,9 @@
 namespace inkwire::protocol {
 
 inline constexpr uint32_t kMagic = 0x574B4E49;  // the bytes "INKW" read as a little-endian u32
-inline constexpr uint16_t kVersion = 8;  // 2: snapshots describe a turntable's product; 3: calls, refused changes; 4: zoom levels; 5: permissions;
-                                         // 6: face video; 7: voice route; 8: member faces in layers with their head's pose
+inline constexpr uint16_t kVersion = 9;  // 2: snapshots describe a turntable's product; 3: calls, refused changes; 4: zoom levels; 5: permissions;
+                                         // 6: face video; 7: voice route; 8: rooms opened on joining, their host;
+                                         // 9: member faces in layers with their head's pose
 // The oldest version a server still serves (protocol/versions.hpp says what such a peer is sent instead).
 inline constexpr uint16_t kOldestVersion = 7;
 
@@ -45,14 +46,15 @@ inline constexpr size_t kMaxPhotoBytes = 120 * 1024;  // a member's neutral phot
 inline constexpr size_t kMaxVoiceBytes = 1275;        // one Opus packet at most (RFC 6716); 12 kbit/s x 60 ms is 90 bytes
 inline constexpr size_t kMaxMembers = 64;             // members a roster lists
 inline constexpr size_t kVoiceTicketChars = 32;       // a voice route's ticket: 128 random bits in hex
+inline constexpr size_t kHostKeyChars = 32;           // a room's host key: 128 random bits in hex
 
 enum class MessageType : uint16_t {
   Hello = 1, Welcome, Error, Ping, Pong, Join, Leave, Snapshot, StyleChange, CameraPose,
   ObjectPose, ExpressionCode, TweenData, AssetAnnounce, AssetRequest, AssetChunk,
   Publish, NeutralPhoto, FaceCrop, FaceRegion, VoiceFrame, MemberFace, Roster, Permissions,
-  FaceVideo, KeyFrameRequest, VoiceRoute, MemberLayers
+  FaceVideo, KeyFrameRequest, VoiceRoute, HostKey, RoomControl, MemberLayers
 };
-inline constexpr uint16_t kMessageTypes = 28;
+inline constexpr uint16_t kMessageTypes = 30;
 
 enum class SessionKind : uint8_t { Scene = 1, Turntable = 2, Conference = 3 };
 // Samples: a product's sample photos in sample order; Matte: their mattes, in the same order;
@@ -63,7 +65,10 @@ enum class ErrorCode : uint16_t {
   BadVersion = 1, Malformed = 2, NoSession = 3, BadToken = 4, NotJoined = 5, NoAsset = 6,
   TooSlow = 7, ShuttingDown = 8, Refused = 9,
   // A change this member may not make (SPEC W8): not applied, the connection stays open.
-  NotAllowed = 10
+  NotAllowed = 10,
+  // A room's host locked it (a join is refused: the reason names the host to ask), or removed
+  // this member: clients do not join again by themselves after either.
+  Locked = 11, Removed = 12
 };
 
 std::string to_string(SessionKind kind);
@@ -104,10 +109,14 @@ struct Pong {
   uint64_t nonce = 0;
 };
 
+// `open_room`: when no session has this name, open a call room of it (if the server lets this
+// client make rooms: `token` is then its creator token); without it an unknown name is refused,
+// so a typo does not make an empty room.
 struct Join {
   static constexpr MessageType type = MessageType::Join;
   bool operator==(const Join&) const = default;
   std::string session, token;
+  bool open_room = false;
 };
 
 struct Leave {
@@ -317,8 +326,8 @@ struct MemberFace {
   FaceSource source = FaceSource::Neutral;
 };
 
-// What a member's face shows, in layers, with its head's pose (S->C, version 8; SPEC F20-F22):
-// replaces member-face, which a server still sends a peer of version 7 (protocol/versions.hpp).
+// What a member's face shows, in layers, with its head's pose (S->C, version 9; SPEC F20-F22):
+// replaces member-face, which a server still sends a peer of version 7 or 8 (protocol/face_versions.hpp).
 // The expression (brows, cheeks: neutral, smile, laugh, frown, surprise, sad), the mouth (0: the
 // expression's own, drawn back to rest by its intensity; a viseme over it; an expression's mouth
 // instead of it) and each eye's
@@ -352,6 +361,27 @@ struct Roster {
   bool operator==(const Roster&) const = default;
   uint16_t you = 0;  // the receiver's own member number (0: not a member of a call)
   std::vector<CallMember> members;
+  uint16_t host = 0;    // the member number of the room's host while it is in the call (0: none)
+  bool locked = false;  // the host locked the room: newcomers are refused
+};
+
+// The key to a room the receiver just opened (S->C, once, after the snapshot): joining with it
+// as the token makes a member the room's host again (after a reload or a dropped connection).
+// Only the server's digest of it is kept.
+struct HostKey {
+  static constexpr MessageType type = MessageType::HostKey;
+  bool operator==(const HostKey&) const = default;
+  std::string key;  // kHostKeyChars lowercase hex digits
+};
+
+// What a room's host does to it (C->S): lock it to newcomers, open it again, or remove member
+// `member` (its number in the roster) from the call. Refused with the reason to anyone else.
+enum class RoomAction : uint8_t { Lock = 1, Unlock = 2, Remove = 3 };
+struct RoomControl {
+  static constexpr MessageType type = MessageType::RoomControl;
+  bool operator==(const RoomControl&) const = default;
+  RoomAction action = RoomAction::Lock;
+  uint16_t member = 0;  // Remove only
 };
 
 // What this member may not change in its session (S->C, after the snapshot on joining; SPEC W8):
@@ -372,7 +402,7 @@ struct Permissions {
 using Message = std::variant<Hello, Welcome, ErrorMessage, Ping, Pong, Join, Leave, Snapshot, StyleChange, CameraPose,
                              ObjectPose, ExpressionCode, TweenData, AssetAnnounce, AssetRequest, AssetChunk,
                              Publish, NeutralPhoto, FaceCrop, FaceRegion, VoiceFrame, MemberFace, Roster, Permissions,
-                             FaceVideo, KeyFrameRequest, VoiceRoute, MemberLayers>;
+                             FaceVideo, KeyFrameRequest, VoiceRoute, HostKey, RoomControl, MemberLayers>;
 
 MessageType type_of(const Message& m);
 const char* name_of(MessageType type);

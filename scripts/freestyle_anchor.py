@@ -1,7 +1,7 @@
 # The anchor a line style is held up against: Blender's Freestyle lines over a flat paper-coloured
 # surface, from the orbit view `inkwire-render --view 35,15,1.3 --size 400x320` uses (45 degree
-# vertical field of view). Optional, for comparing looks (docs/benchmarks.md, looks); Blender is
-# not one of the project's packages (`apt-get install blender`, 3.4 in Debian 12):
+# vertical field of view). Optional, for comparing looks (docs/benchmarks-journal.md, looks);
+# Blender is not one of the project's packages (`apt-get install blender`, 3.4 in Debian 12):
 #   blender -b --factory-startup -P scripts/freestyle_anchor.py -- MODEL.obj|MODEL.dae OUT.png
 import math
 import sys

@@ -4,15 +4,25 @@
 # crashes (the one in docs/fuzzing.md came from this script).
 #   scripts/fuzz.sh [SECONDS] [TARGET ...]     corpora in fuzz-corpus/, crashes in fuzz-out/
 #   FUZZ_TABLE_ONLY=1 scripts/fuzz.sh ...       the table of the last run's logs again
+#   scripts/fuzz.sh --build-only [TARGET ...]   build and seed only (ctest's FuzzBuild fixture)
+#   scripts/fuzz.sh --no-build SECONDS TARGET   run what is built (ctest's Fuzz_TARGET, the fuzz tier)
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 cd "$here"
-seconds=${1:-600}
-shift || true
+build=1 fuzz=1
+case "${1:-}" in
+  --build-only) fuzz=0; shift ;;
+  --no-build) build=0; shift ;;
+esac
+seconds=600
+if [ $fuzz = 1 ]; then seconds=${1:-600}; shift || true; fi
+# (The fuzz tier's seconds, when scripts/test.sh or a person says otherwise than the build.)
+if [ $build = 0 ] && [ "${INKWIRE_FUZZ_SECONDS:-0}" != 0 ]; then seconds=$INKWIRE_FUZZ_SECONDS; fi
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_frames fuzz_message fuzz_tween fuzz_landmarks fuzz_http fuzz_websocket fuzz_config fuzz_broker fuzz_voice fuzz_glb fuzz_video fuzz_calibration)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_frames fuzz_message fuzz_tween fuzz_landmarks fuzz_http fuzz_websocket fuzz_config fuzz_broker fuzz_voice fuzz_glb fuzz_video fuzz_calibration fuzz_upload)
+[ "${FUZZ_TABLE_ONLY:-0}" != 1 ] || build=0 fuzz=0
 
-if [ "${FUZZ_TABLE_ONLY:-0}" != 1 ]; then
+if [ $build = 1 ]; then
 for p in clang libclang-rt-14-dev; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
 done
@@ -21,8 +31,10 @@ if [ -n "${missing[*]:-}" ]; then
   $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DINKWIRE_BUILD_FUZZ=ON \
-  -DINKWIRE_BUILD_TESTS=OFF -DINKWIRE_BUILD_BENCH=OFF > /dev/null
+  -DINKWIRE_BUILD_TESTS=OFF -DINKWIRE_BUILD_BENCH=OFF "${launcher[@]}" > /dev/null
 cmake --build build-fuzz -j "$(nproc)" --target "${targets[@]}" > /dev/null
 
 # Seeds: a few well-formed inputs each fuzzer would take long to invent.
@@ -34,6 +46,28 @@ for t in "${targets[@]}"; do mkdir -p "fuzz-corpus/$t"; done
 if [ -d fuzz-corpus/fuzz_config ]; then
   cp deploy/example/instance-a.json deploy/example/instance-b.json fuzz-corpus/fuzz_config/
   printf '{"tls": {"certificate": "c.pem", "key": "k.pem"}, "max_connections": 10, "sessions": [{"name": "t", "kind": "turntable", "product": {"photos": "p", "step": 15}}, {"name": "c", "kind": "conference", "face": {"source": "camera:0"}}]}' > fuzz-corpus/fuzz_config/keys.json
+fi
+
+# Uploads: every file of assimp's invalid corpus as the one file of a multipart body (the first
+# byte chooses the pieces the body comes in), and a glTF with its .bin.
+if [ -d fuzz-corpus/fuzz_upload ]; then
+  /usr/bin/python3 - <<'PY'
+import os
+def body(files):
+    out = b"\x10"
+    for name, data in files:
+        out += b"--inkwire-fuzz-boundary\r\nContent-Disposition: form-data; name=\"file\"; filename=\"" + name.encode() + b"\"\r\n\r\n" + data + b"\r\n"
+    return out + b"--inkwire-fuzz-boundary--\r\n"
+invalid = "/usr/share/assimp/models/invalid"
+for name in sorted(os.listdir(invalid)) if os.path.isdir(invalid) else []:
+    path = os.path.join(invalid, name)
+    if os.path.isfile(path) and os.path.getsize(path) < 1 << 20:
+        open(f"fuzz-corpus/fuzz_upload/invalid-{name}", "wb").write(body([(name, open(path, "rb").read())]))
+box = "/usr/share/assimp/models/glTF2/BoxTextured-glTF"
+if os.path.isdir(box):
+    open("fuzz-corpus/fuzz_upload/box", "wb").write(body([(n, open(os.path.join(box, n), "rb").read())
+                                                          for n in ("BoxTextured.gltf", "BoxTextured0.bin", "CesiumLogoFlat.png")]))
+PY
 fi
 
 # A calibration of four cameras round an object, 10 degrees apart (a lab's *_par.txt).
@@ -84,6 +118,14 @@ if [ -d fuzz-corpus/fuzz_glb ]; then
     [ -f "$f" ] && cp "$f" fuzz-corpus/fuzz_glb/
   done
 fi
+fi
+
+if [ $fuzz = 1 ]; then
+mkdir -p fuzz-out
+for t in "${targets[@]}"; do
+  [ -x "build-fuzz/bin/$t" ] || { echo "fuzz: build-fuzz/bin/$t is not built (scripts/fuzz.sh --build-only)" >&2; exit 1; }
+  mkdir -p "fuzz-corpus/$t"
+done
 
 run() {
   local t=$1
@@ -99,6 +141,7 @@ for t in "${targets[@]}"; do
 done
 wait
 fi
+[ $fuzz = 1 ] || [ "${FUZZ_TABLE_ONLY:-0}" = 1 ] || exit 0
 
 echo "| target | seconds | executions | executions/s | coverage (edges) | features | corpus | crashes |"
 echo "|---|---|---|---|---|---|---|---|"
@@ -112,8 +155,8 @@ for t in "${targets[@]}"; do
   crashes=$(find fuzz-out -name "$t-crash-*" -o -name "$t-leak-*" -o -name "$t-oom-*" -o -name "$t-timeout-*" | wc -l)
   echo "| $t | $seconds | ${runs:-?} | $(( ${runs:-0} / seconds )) | ${cov:-?} | ${ft:-?} | ${corp:-?} | $crashes |"
 done
-# A finding fails the run (scripts/test.sh runs every target briefly): the input is in fuzz-out/.
-found=$(find fuzz-out -name '*-crash-*' -o -name '*-leak-*' -o -name '*-oom-*' -o -name '*-timeout-*' | sort)
+# A finding of these targets fails the run (the fuzz tier runs every target briefly): the input is in fuzz-out/.
+found=$(for t in "${targets[@]}"; do find fuzz-out -name "$t-crash-*" -o -name "$t-leak-*" -o -name "$t-oom-*" -o -name "$t-timeout-*"; done | sort)
 if [ -n "$found" ]; then
   echo "fuzz: findings (replay with build-fuzz/bin/TARGET FILE):" $found >&2
   exit 1

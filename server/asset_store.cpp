@@ -1,5 +1,6 @@
 #include "server/asset_store.hpp"
 
+#include <ctime>
 #include <set>
 #include <utility>
 
@@ -138,6 +139,14 @@ AssetStore::AssetStore(const fs::path& dir) : dir_(dir) {
   bool has_editor_token = false;
   for (Statement q(db_, "PRAGMA table_info(sessions)"); q.step();) has_editor_token |= q.text(1) == "editor_token";
   if (!has_editor_token) exec("ALTER TABLE sessions ADD COLUMN editor_token TEXT NOT NULL DEFAULT ''");
+  // ... and, from before sessions people make, who made each (the operator, for those before).
+  bool has_maker = false;
+  for (Statement q(db_, "PRAGMA table_info(sessions)"); q.step();) has_maker |= q.text(1) == "made_by";
+  if (!has_maker) {
+    exec("ALTER TABLE sessions ADD COLUMN made_by TEXT NOT NULL DEFAULT 'operator'");
+    exec("ALTER TABLE sessions ADD COLUMN creator TEXT NOT NULL DEFAULT ''");
+    exec("ALTER TABLE sessions ADD COLUMN kept INTEGER NOT NULL DEFAULT 0");
+  }
   changed_elsewhere();  // from here on, what other processes write is noticed
 }
 
@@ -241,7 +250,7 @@ protocol::Bytes AssetStore::read(const protocol::Hash& hash, uint64_t offset, ui
   return bytes;
 }
 
-AssetStore::Swept AssetStore::sweep_unnamed(std::chrono::seconds grace) {
+AssetStore::Swept AssetStore::sweep_unnamed(std::chrono::seconds grace, std::chrono::system_clock::time_point now) {
   Swept out;
   std::set<std::string> named;
   for (const char* table : {"sessions", "products"})
@@ -253,11 +262,16 @@ AssetStore::Swept AssetStore::sweep_unnamed(std::chrono::seconds grace) {
         return out;
       }
     }
-  const std::string cutoff = "-" + std::to_string(grace.count()) + " seconds";
+  // The cutoff as the catalogue writes its times (CURRENT_TIMESTAMP: UTC, whole seconds).
+  const std::time_t cutoff_time = std::chrono::system_clock::to_time_t(now - grace);
+  std::tm cutoff_tm{};
+  gmtime_r(&cutoff_time, &cutoff_tm);
+  char cutoff[32];
+  std::strftime(cutoff, sizeof cutoff, "%Y-%m-%d %H:%M:%S", &cutoff_tm);
   std::vector<std::pair<std::string, uint64_t>> unnamed;
   std::set<std::string> catalogued;
-  Statement q(db_, "SELECT hash, size, added < datetime('now', ?) FROM assets");
-  q.bind(1, cutoff);
+  Statement q(db_, "SELECT hash, size, added < ? FROM assets");
+  q.bind(1, std::string(cutoff));
   while (q.step()) {
     catalogued.insert(q.text(0));
     if (q.integer(2) && !named.count(q.text(0))) unnamed.push_back({q.text(0), uint64_t(q.integer(1))});
@@ -269,7 +283,7 @@ AssetStore::Swept AssetStore::sweep_unnamed(std::chrono::seconds grace) {
     ++out.assets, out.bytes += size;
   }
   // Files the catalogue does not name, as old: never renamed into place, or never catalogued.
-  const auto too_old = fs::file_time_type::clock::now() - grace;
+  const auto too_old = fs::file_time_type::clock::from_sys(now - grace);
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(dir_ / "assets", ec)) {
     const std::string name = entry.path().filename().string();
@@ -292,10 +306,11 @@ bool AssetStore::changed_elsewhere() {
 
 std::vector<StoredSession> AssetStore::sessions() const {
   std::vector<StoredSession> out;
-  Statement q(db_, "SELECT name, token, editor_token, state FROM sessions ORDER BY name");
+  Statement q(db_, "SELECT name, token, editor_token, state, made_by, creator, kept FROM sessions ORDER BY name");
   while (q.step()) {
     try {
-      out.push_back({as_token_hash(q.text(1)), as_token_hash(q.text(2)), decode_state(q.blob(3))});
+      out.push_back({.token = as_token_hash(q.text(1)), .editor_token = as_token_hash(q.text(2)), .state = decode_state(q.blob(3)),
+                     .maker = made_by_from_string(q.text(4)), .creator = q.text(5), .kept = q.integer(6) != 0});
     } catch (const Error& e) {
       log_warn("session-state-unreadable", {{"session", q.text(0)}, {"reason", e.what()}});
     }
@@ -342,10 +357,20 @@ bool AssetStore::remove_product(const std::string& name) {
   return true;
 }
 
+bool AssetStore::remove_session(const std::string& name) {
+  Statement find(db_, "SELECT name FROM sessions WHERE name = ?");
+  find.bind(1, name);
+  if (!find.step()) return false;
+  Statement(db_, "DELETE FROM sessions WHERE name = ?").bind(1, name).step();
+  return true;
+}
+
 void AssetStore::save_session(const StoredSession& session) {
-  Statement(db_, "INSERT OR REPLACE INTO sessions (name, kind, token, editor_token, state, updated) VALUES (?, ?, ?, ?, ?, CURRENT_TIMESTAMP)")
+  Statement(db_, "INSERT OR REPLACE INTO sessions (name, kind, token, editor_token, state, made_by, creator, kept, updated) "
+                 "VALUES (?, ?, ?, ?, ?, ?, ?, ?, CURRENT_TIMESTAMP)")
       .bind(1, session.state.session).bind(2, protocol::to_string(session.state.kind)).bind(3, session.token)
-      .bind(4, session.editor_token).bind_blob(5, protocol::encode(session.state)).step();
+      .bind(4, session.editor_token).bind_blob(5, protocol::encode(session.state)).bind(6, to_string(session.maker))
+      .bind(7, session.creator).bind(8, int64_t(session.kept)).step();
 }
 
 }  // namespace inkwire::server

@@ -12,16 +12,11 @@
 #include <vector>
 
 #include "protocol/messages.hpp"
+#include "server/stored_session.hpp"
 
 struct sqlite3;
 
 namespace inkwire::server {
-
-struct StoredSession {
-  std::string token;  // hash_token() of the session's token (session_token.hpp); empty: anyone may join
-  std::string editor_token;  // hash_token() of the token that makes a member an editor (authority.hpp); empty: none
-  protocol::Snapshot state;
-};
 
 class AssetStore {
  public:
@@ -57,6 +52,9 @@ class AssetStore {
   // under that name, so its assets are named no more (swept after the grace period at a start)
   // and a running server drops it. False when the catalogue has no product of that name.
   bool remove_product(const std::string& name);
+  // Takes session `name` out of the catalogue whatever its kind (a room gone, a scene removed);
+  // false when there is none.
+  bool remove_session(const std::string& name);
 
   // Assets no session and no product names, stored more than `grace` ago: what an add-product
   // killed half-way leaves (its files are written before the product that names them). Their
@@ -68,7 +66,8 @@ class AssetStore {
     uint64_t bytes = 0;
     std::string skipped;
   };
-  Swept sweep_unnamed(std::chrono::seconds grace);
+  // `now` is when the sweep counts from (a test's own clock; the real one otherwise).
+  Swept sweep_unnamed(std::chrono::seconds grace, std::chrono::system_clock::time_point now = std::chrono::system_clock::now());
 
   // Whether another process (add-product, while the server runs) wrote the catalogue since the
   // last call: SQLite's data_version, which this connection's own writes leave alone.

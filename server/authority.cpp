@@ -19,7 +19,8 @@ std::string refusal(const SessionAuthority& session, Role role, MessageType chan
     case SessionKind::Conference:
       if (change == MessageType::ExpressionCode || change == MessageType::ObjectPose || change == MessageType::CameraPose)
         return "members publish only as themselves: faces come from each member's own camera";
-      if (session.has_editor_token) return "only the call's editor may " + what;
+      // A call's editor is its host: who opened the room (its host key), or who holds the config's editor token.
+      if (session.has_editor_token) return "only the call's host may " + what + " for everyone";
       return {};
     case SessionKind::Scene:
       if (session.has_editor_token) return "only the session's editors may " + what + "; you follow them";

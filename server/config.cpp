@@ -51,6 +51,45 @@ ProductSource product_from_json(const SessionConfig& session, const nlohmann::js
   return p;
 }
 
+MakingOptions making_from_json(const nlohmann::json& j) {
+  MakingOptions m;
+  if (j.contains("who")) {
+    const std::string who = j.at("who").get<std::string>();
+    m.who_given = true;
+    if (who == "anyone") m.who = MakingPolicy::Anyone;
+    else if (who == "token") m.who = MakingPolicy::Token;
+    else if (who == "off") m.who = MakingPolicy::Off;
+    else throw Error("config: making.who '" + who + "' is not anyone, token or off");
+  }
+  m.creator_token = j.value("creator_token", "");
+  m.max_rooms = j.value("max_rooms", m.max_rooms);
+  m.max_rooms_per_address = j.value("max_rooms_per_address", m.max_rooms_per_address);
+  m.max_scenes = j.value("max_scenes", m.max_scenes);
+  m.max_scenes_per_address = j.value("max_scenes_per_address", m.max_scenes_per_address);
+  m.room_idle_seconds = j.value("room_idle_seconds", m.room_idle_seconds);
+  m.scene_idle_seconds = j.value("scene_idle_seconds", m.scene_idle_seconds);
+  m.max_upload_bytes = j.value("max_upload_bytes", m.max_upload_bytes);
+  m.max_triangles = j.value("max_triangles", m.max_triangles);
+  m.max_texture_pixels = j.value("max_texture_pixels", m.max_texture_pixels);
+  m.import_seconds = j.value("import_seconds", m.import_seconds);
+  m.import_memory_bytes = j.value("import_memory_bytes", m.import_memory_bytes);
+  m.uploads_per_minute_per_address = j.value("uploads_per_minute_per_address", m.uploads_per_minute_per_address);
+  m.max_name_length = j.value("max_name_length", m.max_name_length);
+  return m;
+}
+
+void check_making(const MakingOptions& m) {
+  if (m.who == MakingPolicy::Token && m.creator_token.empty()) throw Error("config: making.who is \"token\" but making.creator_token is empty");
+  if (!(m.room_idle_seconds >= 0 && m.room_idle_seconds <= 30 * 86400.0)) throw Error("config: making.room_idle_seconds must be 0..2592000");
+  if (!(m.scene_idle_seconds >= 1 && m.scene_idle_seconds <= 365 * 86400.0)) throw Error("config: making.scene_idle_seconds must be 1..31536000");
+  if (m.max_upload_bytes < 1024 || m.max_upload_bytes > (1ull << 30)) throw Error("config: making.max_upload_bytes must be 1 KiB..1 GiB");
+  if (!(m.import_seconds >= 1 && m.import_seconds <= 3600)) throw Error("config: making.import_seconds must be 1..3600");
+  if (m.import_memory_bytes < (64ull << 20)) throw Error("config: making.import_memory_bytes must be at least 64 MiB");
+  if (m.max_triangles < 1 || m.max_texture_pixels < 1) throw Error("config: making.max_triangles and max_texture_pixels must be at least 1");
+  if (!(m.uploads_per_minute_per_address > 0)) throw Error("config: making.uploads_per_minute_per_address must be above 0");
+  if (m.max_name_length < 8 || m.max_name_length > protocol::kMaxName) throw Error("config: making.max_name_length must be 8..64");
+}
+
 }  // namespace
 
 void parse_listen(const std::string& text, ServerConfig& config) {
@@ -117,6 +156,7 @@ ServerConfig ServerConfig::parse(const std::string& text, const std::string& ori
     if (j.contains("allowed_origins")) c.allowed_origins = j.at("allowed_origins").get<std::vector<std::string>>();
     if (j.contains("broker")) c.broker = j.at("broker").get<std::string>();
     if (j.contains("call_loudest")) c.call.loudest = j.at("call_loudest").get<int>();
+    if (j.contains("making")) c.making = making_from_json(j.at("making"));
     if (j.contains("max_connections")) c.max_connections = j.at("max_connections").get<size_t>();
     if (j.contains("max_connections_per_address")) c.max_connections_per_address = j.at("max_connections_per_address").get<size_t>();
     if (j.contains("join_failures_allowed")) c.join_failures_allowed = j.at("join_failures_allowed").get<int>();
@@ -159,6 +199,7 @@ ServerConfig ServerConfig::parse(const std::string& text, const std::string& ori
   if (c.call.loudest < 1 || c.call.loudest > int(protocol::kMaxMembers)) throw Error("config: call_loudest must be 1..64");
   if (c.join_failures_allowed < 0) throw Error("config: join_failures_allowed must be 0 or more");
   if (c.queue_bytes < 2 * protocol::kMaxPayload) throw Error("config: queue_bytes must be at least two frames (262144)");
+  check_making(c.making);
   return c;
 }
 

@@ -11,7 +11,8 @@
 
 #include "protocol/messages.hpp"
 #include "common/mesh_import.hpp"
-#include "server/call/call.hpp"
+#include "server/call/call_options.hpp"
+#include "server/making/making_options.hpp"
 #include "server/products/product_store.hpp"
 
 namespace inkwire::server {
@@ -84,6 +85,7 @@ struct ServerConfig {
   // `name`, unique per instance). Empty: this instance runs alone.
   std::string broker;
   CallOptions call;  // "call_loudest": voices each call member hears at once (K, default 3)
+  MakingOptions making;  // "making": rooms and scenes people make themselves
 
   // The embedded default's demo sessions; models that are not installed are left out.
   static ServerConfig embedded_default();

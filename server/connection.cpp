@@ -6,6 +6,8 @@
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "protocol/framing.hpp"
+#include "protocol/versions.hpp"
+#include "server/making/session_maker.hpp"
 #include "server/relay/relay.hpp"
 #include "server/server.hpp"
 #include "server/session.hpp"
@@ -42,8 +44,10 @@ void Connection::send(const Message& message) {
 
 void Connection::send_frame(std::shared_ptr<const Bytes> frame, MessageType type) {
   if (closing_) return;
-  // A message type newer than the peer would end its connection: its callers send it what it reads instead.
-  if (type == MessageType::MemberLayers && version_ < 8) return;
+  // An older peer is sent its version's frame; a type newer than it would end its connection, so
+  // it is not sent (callers such as Call::send_face send what it reads instead).
+  frame = frame_for(version_, std::move(frame), type);
+  if (!frame) return;
   if (type == MessageType::VoiceFrame && voice_stream_) {
     if (voice_stream_->open()) {
       voice_stream_->send(std::move(frame));
@@ -66,7 +70,9 @@ void Connection::close_with(ErrorCode code, const std::string& reason) {
   if (closing_) return;
   // The error goes out even past the byte limit: it is the last thing this peer gets.
   queue_.take_all();
-  queue_.push(std::make_shared<const Bytes>(encode(ErrorMessage{.code = code, .reason = reason.substr(0, kMaxReason)})), MessageType::Error);
+  queue_.push(frame_for(version_, std::make_shared<const Bytes>(encode(ErrorMessage{.code = code, .reason = reason.substr(0, kMaxReason)})),
+                       MessageType::Error),
+              MessageType::Error);
   closing_ = true;
   closed_for_ = {code, reason};
   wake_.cancel();
@@ -112,8 +118,10 @@ asio::awaitable<void> Connection::watchdog() {
       ++server_.counters().idle_closed;
       log_warn("idle-timeout", {{"client", id_}, {"name", client_name_}, {"seconds", config.idle_timeout_seconds}});
       close_with(ErrorCode::Refused, "nothing heard for " + std::to_string(int(config.idle_timeout_seconds)) + " seconds: closed as gone");
-    } else if (now - last_heard_ > beat && now - last_ping_ > beat) {
-      // Only a quiet peer is pinged: one that talks renews its deadline by itself.
+    } else if ((now - last_heard_ > beat || now - last_written_ > beat) && now - last_ping_ > beat) {
+      // A quiet peer is pinged, and so is one that talks but is sent nothing (a member steering
+      // a session nobody else changes): a client takes a server it has not heard from for a
+      // while as gone (SessionClient::kServerSilence), whatever it sends itself.
       last_ping_ = now;
       send(Ping{.nonce = ++pings_sent_});
     }
@@ -128,12 +136,13 @@ asio::awaitable<void> Connection::read_loop() {
       if (const std::error_code ec = co_await transport_->read_frame(frame)) break;
       last_heard_ = Clock::now();
       const FrameHeader h = parse_header(frame.data());
-      Message message = decode(h.type, frame.data() + kHeaderBytes, frame.size() - kHeaderBytes);
+      Message message = decode_from(version_, h.type, frame.data() + kHeaderBytes, frame.size() - kHeaderBytes);
       ++server_.counters().messages_in;
       // An address that guessed tokens waits before each join is looked at (this connection
       // reads nothing meanwhile; the others are served as usual).
       if (h.type == MessageType::Join)
         if (const auto delay = server_.admission().join_delay(address_); delay.count() > 0) {
+          log_info("join-slowed", {{"client", id_}, {"peer", peer_}, {"delay_ms", delay.count()}});
           asio::steady_timer pause(transport_->executor(), delay);
           co_await pause.async_wait(no_throw);
           if (closing_) break;
@@ -164,7 +173,7 @@ asio::awaitable<void> Connection::write_loop() {
     }
     // Everything queued goes out in one gathered write.
     const std::deque<Outgoing> batch = queue_.take_all();
-    writing_since_ = Clock::now();
+    writing_since_ = last_written_ = Clock::now();
     const std::error_code failed = co_await transport_->write_frames(batch);
     writing_since_.reset();
     if (failed) break;
@@ -208,6 +217,7 @@ void Connection::handle(Message& message) {
     case MessageType::VoiceFrame:
       publish(message);
       break;
+    case MessageType::RoomControl: control_room(std::get<RoomControl>(message)); break;
     case MessageType::StyleChange:
     case MessageType::CameraPose:
     case MessageType::ObjectPose:
@@ -220,12 +230,27 @@ void Connection::handle(Message& message) {
 }
 
 void Connection::join(const Join& join) {
-  const auto session = server_.find_session(join.session);
+  std::shared_ptr<Session> session = server_.find_session(join.session);
+  std::string host_key;
+  if (!session && join.open_room) {
+    // A call room of that name, opened for this member, who becomes its host (SPEC N6-N7).
+    SessionMaker::Made made = server_.maker().open_room(join.session, join.token, address_, SessionMaker::Clock::now());
+    if (!made.session) {
+      log_info("room-refused", {{"client", id_}, {"peer", peer_}, {"session", join.session}, {"reason", made.refusal}});
+      send(ErrorMessage{.code = ErrorCode::Refused, .reason = made.refusal});
+      return;
+    }
+    session = std::move(made.session);
+    host_key = std::move(made.key);
+  }
   if (!session) {
     send(ErrorMessage{.code = ErrorCode::NoSession, .reason = "no session named '" + join.session + "'"});
     return;
   }
-  const std::optional<Role> role = session->role_of(join.token);
+  std::optional<Role> role = host_key.empty() ? session->role_of(join.token) : std::optional<Role>(Role::Editor);
+  // Asking to open a room that is open already joins it: the token given (a creator token, or a
+  // host key of a room of that name that is gone) is no guess at this one's key.
+  if (!role && join.open_room) role = session->role_of("");
   if (!role) {
     server_.admission().join_failed(address_);
     log_warn("bad-token", {{"client", id_}, {"peer", peer_}, {"session", join.session}});
@@ -236,15 +261,22 @@ void Connection::join(const Join& join) {
     send(ErrorMessage{.code = ErrorCode::NoAsset, .reason = "session '" + join.session + "' cannot be shown: " + session->unavailable()});
     return;
   }
-  if (!join.token.empty()) server_.admission().join_succeeded(address_);
+  if (Call* call = session->call(); call && call->locked() && *role != Role::Editor) {
+    const std::string host = call->host_name();
+    send(ErrorMessage{.code = ErrorCode::Locked,
+                      .reason = "room " + join.session + " is locked: ask " + (host.empty() ? std::string("its host") : host + " (its host)") + " to open it"});
+    return;
+  }
+  if (!join.token.empty() && host_key.empty()) server_.admission().join_succeeded(address_);
   leave_session();
   session_ = session;
   role_ = *role;
   session_->join(shared_from_this());
-  if (Call* call = session_->call()) call->join(shared_from_this(), client_name_);
+  if (Call* call = session_->call()) call->join(shared_from_this(), client_name_, role_ == Role::Editor);
   log_info("join", {{"client", id_}, {"name", client_name_}, {"session", join.session}, {"members", session_->members()},
                     {"role", role_ == Role::Editor ? "editor" : "visitor"}});
   send(session_->state());
+  if (!host_key.empty()) send(HostKey{.key = host_key});
   // What this member will be refused, said now: its controls for those can be off from the start.
   Permissions permissions;
   for (const MessageType change : {MessageType::StyleChange, MessageType::CameraPose, MessageType::ObjectPose, MessageType::ExpressionCode})
@@ -305,6 +337,26 @@ void Connection::change(const Message& change) {
     return;
   }
   server_.relay().publish(*session_, change, id_);
+}
+
+// The host's controls of its room (SPEC N7): from anyone else, refused with the reason.
+void Connection::control_room(const RoomControl& control) {
+  Call* call = session_ ? session_->call() : nullptr;
+  if (!call) {
+    send(ErrorMessage{.code = session_ ? ErrorCode::NotAllowed : ErrorCode::NotJoined, .reason = "room-control outside a call"});
+    return;
+  }
+  if (role_ != Role::Editor) {
+    ++server_.counters().changes_refused;
+    send(ErrorMessage{.code = ErrorCode::NotAllowed, .reason = "only the room's host may lock it, open it or remove a member"});
+    return;
+  }
+  if (control.action == RoomAction::Remove) {
+    if (!call->remove(control.member, "the host removed you from room " + session_->name()))
+      send(ErrorMessage{.code = ErrorCode::NotAllowed, .reason = "no member " + std::to_string(control.member) + " in this call"});
+    return;
+  }
+  call->set_locked(control.action == RoomAction::Lock);
 }
 
 void Connection::send_tween_cells() {

@@ -1,5 +1,5 @@
 #pragma once
-// One client connection (STYLE 4, 16): a reader coroutine that decodes and handles messages, a
+// One client connection (asio's pattern): a reader coroutine that decodes and handles messages, a
 // writer coroutine that drains the bounded send queue, and one watchdog for every deadline: the
 // hello, then silence (renewed by anything the peer sends; the server pings a quiet peer) and a
 // write the peer does not take (SPEC D7). Any error ends only this connection, after telling the peer why. Frames come
@@ -53,6 +53,7 @@ class Connection : public std::enable_shared_from_this<Connection> {
   asio::awaitable<void> watchdog();
   void handle(protocol::Message& message);
   void join(const protocol::Join& join);
+  void control_room(const protocol::RoomControl& control);
   void change(const protocol::Message& change);
   void publish(protocol::Message& message);
   void leave_session();
@@ -76,7 +77,7 @@ class Connection : public std::enable_shared_from_this<Connection> {
   bool greeted_ = false, closing_ = false, shut_ = false;
   uint16_t version_ = protocol::kVersion;
   using Clock = std::chrono::steady_clock;
-  Clock::time_point last_heard_ = Clock::now(), last_ping_ = Clock::now();
+  Clock::time_point last_heard_ = Clock::now(), last_ping_ = Clock::now(), last_written_ = Clock::now();
   std::optional<Clock::time_point> writing_since_;  // set while a write waits for the peer
   uint64_t pings_sent_ = 0;
   std::string voice_ticket_;                   // sent in voice-route, not yet used

@@ -9,6 +9,7 @@
 #include "common/log.hpp"
 #include "server/call/call_analyst.hpp"
 #include "server/connection.hpp"
+#include "server/making/session_maker.hpp"
 #include "server/face/face_feed.hpp"
 #include "server/relay/relay.hpp"
 #include "server/transport.hpp"
@@ -27,15 +28,16 @@ asio::ip::tcp::endpoint endpoint_of(const ServerConfig& config) {
   return {address, config.port};
 }
 
+bool loopback(const std::string& host) {
+  std::error_code ec;
+  const auto ip = asio::ip::make_address(host == "localhost" ? "127.0.0.1" : host, ec);
+  return !ec && ip.is_loopback();
+}
+
 // Plain TCP is for this machine (SPEC D3): a listener others can reach carries TLS, unless the
 // config says a TLS proxy in front does it.
 void refuse_plain_off_loopback(const ServerConfig& c) {
   if (c.tls || c.plain_off_loopback) return;
-  const auto loopback = [](const std::string& host) {
-    std::error_code ec;
-    const auto ip = asio::ip::make_address(host == "localhost" ? "127.0.0.1" : host, ec);
-    return !ec && ip.is_loopback();
-  };
   for (const auto& [host, what] : {std::pair{c.host, "listen"}, std::pair{c.http ? c.http_host : std::string("127.0.0.1"), "http"}})
     if (!loopback(host))
       throw Error(std::string(what) + " on " + host + " is reachable from other machines: give \"tls\" (certificate and key) in the config, "
@@ -57,9 +59,10 @@ Server::Server(asio::io_context& io, ServerConfig config) : io_(io), config_(std
   if (!ec) acceptor_.listen(asio::socket_base::max_listen_connections, ec);
   if (ec) throw Error("cannot listen on " + config_.host + ":" + std::to_string(config_.port) + ": " + ec.message());
   if (config_.http) http_ = std::make_unique<HttpServer>(io, *this);
-  relay_ = make_relay(*this, config_);  // a broker this build cannot use is refused before the data folder is made
+  relay_ = make_relay(*this, config_.broker);  // a broker this build cannot use is refused before the data folder is made
   store_.emplace(config_.data_dir);
   registry_.emplace(*store_, config_);
+  maker_.emplace(config_.making, !loopback(config_.host) || (config_.http && !loopback(config_.http_host)), *registry_, config_.limit_loopback);
   create_sessions();
 }
 
@@ -78,8 +81,15 @@ void Server::create_sessions() {
       }, result);
     });
   });
-  registry_->on_added = [this](Session& session) { start_call(session); };
-  registry_->on_removed = [](Session& session) { session.close_members(protocol::ErrorCode::NoSession, "product " + session.name() + " was removed"); };
+  registry_->on_added = [this](Session& session) {
+    start_call(session);
+    relay_->session_added(session);
+  };
+  registry_->on_removed = [this](Session& session) {
+    const char* what = !session.state().product.directions.empty() ? "product " : session.call() ? "room " : "scene ";
+    session.close_members(protocol::ErrorCode::NoSession, what + session.name() + " was removed");
+    relay_->session_removed(session);
+  };
   for (auto& [name, session] : registry_->all()) start_call(*session);
 }
 
@@ -166,6 +176,7 @@ asio::awaitable<void> Server::persist_loop() {
     for (auto& [name, session] : registry_->all())
       if (session->dirty) registry_->persist(*session);
     registry_->adopt_stored_elsewhere();
+    maker_->sweep(SessionMaker::Clock::now());
     // After a burst of connections (an attack, a crowd leaving) glibc keeps the freed memory in
     // its arenas: hand it back, so the server's size follows what it serves (SPEC D6).
     if (connections_.size() < peak_connections_ / 2) {

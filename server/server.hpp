@@ -15,6 +15,8 @@
 #include "server/admission.hpp"
 #include "server/asset_store.hpp"
 #include "server/config.hpp"
+#include "server/making/session_maker.hpp"
+#include "server/relay/session_fanout.hpp"
 #include "server/session.hpp"
 #include "server/session_registry.hpp"
 
@@ -37,7 +39,7 @@ struct ServerCounters {
   Call::Counters call;               // calls' crops analysed and their time, voice relayed, drops by reason
 };
 
-class Server {
+class Server final : public SessionFanout {
  public:
   // Opens the store (creating the demo sessions on first start) and binds the listening socket.
   // Throws inkwire::Error if either fails.
@@ -52,8 +54,9 @@ class Server {
   void stop();
 
   // For connections.
-  std::shared_ptr<Session> find_session(const std::string& name) const;
-  AssetStore& store() { return *store_; }
+  std::shared_ptr<Session> find_session(const std::string& name) const override;
+  AssetStore& store() override { return *store_; }
+  const std::string& instance_name() const override { return config_.name; }
   const ServerConfig& config() const { return config_; }
   void forget(const Connection* connection);
   // A client arrived over another transport (a WebSocket upgraded on the HTTP listener).
@@ -64,23 +67,26 @@ class Server {
   std::shared_ptr<Connection> voice_ticket_holder(const std::string& ticket) const;
   // Who is taken on: places within the connection caps, joins slowed after wrong tokens.
   Admission& admission() { return admission_; }
+  // Sessions people make themselves: rooms, uploaded scenes (SPEC N6-N10).
+  SessionMaker& maker() { return *maker_; }
   size_t connection_count() const { return connections_.size(); }
   // Open connections by transport ("tcp", "tls", "websocket") and whether they are in a session.
   std::map<std::pair<std::string, bool>, size_t> connections_by_kind() const;
   ServerCounters& counters() { return counters_; }
-  const std::map<std::string, std::shared_ptr<Session>>& sessions() const { return registry_->all(); }
+  const std::map<std::string, std::shared_ptr<Session>>& sessions() const override { return registry_->all(); }
   void persist(Session& session) { registry_->persist(session); }
   bool stopping() const { return stopping_; }
-  asio::io_context& io() { return io_; }
+  asio::io_context& io() override { return io_; }
   std::shared_ptr<asio::ssl::context> tls() const { return tls_; }  // null: plain TCP
 
   // Changes to sessions go through the relay (one instance, or several through a broker); the
   // relay hands each back to deliver() in the order every instance agrees on.
   Relay& relay() { return *relay_; }
-  void deliver(Session& session, const protocol::Message& change, uint64_t sender, std::optional<uint32_t> revision = {});
+  void deliver(Session& session, const protocol::Message& change, uint64_t sender, std::optional<uint32_t> revision = {}) override;
   // A session defined elsewhere (another instance): stored in the catalogue and served. Null if
   // a session of that name exists or it cannot be stored.
-  std::shared_ptr<Session> add_session(StoredSession stored) { return registry_->add(std::move(stored)); }
+  std::shared_ptr<Session> add_session(StoredSession stored) override { return registry_->add(std::move(stored)); }
+  bool remove_session(const std::string& name) override { return registry_->remove(name); }
 
  private:
   void create_sessions();
@@ -99,6 +105,7 @@ class Server {
   // tell it of members leaving until the last of them is gone.
   std::unique_ptr<CallAnalyst> call_analyst_;
   std::optional<SessionRegistry> registry_;  // made with the store
+  std::optional<SessionMaker> maker_;
   std::map<const Connection*, std::shared_ptr<Connection>> connections_;
   Admission admission_{config_};
   std::vector<std::unique_ptr<FaceFeed>> face_feeds_;

@@ -24,6 +24,20 @@ void Session::set_face_assets(const protocol::AssetAnnounce& photo, const protoc
   dirty = true;
 }
 
+void Session::replace_model(const protocol::AssetAnnounce& model) {
+  auto& assets = stored_.state.assets;
+  std::erase_if(assets, [](const protocol::AssetAnnounce& a) { return a.kind == protocol::AssetKind::Mesh || a.kind == protocol::AssetKind::Image; });
+  assets.insert(assets.begin(), model);
+  ++stored_.state.revision;
+  dirty = true;
+  // Every member draws the new model from the new snapshot: its style and camera are the session's as they were.
+  const auto frame = std::make_shared<const protocol::Bytes>(protocol::encode(stored_.state));
+  for (const auto& weak : members_)
+    if (const auto member = weak.lock()) member->send_frame(frame, protocol::MessageType::Snapshot);
+}
+
+size_t Session::members_everywhere() const { return members_.size() + (call_ ? call_->remote_members() : 0); }
+
 void Session::set_product(std::vector<protocol::TweenData> cells) {
   tween_frames_.clear();
   for (const protocol::TweenData& cell : cells) tween_frames_.push_back(std::make_shared<const protocol::Bytes>(protocol::encode(cell)));

@@ -34,6 +34,8 @@ class Session {
   // Ends every member's connection with `code` and `reason` (the session is no longer served).
   void close_members(protocol::ErrorCode code, const std::string& reason);
   size_t members() const { return members_.size(); }
+  // ... and, in a call, its members on other instances (through the broker).
+  size_t members_everywhere() const;
 
   // Applies a state message (style, camera, object, expression) from the member with
   // connection id `sender` (0: none), bumps the revision and forwards it, encoded once, to every
@@ -46,6 +48,10 @@ class Session {
   // A conference speaker's neutral photo and landmarks (SPEC F5) replace the session's image
   // and landmark assets. Called before clients are served.
   void set_face_assets(const protocol::AssetAnnounce& photo, const protocol::AssetAnnounce& landmarks);
+
+  // A scene's model (a mesh asset, a GLB with its textures inside) replaces the one it had (and
+  // any separate texture image); every member is sent the new snapshot.
+  void replace_model(const protocol::AssetAnnounce& model);
 
   // A turntable's tween data, encoded once, one message per cell (a member gets them after its
   // first photo), and its files as a static host serves them (the HTTP listener's /products/),
@@ -61,6 +67,9 @@ class Session {
   void start_call(CallOptions options, CallAnalyst& analyst, Call::Counters& counters, Relay& relay, const std::string& origin) {
     call_ = std::make_unique<Call>(name(), options, analyst, counters, relay, origin);
   }
+
+  // Kept however long it goes unused (the operator's keep-scene).
+  void keep() { stored_.kept = true; }
 
   // Set by apply(); cleared by whoever persists the state.
   bool dirty = false;

@@ -14,21 +14,34 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A mesh travels as one file: a model of several files (glTF with .bin and images, OBJ with
-// .mtl), or one whose up axis clients would not find by themselves, is made into one Y-up GLB
-// with everything inside, so every client gets it whole and upright.
 protocol::AssetAnnounce add_session_asset(AssetStore& store, const SessionAsset& asset, UpAxis up) {
-  if (asset.kind == protocol::AssetKind::Mesh)
-    if (const std::optional<SelfContainedModel> whole = self_contained_model(asset.path, up)) {
-      std::vector<std::string> gathered;
-      for (const fs::path& p : whole->gathered) gathered.push_back(p.filename().string());
-      log_info("model-made-whole", {{"path", asset.path}, {"as", whole->name}, {"bytes", whole->bytes.size()}, {"files", gathered}});
-      return store.add_bytes(whole->bytes, asset.kind, whole->name);
-    }
-  return store.add_file(asset.path, asset.kind);
+  return asset.kind == protocol::AssetKind::Mesh ? store_model(store, asset.path, up) : store.add_file(asset.path, asset.kind);
 }
 
 }  // namespace
+
+// A mesh travels as one file: a model of several files (glTF with .bin and images, OBJ with
+// .mtl), or one whose up axis clients would not find by themselves, is made into one Y-up GLB
+// with everything inside, so every client gets it whole and upright.
+protocol::AssetAnnounce store_model(AssetStore& store, const fs::path& file, UpAxis up) {
+  if (const std::optional<SelfContainedModel> whole = self_contained_model(file, up)) {
+    std::vector<std::string> gathered;
+    for (const fs::path& p : whole->gathered) gathered.push_back(p.filename().string());
+    log_info("model-made-whole", {{"path", file}, {"as", whole->name}, {"bytes", whole->bytes.size()}, {"files", gathered}});
+    return store.add_bytes(whole->bytes, protocol::AssetKind::Mesh, whole->name);
+  }
+  return store.add_file(file, protocol::AssetKind::Mesh);
+}
+
+protocol::Snapshot fresh_session_state(const std::string& name, protocol::SessionKind kind, const std::string& style, const std::vector<std::string>& settings) {
+  protocol::Snapshot state;
+  state.session = name;
+  state.kind = kind;
+  state.style = {.renderer = style, .settings = settings};
+  const Camera camera = scene_orbit_camera(30, 20, 1.4f);
+  state.camera = {.sequence = 0, .position = camera.position, .target = camera.target, .up = camera.up, .fov_y_degrees = camera.fov_y_degrees};
+  return state;
+}
 
 void SessionRegistry::load() {
   // Sessions in the catalogue come back as they were; configured ones it lacks are created.
@@ -57,11 +70,11 @@ void SessionRegistry::load() {
         continue;
       }
     }
-    stored.state.session = c.name;
-    stored.state.kind = c.kind;
-    stored.state.style = {.renderer = c.style, .settings = c.settings};
-    const Camera camera = scene_orbit_camera(30, 20, 1.4f);
-    stored.state.camera = {.sequence = 0, .position = camera.position, .target = camera.target, .up = camera.up, .fov_y_degrees = camera.fov_y_degrees};
+    const protocol::Snapshot fresh = fresh_session_state(c.name, c.kind, c.style, c.settings);
+    stored.state.session = fresh.session;
+    stored.state.kind = fresh.kind;
+    stored.state.style = fresh.style;
+    stored.state.camera = fresh.camera;
     for (const SessionAsset& a : c.assets) stored.state.assets.push_back(add_session_asset(store_, a, c.up));
     store_.save_session(stored);
     log_info("session-created", {{"session", c.name}, {"kind", protocol::to_string(c.kind)}, {"assets", stored.state.assets.size()}});
@@ -99,8 +112,8 @@ std::shared_ptr<Session> SessionRegistry::serve(StoredSession stored) {
   const std::string name = stored.state.session;
   auto session = std::make_shared<Session>(std::move(stored));
   ready_product(*session);
-  if (on_added) on_added(*session);
   sessions_[name] = session;
+  if (on_added) on_added(*session);
   log_info("session-added", {{"session", name}, {"kind", protocol::to_string(session->state().kind)}, {"assets", session->state().assets.size()}});
   return session;
 }
@@ -121,18 +134,39 @@ void SessionRegistry::adopt_stored_elsewhere() {
   std::set<std::string> stored_names;
   for (StoredSession& stored : store_.sessions()) {
     stored_names.insert(stored.state.session);
-    if (!sessions_.count(stored.state.session)) serve(std::move(stored));  // already in the catalogue: not written again
+    const auto served = sessions_.find(stored.state.session);
+    if (served == sessions_.end()) serve(std::move(stored));  // already in the catalogue: not written again
+    else if (stored.maker == MadeBy::Command && stored.state.assets != served->second->state().assets && !stored.state.assets.empty())
+      served->second->replace_model(stored.state.assets.front());  // add-scene gave a served scene a new model
+    else if (stored.kept && !served->second->stored().kept)
+      served->second->keep();  // keep-scene: an uploaded scene the operator keeps
   }
   for (auto it = sessions_.begin(); it != sessions_.end();) {
-    if (it->second->state().kind != protocol::SessionKind::Turntable || stored_names.count(it->first)) {
+    const bool removable = it->second->state().kind == protocol::SessionKind::Turntable || it->second->stored().maker != MadeBy::Operator;
+    if (!removable || stored_names.count(it->first)) {
       ++it;
       continue;
     }
     const std::shared_ptr<Session> removed = it->second;
     it = sessions_.erase(it);
-    log_info("product-removed", {{"session", removed->name()}, {"members", removed->members()}});
+    const bool product = removed->state().kind == protocol::SessionKind::Turntable;
+    log_info(product ? "product-removed" : "session-removed", {{"session", removed->name()}, {"members", removed->members()}});
     if (on_removed) on_removed(*removed);
   }
+}
+
+bool SessionRegistry::remove(const std::string& name) {
+  const auto it = sessions_.find(name);
+  if (it == sessions_.end()) return false;
+  const std::shared_ptr<Session> removed = it->second;
+  sessions_.erase(it);
+  try {
+    store_.remove_session(name);
+  } catch (const Error& e) {
+    log(LogLevel::Error, "session-not-removed", {{"session", name}, {"reason", e.what()}});
+  }
+  if (on_removed) on_removed(*removed);
+  return true;
 }
 
 void SessionRegistry::persist(Session& session) {

@@ -15,6 +15,14 @@
 
 namespace inkwire::server {
 
+// A new session's state: its name, kind and style, and the camera every scene starts from.
+protocol::Snapshot fresh_session_state(const std::string& name, protocol::SessionKind kind, const std::string& style,
+                                       const std::vector<std::string>& settings = {});
+// A model file stored as a scene's mesh asset: made into one Y-up GLB with everything inside when
+// it is several files or says another up axis (common/model_bundle.hpp), else as it is. Throws
+// inkwire::Error with the reason for a model no client could draw, storing nothing.
+protocol::AssetAnnounce store_model(AssetStore& store, const std::filesystem::path& file, UpAxis up);
+
 class SessionRegistry {
  public:
   SessionRegistry(AssetStore& store, const ServerConfig& config) : store_(store), config_(config) {}
@@ -29,6 +37,9 @@ class SessionRegistry {
   // server runs) are added, products taken out (remove-product) are dropped.
   void adopt_stored_elsewhere();
   void persist(Session& session);
+  // Session `name` served no more and taken out of the catalogue (a room gone, a scene expired
+  // or removed), announced to on_removed; false when there is none.
+  bool remove(const std::string& name);
   // Called for each session added after load() (the server starts a conference's call).
   std::function<void(Session&)> on_added;
   // Called for each session dropped while the server runs, after it left the registry (the

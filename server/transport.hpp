@@ -1,5 +1,5 @@
 #pragma once
-// How a connection's protocol frames travel (ARCHITECTURE "Transports"): as they are over TCP,
+// How a connection's protocol frames travel: as they are over TCP,
 // or one frame per binary WebSocket message (server/web/). The connection's logic, its
 // sessions and its send queue never know which.
 #include <chrono>

@@ -1,4 +1,4 @@
-// inkwire-client: joins a session and draws it locally, in a window or headless (CONTRACTS.md).
+// inkwire-client: joins a session and draws it locally, in a window or headless (docs/cli.md).
 #include <csignal>
 #include <cmath>
 #include <cstdio>
@@ -55,6 +55,9 @@ int main(int argc, char** argv) {
   const std::map<std::string, PublisherOptions::Crops> crops{{"vp8", PublisherOptions::Crops::Vp8}, {"jpeg", PublisherOptions::Crops::Jpeg}};
   app.add_option("--crops", call.crops, "calls: send the face as vp8 video (default) or as separate jpeg crops (about 8 times the bits)")
       ->transform(CLI::CheckedTransformer(crops, CLI::ignore_case));
+  bool open_room = false;
+  app.add_flag("--new", open_room, "calls: open a call room of the --session name when no session has it (you are then its host); without it an "
+                                   "unknown name is refused, so a typo makes no empty room");
   bool rejoin = true;
   app.add_flag("--rejoin,!--no-rejoin", rejoin, "join again under the same name when the connection drops, every 2 s for a minute (default: on)");
   app.add_option("--audio-out", o.audio_out, "calls, headless: write the sound heard to this WAV file (an .mp4 --out gets it too)");
@@ -72,7 +75,7 @@ int main(int argc, char** argv) {
     if (!ca.empty() && !tls) throw Error("--ca needs --tls");
     SessionClient client(connect, name, tls ? client_tls_context(ca) : nullptr);
     client.set_rejoin(rejoin);
-    const protocol::Snapshot joined = client.join(session, token);
+    const protocol::Snapshot joined = client.join(session, token, open_room);
     if (!style.empty()) client.send(protocol::StyleChange{.renderer = style, .settings = settings});
     if (!view.empty() && !joined.product.directions.empty()) {
       // A product's view is the visitor's own (SPEC T13).

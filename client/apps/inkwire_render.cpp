@@ -1,4 +1,4 @@
-// inkwire-render: one mesh, one style, to images or video (CONTRACTS.md).
+// inkwire-render: one mesh, one style, to images or video (docs/cli.md).
 #include <algorithm>
 #include <cstdio>
 #include <optional>

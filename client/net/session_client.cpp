@@ -127,7 +127,7 @@ void SessionClient::rejoined() {
   }
   // Hello and join ahead of anything sent meanwhile (dropped while not connected).
   outbox_.clear();
-  for (const Message& m : {Message(Hello{.client_name = client_name_}), Message(Join{.session = session_, .token = token_})}) {
+  for (const Message& m : {Message(Hello{.client_name = client_name_}), Message(Join{.session = session_, .token = token_, .open_room = open_room_})}) {
     outbox_.push_back(encode(m));
     bytes_sent_ += outbox_.back().size();
   }
@@ -214,7 +214,14 @@ void SessionClient::on_message(Message message) {
     refusal_ = refused->reason;
     ++refusals_;
     std::fprintf(stderr, "inkwire-client: change refused: %s\n", refused->reason.c_str());
+  } else if (const auto* key = std::get_if<HostKey>(&message)) {
+    // This client opened the room: it joins again with the key, so it is its host again.
+    token_ = key->key;
+    host_key_ = key->key;
+    std::fprintf(stderr, "inkwire-client: you opened room '%s' and are its host\n", session_.c_str());
   } else if (const auto* error = std::get_if<ErrorMessage>(&message)) {
+    // A locked room or the host's removal: not joined again by itself.
+    if (error->code == ErrorCode::Locked || error->code == ErrorCode::Removed) rejoin_ = false;
     last_error_ = error->reason;
     std::fprintf(stderr, "inkwire-client: server says: %s\n", error->reason.c_str());
     replies_.push_back(std::move(message));
@@ -276,12 +283,12 @@ Message SessionClient::wait_for(std::function<bool(const Message&)> wanted, std:
   }
 }
 
-Snapshot SessionClient::join(const std::string& session, const std::string& token) {
+Snapshot SessionClient::join(const std::string& session, const std::string& token, bool open_room) {
   {
     std::lock_guard lock(mutex_);
-    session_ = session, token_ = token;  // what a rejoin joins
+    session_ = session, token_ = token, open_room_ = open_room;  // what a rejoin joins
   }
-  send(Join{.session = session, .token = token});
+  send(Join{.session = session, .token = token, .open_room = open_room});
   const Message reply = wait_for([](const Message& m) { return std::holds_alternative<Snapshot>(m); }, kReplyTimeout);
   if (const auto* error = std::get_if<ErrorMessage>(&reply)) throw Error("cannot join '" + session + "': " + error->reason);
   return std::get<Snapshot>(reply);

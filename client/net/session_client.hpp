@@ -39,7 +39,13 @@ class SessionClient {
 
   // Joins a session and waits for its snapshot; throws inkwire::Error (wrong token, no such
   // session, timeout).
-  protocol::Snapshot join(const std::string& session, const std::string& token);
+  // `open_room`: open a call room of that name when no session has it (this client is then its
+  // host, host_key() its key).
+  protocol::Snapshot join(const std::string& session, const std::string& token, bool open_room = false);
+  std::string host_key() const {
+    std::lock_guard lock(mutex_);
+    return host_key_;
+  }
   // Sends a message; state messages are also applied to this client's own copy of the state.
   void send(const protocol::Message& message);
 
@@ -85,7 +91,7 @@ class SessionClient {
   // found this member's face, and the voice packets received since the last take (at most a
   // few seconds' worth are kept: a reader that does not take them loses the oldest).
   protocol::Roster roster() const;
-  // Faces come as member-layers (a member-face from a server of version 7 is read as layers).
+  // Faces come as member-layers (a member-face from a server of version 7 or 8 is read as layers).
   std::map<uint16_t, protocol::MemberLayers> member_faces() const;
   std::optional<protocol::FaceRegion> face_region() const;
   // True once after the server asked for a key frame of this member's face video.
@@ -125,6 +131,8 @@ class SessionClient {
   asio::steady_timer rejoin_timer_{io_};
   asio::ip::tcp::resolver::results_type endpoints_;
   std::string host_, client_name_, session_, token_;  // what a rejoin says again
+  bool open_room_ = false;
+  std::string host_key_;
   std::chrono::steady_clock::time_point rejoin_until_{};  // I/O thread only
   std::atomic<bool> rejoin_{false}, rejoining_{false}, stopping_{false};
   std::atomic<uint64_t> connections_{1};

@@ -18,7 +18,7 @@ nlohmann::json frame_log_line(SessionSync& sync, const SessionClient& client, lo
     for (const auto& r : p.refused) line["may_not"].push_back(protocol::name_of(r.change));
   }
   if (client.refusals() > 0) line["refused"] = {{"count", client.refusals()}, {"reason", client.refusal()}};
-  // A call's members as the page's element exposes them (CONTRACTS.md): name, speaking, expression.
+  // A call's members as the page's element exposes them (docs/calls.md): name, speaking, expression.
   if (const CallGrid& call = sync.view().call(); !call.empty()) {
     nlohmann::json members = nlohmann::json::array();
     for (const CallGrid::Tile& t : call.tiles()) {

@@ -5,8 +5,8 @@
 // has a place on the head with a depth (common/face/face_depth.hpp), so the face, its hair and,
 // half way, its neck turn with the head's pose while the border stays. When the photo's mouth is
 // closed, the triangles inside the inner lips read a strip of dark mouth-cavity colour under the
-// photo (the atlas) instead of stretched lips. The browser's module draws faces with this same
-// code (SPEC F16).
+// photo (the atlas) instead of stretched lips. The browser draws faces with this same code,
+// compiled to WebAssembly (client/web/module/face_module.cpp), so the mesh exists once.
 #include <vector>
 
 #include <glm/vec3.hpp>

@@ -1,4 +1,4 @@
-// inkwire-server: sessions, assets and control messages for thin clients (CONTRACTS.md).
+// inkwire-server: sessions, assets and control messages for thin clients (docs/cli.md, docs/config.md).
 #include <algorithm>
 #include <csignal>
 #include <optional>
@@ -11,10 +11,12 @@
 
 #include "common/error.hpp"
 #include "common/log.hpp"
+#include "common/mesh_import.hpp"
 #include "server/products/product_export.hpp"
 #include "server/products/product_store.hpp"
 #include "server/self_signed.hpp"
 #include "server/server.hpp"
+#include "server/session_registry.hpp"
 #include "server/session_token.hpp"
 
 using namespace inkwire;
@@ -112,6 +114,33 @@ int add_product(const std::string& name, const server::ProductSource& source, co
   return 0;
 }
 
+// `inkwire-server add-scene NAME --mesh FILE`: a kept scene of the model in the data folder (its
+// model replaced if the scene is there already), which a running server takes up within a second.
+int add_scene(const std::string& name, const std::filesystem::path& mesh, const std::string& style, const std::vector<std::string>& settings,
+              const std::string& editor_token, UpAxis up, const std::string& data) {
+  if (name.empty() || name.size() > protocol::kMaxName ||
+      name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_.") != std::string::npos)
+    throw Error("scene name '" + name + "' must be 1-64 letters, digits, - _ .");
+  server::AssetStore store(data.empty() ? "inkwire-data" : data);
+  std::optional<server::StoredSession> stored;
+  for (auto& s : store.sessions())
+    if (s.state.session == name) stored = std::move(s);
+  if (stored && (stored->state.kind != protocol::SessionKind::Scene || !stored->state.product.directions.empty()))
+    throw Error("'" + name + "' is a " + protocol::to_string(stored->state.kind) + " session, not a scene");
+  const protocol::AssetAnnounce model = server::store_model(store, mesh, up);  // refuses what no client could draw, storing nothing
+  if (!stored) stored = server::StoredSession{.token = "", .editor_token = "", .state = server::fresh_session_state(name, protocol::SessionKind::Scene, "default")};
+  if (!style.empty()) stored->state.style = {.renderer = style, .settings = settings};
+  if (!editor_token.empty()) stored->editor_token = server::hash_token(editor_token);
+  stored->state.assets = {model};
+  ++stored->state.revision;
+  stored->maker = server::MadeBy::Command;
+  stored->kept = true;
+  store.save_session(*stored);
+  std::printf("stored scene '%s': %s (%llu bytes), style %s; in %s. Its page: http://HOST:PORT/scene/%s\n", name.c_str(), model.name.c_str(),
+              static_cast<unsigned long long>(model.size), stored->state.style.renderer.c_str(), store.dir().c_str(), name.c_str());
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -177,10 +206,69 @@ int main(int argc, char** argv) {
                                                              "seconds (its visitors are told), its files are swept at a later start");
   removing->add_option("name", product_name, "the product's session name")->required();
   removing->add_option("--data", product_data, "data folder (default ./inkwire-data)");
+  std::string scene_name, scene_data, scene_style, scene_editor_token, scene_up = "auto";
+  std::filesystem::path scene_mesh;
+  std::vector<std::string> scene_settings;
+  CLI::App* adding_scene = app.add_subcommand("add-scene", "make (or replace the model of) a kept scene NAME from a model file; a running server "
+                                                            "takes it up within a second");
+  adding_scene->add_option("name", scene_name, "the scene's name, as clients and pages ask for it")->required();
+  adding_scene->add_option("--mesh", scene_mesh, "the model: any format the importer reads (a glTF with its files, OBJ with MTL, PLY, OFF, STL, 3DS, FBX...)")
+      ->required();
+  adding_scene->add_option("--style", scene_style, "its style (default: default, or what the scene had)");
+  adding_scene->add_option("--settings", scene_settings, "KEY=VALUE settings for --style");
+  adding_scene->add_option("--editor-token", scene_editor_token, "who joins with this token steers the scene; the others follow");
+  adding_scene->add_option("--up", scene_up, "which axis is up in the model file: y, z or auto")->check(CLI::IsMember({"auto", "y", "z"}));
+  adding_scene->add_option("--data", scene_data, "data folder (default ./inkwire-data)");
+  CLI::App* keeping_scene = app.add_subcommand("keep-scene", "keep scene NAME (one a visitor uploaded) however long it goes unvisited; a running "
+                                                             "server takes it up within a second");
+  keeping_scene->add_option("name", scene_name, "the scene's name")->required();
+  keeping_scene->add_option("--data", scene_data, "data folder (default ./inkwire-data)");
+  CLI::App* removing_scene = app.add_subcommand("remove-scene", "take scene NAME out of the data folder: a running server stops serving it within a "
+                                                                 "second (its members are told)");
+  removing_scene->add_option("name", scene_name, "the scene's name")->required();
+  removing_scene->add_option("--data", scene_data, "data folder (default ./inkwire-data)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
+  }
+  if (adding_scene->parsed()) {
+    try {
+      if (quiet) set_log_level(LogLevel::Warn);
+      return add_scene(scene_name, scene_mesh, scene_style, scene_settings, scene_editor_token, parse_up_axis(scene_up), scene_data);
+    } catch (const std::exception& e) {
+      std::cerr << "inkwire-server add-scene: " << e.what() << "\n";
+      return 1;
+    }
+  }
+  if (keeping_scene->parsed()) {
+    try {
+      server::AssetStore store(scene_data.empty() ? "inkwire-data" : scene_data);
+      std::optional<server::StoredSession> scene;
+      for (auto& s : store.sessions())
+        if (s.state.session == scene_name && s.state.kind == protocol::SessionKind::Scene) scene = std::move(s);
+      if (!scene) throw Error("no scene named '" + scene_name + "' in " + store.dir().string());
+      scene->kept = true;
+      store.save_session(*scene);
+      std::printf("scene '%s' is kept\n", scene_name.c_str());
+      return 0;
+    } catch (const std::exception& e) {
+      std::cerr << "inkwire-server keep-scene: " << e.what() << "\n";
+      return 1;
+    }
+  }
+  if (removing_scene->parsed()) {
+    try {
+      server::AssetStore store(scene_data.empty() ? "inkwire-data" : scene_data);
+      bool scene = false;
+      for (const auto& s : store.sessions()) scene |= s.state.session == scene_name && s.state.kind == protocol::SessionKind::Scene;
+      if (!scene || !store.remove_session(scene_name)) throw Error("no scene named '" + scene_name + "' in " + store.dir().string());
+      std::printf("removed scene '%s' from %s (a scene the config names is made again at the next start)\n", scene_name.c_str(), store.dir().c_str());
+      return 0;
+    } catch (const std::exception& e) {
+      std::cerr << "inkwire-server remove-scene: " << e.what() << "\n";
+      return 1;
+    }
   }
   if (removing->parsed()) {
     try {

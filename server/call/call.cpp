@@ -8,6 +8,7 @@
 #include "common/log.hpp"
 #include "protocol/face_versions.hpp"
 #include "protocol/framing.hpp"
+#include "protocol/versions.hpp"
 #include "server/call/call_member.hpp"
 #include "server/connection.hpp"
 #include "server/relay/relay.hpp"
@@ -64,11 +65,12 @@ uint16_t Call::number_for(const std::string& name, const std::string& address) {
   return take_number();
 }
 
-void Call::join(const std::shared_ptr<Connection>& connection, const std::string& name) {
+void Call::join(const std::shared_ptr<Connection>& connection, const std::string& name, bool host) {
   leave(connection->id());
   auto m = std::make_unique<Member>();
   m->connection = connection;
   m->connection_id = connection->id();
+  m->host = host;
   m->entry.member = name.empty() ? take_number() : number_for(name, connection->address());
   m->entry.name = name.empty() ? "member " + std::to_string(m->entry.member) : name;
   members_[connection->id()] = std::move(m);
@@ -85,6 +87,45 @@ void Call::leave(uint64_t connection) {
   members_.erase(it);
   send_roster();
   share_roster();
+}
+
+void Call::set_locked(bool locked) {
+  if (locked_ == locked) return;
+  locked_ = locked;
+  log_info(locked ? "room-locked" : "room-unlocked", {{"session", session_}});
+  send_roster();
+  share_roster();  // the other instances take newcomers no more either
+}
+
+bool Call::remove(uint16_t member, const std::string& reason) {
+  Member* m = find_member(member);
+  if (!m) {
+    // A member of another instance: that instance removes it (and its roster then says so).
+    const auto remote = std::find_if(remotes_.begin(), remotes_.end(), [&](const auto& r) { return r.second.entry.member == member; });
+    if (remote == remotes_.end()) return false;
+    log_info("room-member-removed", {{"session", session_}, {"member", member}, {"name", remote->second.entry.name}, {"on", remote->first.first}});
+    relay_.share_call({.origin = origin_, .session = session_, .removal = CallShare::Removal{remote->first.first, remote->first.second, reason}});
+    remotes_.erase(remote);
+    send_roster();
+    return true;
+  }
+  log_info("room-member-removed", {{"session", session_}, {"member", member}, {"name", m->entry.name}});
+  const auto connection = m->connection.lock();
+  // Not kept among those who left: coming back, it is a newcomer (refused while the room is locked).
+  analyst_.forget({session_, member});
+  members_.erase(m->connection_id);
+  send_roster();
+  share_roster();
+  if (connection) connection->close_with(protocol::ErrorCode::Removed, reason);
+  return true;
+}
+
+std::string Call::host_name() const {
+  for (const auto& [id, m] : members_)
+    if (m->host) return m->entry.name;
+  for (const auto& [key, r] : remotes_)
+    if (r.host) return r.entry.name;
+  return "";
 }
 
 void Call::publish(uint64_t connection, const protocol::Publish& publish) {
@@ -124,6 +165,11 @@ void Call::send_roster() {
   for (const auto& [id, m] : members_) roster.members.push_back(m->entry);
   for (const auto& [key, r] : remotes_) roster.members.push_back(r.entry);
   if (roster.members.size() > protocol::kMaxMembers) roster.members.resize(protocol::kMaxMembers);
+  roster.locked = locked_;
+  for (const auto& [id, m] : members_)
+    if (m->host) roster.host = m->entry.member;
+  for (const auto& [key, r] : remotes_)
+    if (r.host && roster.host == 0) roster.host = r.entry.member;
   for (const auto& [id, m] : members_)
     if (const auto c = m->connection.lock()) {
       roster.you = m->entry.member;
@@ -142,7 +188,7 @@ void Call::send_face(const protocol::MemberLayers& face) {
   std::shared_ptr<const Bytes> legacy;  // encoded once, if any peer needs it
   for (const auto& [id, m] : members_)
     if (const auto c = m->connection.lock()) {
-      if (c->version() >= 8) {
+      if (c->version() >= protocol::kLayersVersion) {
         c->send_frame(layers, protocol::MessageType::MemberLayers);
         continue;
       }

@@ -19,6 +19,7 @@
 
 #include "protocol/messages.hpp"
 #include "server/call/call_analyst.hpp"
+#include "server/call/call_options.hpp"
 #include "server/call/voice_analysis.hpp"
 
 namespace inkwire::server {
@@ -27,13 +28,6 @@ class Connection;
 class Relay;
 struct CallShare;
 
-struct CallOptions {
-  int loudest = 3;                // K: voices each member hears at once
-  double crops_per_second = 15;   // per publisher
-  double voice_per_second = 60;   // packets per publisher (20 ms packets are 50 a second)
-  size_t max_crop_bytes = 32 * 1024;
-  size_t max_voice_bytes = 400;
-};
 
 class Call {
  public:
@@ -52,8 +46,21 @@ class Call {
   Call(std::string session, CallOptions options, CallAnalyst& analyst, Counters& counters, Relay& relay, std::string origin);
   ~Call();
 
-  void join(const std::shared_ptr<Connection>& connection, const std::string& name);
+  // `host`: the member joined with the room's host key (SPEC N7).
+  void join(const std::shared_ptr<Connection>& connection, const std::string& name, bool host = false);
   void leave(uint64_t connection);
+
+  // The room's host controls (SPEC N7): a locked room takes no newcomers but its host; a member
+  // removed is closed with error 12 and the reason. False when no member has that number.
+  // With several instances the room is one: the instance its host is on says whether it is
+  // locked (in the roster it shares), and a member of another instance is removed there.
+  bool locked() const { return locked_; }
+  void set_locked(bool locked);
+  bool remove(uint16_t member, const std::string& reason);
+  // The name of the host while it is in the call (on any instance), else empty.
+  std::string host_name() const;
+  // Members of other instances in the roster now.
+  size_t remote_members() const { return remotes_.size(); }
 
   // From a member's connection.
   void publish(uint64_t connection, const protocol::Publish& publish);
@@ -91,11 +98,12 @@ class Call {
   size_t send_to_others(const Member& from, const protocol::Message& message);  // how many it went to
   void send_to_all(const protocol::Message& message);
   // A member's face to every member here, each in the version it reads (member-face for a peer
-  // of version 7).
+  // of version 7 or 8).
   void send_face(const protocol::MemberLayers& face);
   void update_speakers(Clock::time_point now);
 
   std::string session_;
+  bool locked_ = false;
   CallOptions options_;
   CallAnalyst& analyst_;
   Counters& counters_;
@@ -120,6 +128,7 @@ class Call {
   // loudest few across the whole call (SPEC F19), not a few of its own each.
   struct Remote {
     protocol::CallMember entry;
+    bool host = false;  // the room's host, by its origin's roster
     std::map<protocol::Hash, protocol::Bytes> asset_bytes;
     Clock::time_point heard;
     VoiceAnalysis voice;

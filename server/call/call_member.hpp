@@ -61,6 +61,7 @@ struct Call::Member {
   std::weak_ptr<Connection> connection;
   uint64_t connection_id = 0;
   protocol::CallMember entry;  // what the roster says of it
+  bool host = false;           // joined with the room's host key (an editor of the session)
   std::map<protocol::Hash, Bytes> asset_bytes;
   Bucket crops, voices;
   std::deque<Clock::time_point> drops;  // in the last second

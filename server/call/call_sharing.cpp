@@ -17,8 +17,12 @@ namespace inkwire::server {
 void Call::share_roster() {
   roster_shared_ = Clock::now();
   protocol::Roster own;
-  for (const auto& [id, m] : members_) own.members.push_back(m->entry);
+  for (const auto& [id, m] : members_) {
+    own.members.push_back(m->entry);
+    if (m->host) own.host = m->entry.member;
+  }
   if (own.members.size() > protocol::kMaxMembers) own.members.resize(protocol::kMaxMembers);
+  own.locked = locked_;  // the room's, when its host is here (own.host); others read it only then
   relay_.share_call({.origin = origin_, .session = session_, .message = own});
 }
 
@@ -34,6 +38,12 @@ Call::Remote* Call::remote_member(const std::string& origin, uint16_t number, bo
 
 void Call::remote(const CallShare& share) {
   const auto now = Clock::now();
+  if (share.removal) {
+    // The host, on another instance, removed a member of this one.
+    if (share.removal->instance != origin_) return;
+    if (const Member* m = find_member(share.removal->member)) remove(m->entry.member, share.removal->reason);
+    return;
+  }
   if (share.photo_member) {
     Remote* r = remote_member(share.origin, share.photo_member, true);
     set_photo(r->entry, r->asset_bytes, share.photo, share.landmarks);
@@ -47,8 +57,14 @@ void Call::remote(const CallShare& share) {
       return r.first.first == share.origin &&
              std::none_of(roster->members.begin(), roster->members.end(), [&](const auto& m) { return m.member == r.first.second; });
     });
+    // The instance the host is on says whether the room is locked.
+    if (roster->host != 0 && roster->locked != locked_) {
+      locked_ = roster->locked;
+      log_info(locked_ ? "room-locked" : "room-unlocked", {{"session", session_}, {"by", share.origin}});
+    }
     for (const protocol::CallMember& m : roster->members) {
       Remote* r = remote_member(share.origin, m.member, true);
+      r->host = roster->host == m.member;
       const uint16_t local = r->entry.member;
       const bool speaking = r->entry.speaking;  // among the call's loudest: this instance's reading
       std::vector<protocol::AssetAnnounce> assets = std::move(r->entry.assets);  // its photo comes on its own

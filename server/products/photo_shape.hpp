@@ -4,7 +4,7 @@
 // camera found by making the silhouettes agree (camera_from_mattes.hpp), the visual hull carved
 // under it and every photo's depth map from the hull, taken in where the photos agree better
 // deeper (depth_refinement.hpp); written out for a person to look at as
-// `hull.ply`, `depth-N.png` and `camera.json` (names in CONTRACTS.md).
+// `hull.ply`, `depth-N.png` and `camera.json` (docs/cli.md, inkwire-tween shape).
 #include <filesystem>
 #include <functional>
 #include <optional>

@@ -6,7 +6,7 @@
 
 #include "common/content_hash.hpp"
 #include "common/error.hpp"
-#include "server/web/gzip.hpp"
+#include "common/gzip.hpp"
 
 namespace inkwire::server {
 namespace {

@@ -2,6 +2,7 @@
 
 #include <charconv>
 
+#include "common/error.hpp"
 #include "protocol/framing.hpp"
 
 namespace inkwire::server {
@@ -41,6 +42,9 @@ struct Reader {
 }  // namespace
 
 std::string call_share(const CallShare& share) {
+  if (share.removal)
+    return "R" + counted(share.origin) + counted(share.session) + counted(share.removal->instance) + std::to_string(share.removal->member) + " " +
+           counted(share.removal->reason);
   std::string out = (share.message ? "M" : "P") + counted(share.origin) + counted(share.session);
   if (share.message) {
     const protocol::Bytes frame = protocol::encode(*share.message);
@@ -50,11 +54,22 @@ std::string call_share(const CallShare& share) {
 }
 
 CallShare parse_call_share(std::string_view text) {
-  if (text.empty() || (text[0] != 'M' && text[0] != 'P')) throw ProtocolError("broker text: not a call share");
+  if (text.empty() || (text[0] != 'M' && text[0] != 'P' && text[0] != 'R')) throw ProtocolError("broker text: not a call share");
   Reader r{text.substr(1)};
   CallShare share;
   share.origin = r.name("origin");
   share.session = r.name("session");
+  if (text[0] == 'R') {
+    CallShare::Removal removal;
+    removal.instance = r.name("instance");
+    const uint64_t member = r.number(' ', "member");
+    if (member == 0 || member > 65535) throw ProtocolError("broker text: member number outside 1..65535");
+    removal.member = uint16_t(member);
+    removal.reason = r.bytes(protocol::kMaxReason, "reason");
+    if (!r.rest.empty()) throw ProtocolError("broker text: bytes after a removal");
+    share.removal = std::move(removal);
+    return share;
+  }
   if (text[0] == 'M') {
     share.message = r.frame();
     const auto type = protocol::type_of(*share.message);
@@ -102,14 +117,29 @@ BrokerEvent parse_event(std::string_view payload) {
   return e;
 }
 
+// Who made the session comes first, marked by '@' (definitions from before sessions people make
+// have no mark: the operator's).
 std::string session_definition(const StoredSession& stored) {
   const protocol::Bytes frame = protocol::encode(stored.state);
-  return counted(stored.token) + counted(stored.editor_token) + std::string(frame.begin(), frame.end());
+  return "@" + counted(to_string(stored.maker)) + counted(stored.creator) + (stored.kept ? "1" : "0") + counted(stored.token) +
+         counted(stored.editor_token) + std::string(frame.begin(), frame.end());
 }
 
 StoredSession parse_session_definition(std::string_view text) {
   Reader r{text};
   StoredSession stored;
+  if (!r.rest.empty() && r.rest.front() == '@') {
+    r.rest.remove_prefix(1);
+    try {
+      stored.maker = made_by_from_string(r.name("maker"));
+    } catch (const Error& e) {
+      throw ProtocolError(std::string("broker text: ") + e.what());
+    }
+    stored.creator = r.name("creator");
+    if (r.rest.empty() || (r.rest.front() != '0' && r.rest.front() != '1')) throw ProtocolError("broker text: no kept flag");
+    stored.kept = r.rest.front() == '1';
+    r.rest.remove_prefix(1);
+  }
   stored.token = r.name("token");
   stored.editor_token = r.name("editor token");
   protocol::Message message = r.frame();

@@ -11,7 +11,9 @@
 #include "common/log.hpp"
 #include "protocol/framing.hpp"
 #include "server/relay/broker_formats.hpp"
-#include "server/server.hpp"
+#include "server/asset_store.hpp"
+#include "server/relay/session_fanout.hpp"
+#include "server/session.hpp"
 
 namespace inkwire::server {
 namespace {
@@ -20,7 +22,7 @@ using namespace protocol;
 using namespace std::chrono_literals;
 
 constexpr std::string_view kEvents = "inkwire:events";      // changes, published by kPublish
-constexpr std::string_view kNotices = "inkwire:notices";    // a session was shared: its name
+constexpr std::string_view kNotices = "inkwire:notices";    // a session was shared, its model replaced, or it was removed: its name
 constexpr std::string_view kCalls = "inkwire:calls";        // calls' voice, faces, rosters and photos (broker_formats.hpp)
 constexpr std::string_view kSessions = "inkwire:sessions";  // hash: name -> definition
 constexpr uint64_t kMaxSharedAsset = 64 << 20;              // larger assets need a shared data folder
@@ -39,6 +41,17 @@ return revision)lua";
 
 // The session's state whole, seeded with this instance's own when the broker has none.
 // KEYS[1] the state hash; ARGV: revision, REV, then field, frame pairs.
+// A session's definition (KEYS[1] field ARGV[1]) and its state (KEYS[2]) deleted if the
+// definition is still ARGV[2].
+constexpr std::string_view kRemoveIfSame = R"lua(
+if redis.call('HGET', KEYS[1], ARGV[1]) == ARGV[2] then
+  redis.call('HDEL', KEYS[1], ARGV[1])
+  redis.call('DEL', KEYS[2])
+  return 1
+end
+return 0
+)lua";
+
 constexpr std::string_view kSeedAndRead = R"lua(
 if redis.call('EXISTS', KEYS[1]) == 0 then redis.call('HSET', KEYS[1], unpack(ARGV)) end
 return redis.call('HGETALL', KEYS[1]))lua";
@@ -101,8 +114,8 @@ BrokerAddress parse_broker(const std::string& url) {
   return a;
 }
 
-RedisRelay::RedisRelay(Server& server, BrokerAddress address)
-    : server_(server), address_(std::move(address)), io_(server.io()), commands_(io_), events_(io_), retry_timer_(io_), heartbeat_timer_(io_),
+RedisRelay::RedisRelay(SessionFanout& sessions, BrokerAddress address)
+    : sessions_(sessions), address_(std::move(address)), io_(sessions.io()), commands_(io_), events_(io_), retry_timer_(io_), heartbeat_timer_(io_),
       publish_digest_(script_digest(kPublish)) {
   status_.broker = true;
   status_.connected = false;
@@ -184,7 +197,16 @@ void RedisRelay::on_subscription(const redisReply* r) {
   }
   if (kind != "message") return;
   if (channel == kEvents) on_event(text_of(r->element[2]));
-  else if (channel == kNotices) discover();
+  else if (channel == kNotices) {
+    // Only the session named: every instance reading every definition at each notice costs the
+    // square of the sessions when rooms open by the thousand.
+    const std::string name(text_of(r->element[2]));
+    commands_.command({"HGET", kSessions, name}, [this, name](const redisReply* r) {
+      if (is_error(r)) return;
+      if (r->type == REDIS_REPLY_STRING) take_definition(name, text_of(r));
+      else if (r->type == REDIS_REPLY_NIL) removed_elsewhere(name);
+    });
+  }
   else if (channel == kCalls) on_call(text_of(r->element[2]));
 }
 
@@ -199,8 +221,8 @@ void RedisRelay::share_call(const CallShare& share) {
 void RedisRelay::on_call(std::string_view payload) {
   try {
     CallShare share = parse_call_share(payload);
-    if (share.origin == server_.config().name) return;  // its own
-    if (const auto session = server_.find_session(share.session); session && session->call()) session->call()->remote(share);
+    if (share.origin == sessions_.instance_name()) return;  // its own
+    if (const auto session = sessions_.find_session(share.session); session && session->call()) session->call()->remote(share);
   } catch (const protocol::ProtocolError& e) {
     log_warn("broker-call-garbled", {{"reason", e.what()}});
   }
@@ -236,20 +258,20 @@ void RedisRelay::ready() {
   commands_.command({"SCRIPT", "LOAD", kPublish}, [](const redisReply*) {});  // before any EVALSHA: one connection keeps order
   backoff_ = 100ms;
   if (std::exchange(ever_ready_, true)) ++status_.reconnects;
-  log_info("broker-connected", {{"instance", server_.config().name}, {"unsent", unsent_.size()}});
+  log_info("broker-connected", {{"instance", sessions_.instance_name()}, {"unsent", unsent_.size()}});
   // Every session waits for its resync from here on, so no change is applied out of order. Each
   // resync sends the changes made here while the broker was away that it does not hold yet.
-  for (const auto& [name, session] : server_.sessions()) syncs_[name].syncing = true;
-  for (const auto& [name, session] : server_.sessions()) share(*session);
+  for (const auto& [name, session] : sessions_.sessions()) syncs_[name].syncing = true;
+  for (const auto& [name, session] : sessions_.sessions()) share(*session);
   discover();
-  for (const auto& [name, session] : server_.sessions()) resync(name);
+  for (const auto& [name, session] : sessions_.sessions()) resync(name);
 }
 
 void RedisRelay::publish(Session& session, const Message& change, uint64_t sender) {
   const std::string field = state_field(change);
   const Bytes frame = encode(change);
   if (!ready_) {
-    server_.deliver(session, change, sender);
+    sessions_.deliver(session, change, sender);
     keep_unsent(session.name(), field, frame, sender);
     return;
   }
@@ -262,7 +284,7 @@ void RedisRelay::keep_unsent(const std::string& session, const std::string& fiel
 
 void RedisRelay::send_change(const std::string& session, const std::string& field, const Bytes& frame, uint64_t sender, bool by_digest) {
   const std::string key = state_key(session);
-  const std::string header = event_header(now_us(), sender, server_.config().name, session);
+  const std::string header = event_header(now_us(), sender, sessions_.instance_name(), session);
   const std::string_view bytes(reinterpret_cast<const char*>(frame.data()), frame.size());
   // By the script's digest (loaded on connecting): Redis then neither receives nor hashes the
   // script's text for every change.
@@ -273,8 +295,8 @@ void RedisRelay::send_change(const std::string& session, const std::string& fiel
     if (r && text_of(r).starts_with("NOSCRIPT")) return send_change(session, field, frame, sender, false);  // its script cache was flushed
     // Not known to be published: applied here at once, and sent again once the broker is back.
     log_warn("broker-publish-failed", {{"session", session}, {"field", field}, {"reason", reason_of(r)}});
-    if (const auto s = server_.find_session(session)) {
-      server_.deliver(*s, decode_frame(frame.data(), frame.size()), sender);
+    if (const auto s = sessions_.find_session(session)) {
+      sessions_.deliver(*s, decode_frame(frame.data(), frame.size()), sender);
       keep_unsent(session, field, frame, sender);
     }
   });
@@ -291,8 +313,8 @@ void RedisRelay::on_event(std::string_view payload) {
     return;
   }
   ++status_.received;
-  if (e.origin == server_.config().name) status_.lag_seconds = double(now_us() - e.published_us) / 1e6;
-  const auto session = server_.find_session(e.session);
+  if (e.origin == sessions_.instance_name()) status_.lag_seconds = double(now_us() - e.published_us) / 1e6;
+  const auto session = sessions_.find_session(e.session);
   if (!session) return;  // not here (yet): adopted with its state when its notice comes
   SessionSync& sync = syncs_[e.session];
   if (sync.syncing) wait_for_resync(sync, e.session, std::move(e));
@@ -307,11 +329,11 @@ void RedisRelay::apply_in_order(Session& session, SessionSync& sync, Event e) {
     return;
   }
   sync.revision = e.revision;
-  server_.deliver(session, e.change, e.origin == server_.config().name ? e.sender : 0, e.revision);
+  sessions_.deliver(session, e.change, e.origin == sessions_.instance_name() ? e.sender : 0, e.revision);
 }
 
 void RedisRelay::resync(const std::string& name) {
-  const auto session = server_.find_session(name);
+  const auto session = sessions_.find_session(name);
   if (!session) return;
   syncs_[name].syncing = true;
   ++status_.resyncs;
@@ -328,7 +350,7 @@ void RedisRelay::resync(const std::string& name) {
   args.insert(args.end(), own.begin(), own.end());
   const bool sent = commands_.command(args, [this, name](const redisReply* r) {
     SessionSync& sync = syncs_[name];
-    const auto session = server_.find_session(name);
+    const auto session = sessions_.find_session(name);
     if (!session) {
       sync.syncing = false;
       return;
@@ -365,7 +387,7 @@ void RedisRelay::resync(const std::string& name) {
       try {
         const Message change = decode_frame(reinterpret_cast<const uint8_t*>(value.data()), value.size());
         if (state_field(change) != field) continue;
-        if (differs(session->state(), change)) server_.deliver(*session, change, 0);  // members hear only what changed
+        if (differs(session->state(), change)) sessions_.deliver(*session, change, 0);  // members hear only what changed
       } catch (const std::exception& e) {
         log_warn("broker-state-malformed", {{"session", name}, {"field", field}, {"reason", e.what()}});
       }
@@ -402,9 +424,52 @@ void RedisRelay::wait_for_resync(SessionSync& sync, const std::string& name, Eve
   sync.waiting.push_back(std::move(e));
 }
 
+void RedisRelay::session_added(const Session& session) {
+  if (!ready_) return;  // shared with the others when the broker is back
+  share(session);
+  resync(session.name());
+}
+
+// A session gone here. A call room empty too long: its definition and state leave the broker
+// only if they are still the ones shared here, so a room of the same name opened since on another
+// instance stays. A product or scene removed by its operator: gone from the broker whoever shared
+// it last, and the notice that follows (a name with no definition) has every other instance drop
+// its copy, so none shares it again when it restarts.
+void RedisRelay::session_removed(const Session& session) {
+  const std::string name = session.name();
+  syncs_.erase(name);
+  const auto shared = definitions_.find(name);
+  if (shared == definitions_.end()) return;
+  const std::string definition = std::move(shared->second);
+  definitions_.erase(shared);
+  if (!ready_) return;
+  const auto refused = [name](const redisReply* r) {
+    if (is_error(r)) log_warn("broker-session-not-removed", {{"session", name}, {"reason", reason_of(r)}});
+  };
+  if (session.state().kind == SessionKind::Conference) {
+    commands_.command({"EVAL", kRemoveIfSame, "2", kSessions, state_key(name), name, definition}, refused);
+    return;
+  }
+  commands_.command({"HDEL", kSessions, name}, refused);
+  commands_.command({"DEL", state_key(name)}, refused);
+  commands_.command({"PUBLISH", kNotices, name}, [](const redisReply*) {});
+}
+
+// A notice naming a session the broker no longer defines: removed on the instance that sent it.
+// Call rooms are not dropped so (each instance's copy goes when idle there).
+void RedisRelay::removed_elsewhere(const std::string& name) {
+  const std::shared_ptr<Session> served = sessions_.find_session(name);
+  if (!served || served->state().kind == SessionKind::Conference || adopting_.count(name)) return;
+  log_info("broker-session-removed", {{"session", name}, {"members", served->members()}});
+  sessions_.remove_session(name);
+}
+
 void RedisRelay::share(const Session& session) {
   const std::string name = session.name();
-  commands_.command({"HSETNX", kSessions, name, session_definition(session.stored())}, [this, name](const redisReply* r) {
+  const std::string definition = session_definition(session.stored());
+  // What this instance knows the session by in the broker: its own, unless another's was there first.
+  definitions_.try_emplace(name, definition);
+  commands_.command({"HSETNX", kSessions, name, definition}, [this, name](const redisReply* r) {
     if (is_error(r)) return;
     if (r->type == REDIS_REPLY_INTEGER && r->integer == 1) {
       log_info("broker-session-shared", {{"session", name}});
@@ -423,7 +488,7 @@ void RedisRelay::share_asset(const AssetAnnounce& asset) {
   commands_.command({"EXISTS", key}, [this, key, asset](const redisReply* r) {
     if (is_error(r) || r->integer != 0) return;
     try {
-      const Bytes bytes = server_.store().read_verified(asset.hash);
+      const Bytes bytes = sessions_.store().read_verified(asset.hash);
       commands_.command({"SET", key, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), "NX"}, [](const redisReply*) {});
     } catch (const Error& e) {
       log_warn("broker-asset-not-shared", {{"asset", asset.name}, {"reason", e.what()}});
@@ -434,10 +499,65 @@ void RedisRelay::share_asset(const AssetAnnounce& asset) {
 void RedisRelay::discover() {
   commands_.command({"HGETALL", kSessions}, [this](const redisReply* r) {
     if (is_error(r) || r->type != REDIS_REPLY_ARRAY) return;
-    for (size_t i = 0; i + 1 < r->elements; i += 2) {
-      const std::string name(text_of(r->element[i]));
-      if (!server_.find_session(name) && !adopting_.count(name)) adopt_remote(name, text_of(r->element[i + 1]));
-    }
+    for (size_t i = 0; i + 1 < r->elements; i += 2) take_definition(std::string(text_of(r->element[i])), text_of(r->element[i + 1]));
+  });
+}
+
+void RedisRelay::take_definition(const std::string& name, std::string_view definition) {
+  if (adopting_.count(name)) return;
+  const std::shared_ptr<Session> served = sessions_.find_session(name);
+  if (!served) return adopt_remote(name, definition);
+  if (const auto known = definitions_.find(name); known != definitions_.end() && known->second == definition) return;
+  StoredSession stored;
+  try {
+    stored = parse_session_definition(definition);
+  } catch (const std::exception& e) {
+    log_warn("broker-session-malformed", {{"session", name}, {"reason", e.what()}});
+    return;
+  }
+  // Only a made scene's model changes while it runs (its editor's new upload); other differences
+  // (the same name configured otherwise on two instances) are left as they are.
+  const auto mesh = [](const protocol::Snapshot& s) {
+    for (const AssetAnnounce& a : s.assets)
+      if (a.kind == AssetKind::Mesh) return std::optional(a);
+    return std::optional<AssetAnnounce>();
+  };
+  const bool scene = served->state().kind == SessionKind::Scene && served->state().product.directions.empty() && stored.state.kind == SessionKind::Scene &&
+                     served->stored().maker != MadeBy::Operator;
+  if (!scene || !mesh(stored.state) || mesh(stored.state) == mesh(served->state())) return;
+  adopt_model(name, definition, std::move(stored));
+}
+
+// Another instance's editor gave a scene served here a new model: fetched, then every member
+// here gets it (its style and camera kept, as on the instance it was uploaded to).
+void RedisRelay::adopt_model(const std::string& name, std::string_view definition, StoredSession stored) {
+  adopting_.insert(name);
+  definitions_[name] = std::string(definition);
+  const std::vector<AssetAnnounce> assets = stored.state.assets;
+  fetch_missing(name, assets, [this, name, assets](bool fetched) {
+    adopting_.erase(name);
+    const std::shared_ptr<Session> session = sessions_.find_session(name);
+    if (!fetched || !session) return;
+    for (const AssetAnnounce& a : assets)
+      if (a.kind == AssetKind::Mesh) {
+        session->replace_model(a);
+        log_info("broker-model-replaced", {{"session", name}, {"model", a.name}, {"members", session->members()}});
+        return;
+      }
+  });
+}
+
+// The new model goes to the broker before the definition naming it (one connection keeps the
+// order), then the notice that brings the other instances to read it.
+void RedisRelay::model_replaced(const Session& session) {
+  const std::string name = session.name();
+  const std::string definition = session_definition(session.stored());
+  definitions_[name] = definition;
+  if (!ready_) return;
+  for (const AssetAnnounce& asset : session.state().assets) share_asset(asset);
+  commands_.command({"HSET", kSessions, name, definition}, [this, name](const redisReply* r) {
+    if (is_error(r)) return log_warn("broker-session-not-shared", {{"session", name}, {"reason", reason_of(r)}});
+    commands_.command({"PUBLISH", kNotices, name}, [](const redisReply*) {});
   });
 }
 
@@ -456,17 +576,22 @@ void RedisRelay::adopt_remote(const std::string& name, std::string_view definiti
     return;
   }
   adopting_.insert(name);
-  auto missing = std::make_shared<std::vector<AssetAnnounce>>();
-  for (const AssetAnnounce& a : stored.state.assets)
-    if (!server_.store().find(a.hash)) missing->push_back(a);
+  definitions_[name] = std::string(definition);
   auto session = std::make_shared<StoredSession>(std::move(stored));
+  fetch_missing(name, session->state.assets, [this, name, session](bool fetched) {
+    adopting_.erase(name);
+    if (!fetched || sessions_.find_session(name)) return;
+    if (sessions_.add_session(std::move(*session))) resync(name);
+  });
+}
+
+void RedisRelay::fetch_missing(const std::string& name, const std::vector<AssetAnnounce>& assets, std::function<void(bool)> done) {
+  auto missing = std::make_shared<std::vector<AssetAnnounce>>();
+  for (const AssetAnnounce& a : assets)
+    if (!sessions_.store().find(a.hash)) missing->push_back(a);
   auto left = std::make_shared<size_t>(missing->size());
   auto failed = std::make_shared<bool>(false);
-  const auto finish = [this, name, session, failed] {
-    adopting_.erase(name);
-    if (*failed || server_.find_session(name)) return;
-    if (server_.add_session(std::move(*session))) resync(name);
-  };
+  const auto finish = [failed, done = std::move(done)] { done(!*failed); };
   if (missing->empty()) return finish();
   for (const AssetAnnounce& asset : *missing) {
     const bool sent = commands_.command({"GET", asset_key(asset.hash)}, [this, name, asset, left, failed, finish](const redisReply* r) {
@@ -480,7 +605,7 @@ void RedisRelay::adopt_remote(const std::string& name, std::string_view definiti
           *failed = true;
         } else {
           try {
-            server_.store().add_bytes(Bytes(bytes.begin(), bytes.end()), asset.kind, asset.name);
+            sessions_.store().add_bytes(Bytes(bytes.begin(), bytes.end()), asset.kind, asset.name);
           } catch (const Error& e) {
             log(LogLevel::Error, "broker-asset-not-stored", {{"session", name}, {"asset", asset.name}, {"reason", e.what()}});
             *failed = true;
@@ -489,7 +614,7 @@ void RedisRelay::adopt_remote(const std::string& name, std::string_view definiti
       }
       if (--*left == 0) finish();
     });
-    // Not sent (the broker went away meanwhile): the adoption fails now instead of never ending;
+    // Not sent (the broker went away meanwhile): the fetch fails now instead of never ending;
     // the next discovery after the broker is back tries again.
     if (!sent) {
       *failed = true;

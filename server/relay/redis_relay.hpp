@@ -13,6 +13,7 @@
 //   (reconnecting with back-off) and then resynchronises.
 // All of it runs on the server's I/O thread through asynchronous hiredis calls.
 #include <chrono>
+#include <functional>
 #include <map>
 #include <set>
 #include <string>
@@ -39,15 +40,19 @@ BrokerAddress parse_broker(const std::string& url);
 
 class RedisRelay final : public Relay {
  public:
-  RedisRelay(Server& server, BrokerAddress address);
+  RedisRelay(SessionFanout& sessions, BrokerAddress address);
   ~RedisRelay() override;
   void start() override;
   void stop() override;
   void publish(Session& session, const protocol::Message& change, uint64_t sender) override;
   RelayStatus status() const override;
   void share_call(const CallShare& share) override;
+  void session_added(const Session& session) override;
+  void session_removed(const Session& session) override;
+  void model_replaced(const Session& session) override;
 
  private:
+  void removed_elsewhere(const std::string& name);
   using Event = BrokerEvent;
   struct SessionSync {
     uint32_t revision = 0;  // the broker's revision applied here
@@ -75,9 +80,16 @@ class RedisRelay final : public Relay {
   void share(const Session& session);
   void share_asset(const protocol::AssetAnnounce& asset);
   void discover();
+  // A session's definition as the broker holds it: a session this instance lacks is adopted, a
+  // scene it serves whose model the definition changed takes the new model.
+  void take_definition(const std::string& name, std::string_view definition);
   void adopt_remote(const std::string& name, std::string_view value);
+  void adopt_model(const std::string& name, std::string_view definition, StoredSession stored);
+  // The assets of `assets` this instance lacks, fetched from the broker and stored (each checked
+  // against its hash); then `done(true)`, or `done(false)` once one could not be had.
+  void fetch_missing(const std::string& name, const std::vector<protocol::AssetAnnounce>& assets, std::function<void(bool)> done);
 
-  Server& server_;
+  SessionFanout& sessions_;
   BrokerAddress address_;
   asio::io_context& io_;
   RedisConnection commands_, events_;
@@ -94,6 +106,7 @@ class RedisRelay final : public Relay {
   std::map<std::string, SessionSync> syncs_;
   std::map<std::pair<std::string, std::string>, Unsent> unsent_;  // (session, field): latest wins
   std::set<std::string> adopting_;                                 // remote sessions whose assets are on their way
+  std::map<std::string, std::string> definitions_;                 // each session's definition as the broker holds it
   RelayStatus status_;
   std::string publish_digest_;  // SHA-1 of the publish script, for EVALSHA
 };

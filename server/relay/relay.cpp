@@ -2,7 +2,7 @@
 
 #include "common/error.hpp"
 #include "server/relay/redis_relay.hpp"
-#include "server/server.hpp"
+#include "server/relay/session_fanout.hpp"
 
 namespace inkwire::server {
 namespace {
@@ -10,22 +10,22 @@ namespace {
 // One instance: a change is applied and forwarded where it was made.
 class LocalRelay final : public Relay {
  public:
-  explicit LocalRelay(Server& server) : server_(server) {}
+  explicit LocalRelay(SessionFanout& sessions) : sessions_(sessions) {}
   void start() override {}
   void stop() override {}
-  void publish(Session& session, const protocol::Message& change, uint64_t sender) override { server_.deliver(session, change, sender); }
+  void publish(Session& session, const protocol::Message& change, uint64_t sender) override { sessions_.deliver(session, change, sender); }
   RelayStatus status() const override { return {}; }
 
  private:
-  Server& server_;
+  SessionFanout& sessions_;
 };
 
 }  // namespace
 
-std::unique_ptr<Relay> make_relay(Server& server, const ServerConfig& config) {
-  if (config.broker.empty()) return std::make_unique<LocalRelay>(server);
-  const BrokerAddress address = parse_broker(config.broker);
-  return std::make_unique<RedisRelay>(server, address);
+std::unique_ptr<Relay> make_relay(SessionFanout& sessions, const std::string& broker) {
+  if (broker.empty()) return std::make_unique<LocalRelay>(sessions);
+  const BrokerAddress address = parse_broker(broker);
+  return std::make_unique<RedisRelay>(sessions, address);
 }
 
 }  // namespace inkwire::server

@@ -1,5 +1,5 @@
 #pragma once
-// How a change to a session's state reaches its members (ARCHITECTURE "Networking"): on one
+// How a change to a session's state reaches its members: on one
 // instance it is applied and forwarded at once (LocalRelay); with several instances it goes
 // through a broker, which orders it among every instance's changes and brings it to all of them
 // (RedisRelay). Connections and face feeds only ever call publish(); they never know which.
@@ -12,9 +12,8 @@
 
 namespace inkwire::server {
 
-class Server;
 class Session;
-struct ServerConfig;
+class SessionFanout;
 
 // What /healthz and /metrics say of the relay.
 struct RelayStatus {
@@ -41,10 +40,18 @@ class Relay {
   virtual RelayStatus status() const = 0;
   // A call's traffic for the members on other instances (call/call.hpp); nothing to do alone.
   virtual void share_call(const CallShare& share) { (void)share; }
+  // A session made while the server runs (a room opened, a scene uploaded), and one gone: the
+  // other instances hear of it; nothing to do alone. A product or scene removed is removed on
+  // every instance; a call room gone idle here is gone here only (members elsewhere keep theirs).
+  virtual void session_added(const Session& session) { (void)session; }
+  virtual void session_removed(const Session& session) { (void)session; }
+  // A running scene given a new model (its editor's upload): the other instances' members get it
+  // too; nothing to do alone.
+  virtual void model_replaced(const Session& session) { (void)session; }
 };
 
-// The relay a config asks for: local without "broker", Redis for "redis://HOST:PORT".
+// The relay a config's "broker" asks for: local without one, Redis for "redis://HOST:PORT".
 // Throws inkwire::Error for a broker this build cannot use.
-std::unique_ptr<Relay> make_relay(Server& server, const ServerConfig& config);
+std::unique_ptr<Relay> make_relay(SessionFanout& sessions, const std::string& broker);
 
 }  // namespace inkwire::server

@@ -33,7 +33,7 @@ struct DenseMatchOptions {
 
 // Flow both ways between two photos of one size (grey, DIS at its medium preset down to full
 // resolution), checked forward-backward. (Seeding DIS with verified SIFT matches, or running it
-// on photos scaled up twice, measured no better on the spin sets: docs/benchmarks.md.)
+// on photos scaled up twice, measured no better on the spin sets: docs/benchmarks-journal.md.)
 DenseMatches dense_matches(const Image& a, const Image& b, const DenseMatchOptions& options = {});
 
 // The same matches read from b to a.

@@ -8,6 +8,7 @@
 // default the server's own pages only.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <asio.hpp>
 
@@ -28,8 +29,12 @@ class HttpServer {
 
  private:
   asio::awaitable<void> serve(ByteStream stream);
-  // The reply to GET /products/NAME/product.json or /products/NAME/files/HEX.ext.
-  std::string product_reply(const Request& request, const std::string& path);
+  // The long-lived streams a request may become; each sets `handed_over` once the socket is
+  // theirs, or gives the reply refusing it.
+  asio::awaitable<std::string> upgrade_websocket(ByteStream& socket, const Request& request, std::string early_bytes, bool& handed_over);
+  asio::awaitable<std::string> open_voice_stream(ByteStream& socket, const Request& request, const std::string& ticket, bool& handed_over);
+  // Every other route: one reply.
+  std::string answer(const Request& request, const std::string& path);
 
   asio::io_context& io_;
   Server& server_;
@@ -38,7 +43,7 @@ class HttpServer {
 };
 
 // Whether a page of `origin` may open a WebSocket to a server reached as `host` (the Host
-// header): an allowed origin, or the server's own ("http://" + host) when none are configured.
+// header): the server's own ("http://" + host), or an allowed origin (any, when "*" is allowed).
 // A request without an Origin (not from a page) is allowed.
 bool origin_allowed(const std::string& origin, const std::string& host, const std::vector<std::string>& allowed);
 

@@ -88,6 +88,17 @@ std::string metrics_text(Server& server) {
   m.one("inkwire_call_crops_analysed_total", "counter", "Call members' face pictures analysed (JPEG crops and face-video frames).", c.call.crops);
   m.one("inkwire_call_analysis_seconds_total", "counter", "Time the call analyst spent on face crops.", c.call.seconds);
   m.one("inkwire_call_voice_relayed_total", "counter", "Voice packets relayed to call members (one per receiver).", c.call.voice_relayed);
+  const SessionMaker& maker = server.maker();
+  const MakingCounters& made = maker.counters();
+  m.one("inkwire_rooms_open", "gauge", "Call rooms opened by their members (not configured) and not gone yet.", maker.open_rooms());
+  m.one("inkwire_scenes_open", "gauge", "Scenes made from uploaded models and not gone yet.", maker.open_scenes());
+  m.one("inkwire_rooms_opened_total", "counter", "Call rooms opened by their first member.", made.rooms_opened);
+  m.one("inkwire_rooms_expired_total", "counter", "Call rooms gone after room_idle_seconds without members.", made.rooms_expired);
+  m.one("inkwire_scenes_made_total", "counter", "Scenes made from uploaded models.", made.scenes_made);
+  m.one("inkwire_scenes_expired_total", "counter", "Uploaded scenes gone after scene_idle_seconds without members.", made.scenes_expired);
+  m.one("inkwire_models_replaced_total", "counter", "Models replaced in running scenes by their editors.", made.models_replaced);
+  m.metric("inkwire_making_refused_total", "counter", "Rooms, scenes and uploads refused, by reason (policy, token, cap, cap-per-address, name, size, import, ...).");
+  for (const auto& [reason, count] : made.refused) m.sample("inkwire_making_refused_total", count, "reason=\"" + metric_label(reason) + "\"");
   const RelayStatus r = server.relay().status();
   if (r.broker) {
     m.one("inkwire_broker_up", "gauge", "1 while the broker is reachable; 0 while this instance serves its own members only.", int(r.connected));

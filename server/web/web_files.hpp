@@ -11,5 +11,7 @@ namespace inkwire {  // where cmake/embed_files_script.cmake defines them
 
 const std::map<std::string, std::string_view>& web_client_files();
 const std::map<std::string, std::string_view>& web_shader_files();
+// The server's own pages' files, by their path under client/web/ (pages/front.js, pages/call.jpg, ...).
+const std::map<std::string, std::string_view>& web_page_files();
 
 }  // namespace inkwire

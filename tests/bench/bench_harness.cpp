@@ -83,7 +83,7 @@ Result Harness::time_frames(Renderer& renderer, const BenchObject& object, int f
 }
 
 const std::vector<std::pair<std::string, Suite>>& suites() {
-  static const std::vector<std::pair<std::string, Suite>> all = {{"default", run_default_suite}, {"comic", run_comic_suite}, {"sketch", run_sketch_suite}, {"hatching", run_hatching_suite}, {"antialiasing", run_antialiasing_suite}, {"painterly", run_painterly_suite}, {"tween", run_tween_suite}, {"turntable", run_turntable_suite}, {"web", run_web_suite}, {"web-scene", run_web_scene_suite}, {"landmarks", run_landmarks_suite}, {"face", run_face_suite}, {"net", run_net_suite}, {"call", run_call_suite}, {"abuse", run_abuse_suite}, {"crash", run_crash_suite}, {"soak", run_soak_suite}};
+  static const std::vector<std::pair<std::string, Suite>> all = {{"default", run_default_suite}, {"comic", run_comic_suite}, {"sketch", run_sketch_suite}, {"hatching", run_hatching_suite}, {"antialiasing", run_antialiasing_suite}, {"painterly", run_painterly_suite}, {"tween", run_tween_suite}, {"turntable", run_turntable_suite}, {"web", run_web_suite}, {"web-scene", run_web_scene_suite}, {"landmarks", run_landmarks_suite}, {"face", run_face_suite}, {"net", run_net_suite}, {"call", run_call_suite}, {"abuse", run_abuse_suite}, {"crash", run_crash_suite}, {"soak", run_soak_suite}, {"window", run_window_suite}, {"rooms", run_rooms_suite}};
   return all;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // The benchmark harness every suite plugs into: the study's set-up (SPEC G4), frame timing,
-// and result rows with the names CONTRACTS.md fixes.
+// and result rows with the names docs/cli.md fixes.
 #include <functional>
 #include <map>
 #include <memory>
@@ -94,5 +94,7 @@ std::vector<Result> run_call_suite(Harness& harness);
 std::vector<Result> run_abuse_suite(Harness& harness);
 std::vector<Result> run_crash_suite(Harness& harness);
 std::vector<Result> run_soak_suite(Harness& harness);
+std::vector<Result> run_window_suite(Harness& harness);
+std::vector<Result> run_rooms_suite(Harness& harness);
 
 }  // namespace inkwire::bench

@@ -1,4 +1,4 @@
-// inkwire-bench: prints the performance tables and writes them as JSON (CONTRACTS.md).
+// inkwire-bench: prints the performance tables and writes them as JSON (docs/cli.md says the shape).
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
   Options options;
   options.mesh = std::string(INKWIRE_MESH_DIR) + "/bull.off";
   CLI::App app{"inkwire-bench: speed and quality figures of every renderer, the network and the product turntable, as a table and as JSON"};
-  app.add_option("--suite", suite, "default|comic|sketch|hatching|antialiasing|painterly|tween|turntable|web|web-scene|landmarks|face|net|call|abuse|crash|soak|all");
+  app.add_option("--suite", suite, "default|comic|sketch|hatching|antialiasing|painterly|tween|turntable|web|web-scene|landmarks|face|net|call|abuse|crash|soak|window|rooms|all");
   app.add_option("--frames", options.frames, "frames timed per measurement")->check(CLI::Range(1, 1000000));
   app.add_option("--minutes", options.minutes, "soak: minutes of churn (then 40 s for the crowd to leave and the deadlines to pass)")
       ->check(CLI::Range(0.1, 1440.0));

@@ -4,12 +4,15 @@
 // the crops and relays the voice. Reads the Yale faces' development subjects from
 // ../shared/data/yalefaces when they are there, else libdlib's example photo with no change of
 // expression (then the expression check is skipped with a message).
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <map>
 #include <mutex>
 #include <optional>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -87,30 +90,44 @@ TEST(CallE2ETest, MembersAreSeenAndHeardAsThemselvesAndBadInputIsDroppedAndCount
   const int mouth = int(listener.member_faces().at(grace_number).mouth.expression);
   EXPECT_TRUE(mouth >= int(Expression::VisemeClosed) && mouth <= int(Expression::VisemeRound)) << mouth;
 
-  // Every voice packet came through, stamped with its sender's own number (Grace said 999).
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
-  const auto heard = listener.take_voice();
+  // Every voice packet came through, stamped with its sender's own number (Grace said 999): what
+  // is in flight lands (or the wait ends and the counts say what did).
   int from_ada = 0, from_grace = 0;
-  for (const auto& [v, arrived] : heard) from_ada += v.member == ada_number, from_grace += v.member == grace_number;
+  size_t heard = 0;
+  eventually([&] {
+    for (const auto& [v, arrived] : listener.take_voice()) from_ada += v.member == ada_number, from_grace += v.member == grace_number, ++heard;
+    return from_ada >= sent_voice && from_grace >= sent_voice;
+  });
   EXPECT_GE(from_ada, sent_voice - 2);  // the first packets come before the server heard anyone speak
   EXPECT_GE(from_grace, sent_voice - 2);
-  EXPECT_EQ(size_t(from_ada + from_grace), heard.size()) << "a packet under another member's number";
+  EXPECT_EQ(size_t(from_ada + from_grace), heard) << "a packet under another member's number";
   bool speaking = false;
   for (const auto& m : listener.roster().members) speaking |= m.speaking;
   EXPECT_TRUE(speaking);
 
   // Bad input is dropped and counted; a member may not send session-wide expression codes; the
   // listener is not disturbed.
-  ada.send(protocol::FaceCrop{.time_ms = 5000, .frame_width = 64, .frame_height = 64, .x = 0, .y = 0, .width = 64, .height = 64,
-                              .jpeg = protocol::Bytes{0x89, 'P', 'N', 'G', 0, 0}});
-  ada.send(protocol::VoiceFrame{.member = 0, .time_ms = 5000, .opus = protocol::Bytes(600, 0x11)});
-  ada.send(protocol::VoiceFrame{.member = 0, .time_ms = 5020, .opus = protocol::Bytes{0x03, 0x00}});
+  // (Each is sent again, a quarter of a second apart, until the server counts it: on a loaded
+  // machine the server may read the crops above in a burst, and a bad one that comes while their
+  // allowance is spent is counted as too frequent instead.)
+  const auto counted = [&](const std::string& reason) {
+    return metrics_of(server).find("inkwire_call_dropped_total{reason=\"" + reason + "\"}") != std::string::npos;
+  };
+  const auto dropped_as = [&](const std::string& reason, const protocol::Message& bad) {
+    auto sent = std::chrono::steady_clock::now() - std::chrono::seconds(1);
+    return eventually([&] {
+      if (std::chrono::steady_clock::now() - sent > std::chrono::milliseconds(250)) ada.send(bad), sent = std::chrono::steady_clock::now();
+      return counted(reason);
+    }, std::chrono::seconds(30));
+  };
+  EXPECT_TRUE(dropped_as("crop-not-jpeg", protocol::FaceCrop{.time_ms = 5000, .frame_width = 64, .frame_height = 64, .x = 0, .y = 0, .width = 64,
+                                                              .height = 64, .jpeg = protocol::Bytes{0x89, 'P', 'N', 'G', 0, 0}}))
+      << metrics_of(server);
+  EXPECT_TRUE(dropped_as("voice-too-large", protocol::VoiceFrame{.member = 0, .time_ms = 5000, .opus = protocol::Bytes(600, 0x11)})) << metrics_of(server);
+  EXPECT_TRUE(dropped_as("voice-not-opus", protocol::VoiceFrame{.member = 0, .time_ms = 5020, .opus = protocol::Bytes{0x03, 0x00}})) << metrics_of(server);
   ada.send(protocol::ExpressionCode{.code = 4, .intensity = 255});
   ASSERT_TRUE(eventually([&] { return ada.refusals() == 1; }));
   EXPECT_NE(ada.refusal().find("only as themselves"), std::string::npos) << ada.refusal();
-  const std::string metrics = metrics_of(server);
-  for (const char* reason : {"crop-not-jpeg", "voice-too-large", "voice-not-opus"})
-    EXPECT_NE(metrics.find(std::string("inkwire_call_dropped_total{reason=\"") + reason + "\"} 1"), std::string::npos) << reason << "\n" << metrics;
   EXPECT_TRUE(listener.connected() && ada.connected());
 
   // Leaving takes the member out of everyone's roster.
@@ -146,13 +163,25 @@ TEST(CallE2ETest, FloodsOversizedCropsAndAFacelessCameraAreRefusedOrReportedWhil
   ASSERT_TRUE(reported()) << "the faceless camera is not reported after 15 s of crops";
   EXPECT_FALSE(blank.face_region() && blank.face_region()->found);
 
-  // Thirty crops at once (a second's allowance is 15) and one of 40 KB.
+  // Thirty crops at once (a second's allowance is 15): some are dropped as too frequent.
+  const auto dropped_for = [&](const std::string& reason) {
+    return metrics_of(server).find("inkwire_call_dropped_total{reason=\"" + reason + "\"}") != std::string::npos;
+  };
   for (int k = 0; k < 30; ++k)
     blank.send(protocol::FaceCrop{.time_ms = 5000, .frame_width = 160, .frame_height = 120, .x = 0, .y = 0, .width = 160, .height = 120, .jpeg = wall_jpeg});
-  std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+  ASSERT_TRUE(eventually([&] { return dropped_for("crop-too-frequent"); })) << metrics_of(server);
+  // One of 40 KB: dropped as too large once the allowance has come back (sent again until the
+  // server counts it; before that it may still count as too frequent).
   protocol::Bytes big(40 * 1024, 0x42);
   big[0] = 0xff, big[1] = 0xd8, big[2] = 0xff;
-  blank.send(protocol::FaceCrop{.time_ms = 6000, .frame_width = 160, .frame_height = 120, .x = 0, .y = 0, .width = 160, .height = 120, .jpeg = big});
+  auto sent_big = std::chrono::steady_clock::now() - std::chrono::seconds(1);
+  ASSERT_TRUE(eventually([&] {
+    if (std::chrono::steady_clock::now() - sent_big > std::chrono::milliseconds(250)) {  // well within the allowance
+      blank.send(protocol::FaceCrop{.time_ms = 6000, .frame_width = 160, .frame_height = 120, .x = 0, .y = 0, .width = 160, .height = 120, .jpeg = big});
+      sent_big = std::chrono::steady_clock::now();
+    }
+    return dropped_for("crop-too-large");
+  }, std::chrono::seconds(30))) << metrics_of(server);
 
   // Mallory floods: two thousand voice packets as fast as the socket takes them.
   const auto voice = voice_packets(1);
@@ -167,37 +196,58 @@ TEST(CallE2ETest, FloodsOversizedCropsAndAFacelessCameraAreRefusedOrReportedWhil
   EXPECT_TRUE(eventually([&] { return !named(listener.roster(), "Mallory"); })) << "the flooder stays in the roster";
 }
 
-// A client of protocol version 7 (before faces came in layers) still joins a call and reads every
-// frame it is sent (SPEC "Versioning"): a member's face comes to it as member-face, one code,
-// never as member-layers, which its decoder would refuse. Read here as raw frames by type.
-TEST(CallE2ETest, AClientOfVersion7IsSentMemberFacesNotLayers) {
+// Clients of protocol versions 7 (before rooms) and 8 (before faces came in layers) still join a
+// call and read every frame they are sent (SPEC "Versioning"): a member's face comes to them as
+// member-face, one code, never as member-layers, which their decoders would refuse; version 7's
+// join has no open_room and its rosters no host or lock. Read here as raw frames, by the bytes
+// each version's codec writes and reads.
+class CallOldClientE2ETest : public ::testing::TestWithParam<uint16_t> {};
+
+TEST_P(CallOldClientE2ETest, IsSentMemberFacesNotLayers) {
   if (!fs::exists(kFaceModel) || !fs::exists(kDlibPhoto)) GTEST_SKIP() << "libdlib-data's model or libdlib-dev's example photo is missing";
-  const fs::path dir = output_dir("call-version-7");
+  const uint16_t version = GetParam();
+  const fs::path dir = output_dir("call-version-" + std::to_string(version));
   ServerUnderTest server(dir, {{"http", "127.0.0.1:0"}, {"sessions", {{{"name", "call"}, {"kind", "conference"}}}}});
   asio::io_context io;
   asio::ip::tcp::socket old(io);
   old.connect(server.endpoint());
-  for (const protocol::Message& m : {protocol::Message(protocol::Hello{.magic = protocol::kMagic, .version = 7, .client_name = "old"}),
-                                     protocol::Message(protocol::Join{.session = "call", .token = ""})}) {
-    const protocol::Bytes frame = protocol::encode(m);
-    asio::write(old, asio::buffer(frame));
+  const protocol::Bytes hello = protocol::encode(protocol::Hello{.magic = protocol::kMagic, .version = version, .client_name = "old"});
+  protocol::Bytes join = protocol::encode(protocol::Join{.session = "call", .token = ""});
+  if (version < 8) {  // session and token only
+    join.pop_back();
+    const auto payload = uint32_t(join.size() - protocol::kHeaderBytes);
+    for (int i = 0; i < 4; ++i) join[size_t(i)] = uint8_t(payload >> (8 * i));
   }
+  asio::write(old, asio::buffer(hello));
+  asio::write(old, asio::buffer(join));
   std::mutex mutex;  // guards what the reader saw
   std::map<protocol::MessageType, int> seen;
   std::optional<uint16_t> welcomed;
+  std::vector<std::string> unreadable;  // frames this version's reader would refuse
   std::atomic<bool> reading{true};
   std::thread reader([&] {
-    protocol::FrameDecoder decoder;
+    protocol::Bytes pending;
     std::array<uint8_t, 4096> buffer{};
     std::error_code ec;
     while (reading) {
       const size_t n = old.read_some(asio::buffer(buffer), ec);
       if (ec) return;
-      decoder.feed(buffer.data(), n);
-      while (auto m = decoder.next()) {
+      pending.insert(pending.end(), buffer.begin(), buffer.begin() + long(n));
+      while (pending.size() >= protocol::kHeaderBytes) {
+        const protocol::FrameHeader h = protocol::parse_header(pending.data());
+        if (pending.size() < protocol::kHeaderBytes + h.length) break;
+        protocol::Bytes payload(pending.begin() + protocol::kHeaderBytes, pending.begin() + long(protocol::kHeaderBytes + h.length));
+        pending.erase(pending.begin(), pending.begin() + long(protocol::kHeaderBytes + h.length));
         std::lock_guard lock(mutex);
-        ++seen[protocol::type_of(*m)];
-        if (const auto* w = std::get_if<protocol::Welcome>(&*m)) welcomed = w->version;
+        ++seen[h.type];
+        // Version 7's roster ends before the host and lock this version's reader wants after it.
+        if (version < 8 && h.type == protocol::MessageType::Roster) payload.insert(payload.end(), {0, 0, 0});
+        try {
+          const protocol::Message m = protocol::decode(h.type, payload.data(), payload.size());
+          if (const auto* w = std::get_if<protocol::Welcome>(&m)) welcomed = w->version;
+        } catch (const protocol::ProtocolError& e) {
+          unreadable.push_back(std::string(protocol::name_of(h.type)) + ": " + e.what());
+        }
       }
     }
   });
@@ -222,11 +272,16 @@ TEST(CallE2ETest, AClientOfVersion7IsSentMemberFacesNotLayers) {
   old.shutdown(asio::ip::tcp::socket::shutdown_both);
   reader.join();
   std::lock_guard lock(mutex);
-  EXPECT_EQ(welcomed, std::optional<uint16_t>(7)) << "the welcome says the version it is spoken to in";
-  EXPECT_TRUE(faced) << "no member-face reached the client of version 7";
-  EXPECT_EQ(seen[protocol::MessageType::MemberLayers], 0) << "a member-layers, which version 7 cannot read";
+  EXPECT_EQ(welcomed, std::optional<uint16_t>(version)) << "the welcome says the version it is spoken to in";
+  EXPECT_TRUE(faced) << "no member-face reached the client of version " << version;
+  EXPECT_EQ(seen[protocol::MessageType::MemberLayers], 0) << "a member-layers, which version " << version << " cannot read";
+  EXPECT_EQ(seen[protocol::MessageType::Error], 0) << "its join was refused";
   EXPECT_GT(seen[protocol::MessageType::Roster], 0);
+  EXPECT_TRUE(unreadable.empty()) << unreadable.front();
 }
+
+INSTANTIATE_TEST_SUITE_P(Versions, CallOldClientE2ETest, ::testing::Values(uint16_t(7), uint16_t(8)),
+                         [](const auto& info) { return "Version" + std::to_string(info.param); });
 
 // A smile while speaking (SPEC F21): the camera shows a still smile while the member talks in
 // syllables; the listener's faces keep the smile as their expression while their mouth opens and

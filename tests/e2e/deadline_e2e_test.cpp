@@ -132,6 +132,31 @@ TEST(DeadlineE2ETest, AQuietClientThatAnswersPingsStaysForThreeDeadlines) {
   EXPECT_TRUE(log_events(server.process().output(), "idle-timeout").empty()) << server.process().output();
 }
 
+// Regression: a member that talks (it steers a scene it is alone in) but is sent nothing was
+// never pinged, since the server pinged only peers it had not heard from; the client, hearing
+// nothing from the server for SessionClient::kServerSilence, took it as gone and dropped the
+// connection every 15 s. Now it is pinged within a beat or two as well.
+TEST(DeadlineE2ETest, AMemberThatTalksButIsSentNothingIsPingedAllTheSame) {
+  if (!fs::exists(kMesh)) GTEST_SKIP() << "libcgal-demo's cow.off is not extracted (run scripts/setup.sh)";
+  const fs::path dir = output_dir("deadline-talker");
+  ServerUnderTest server(dir, config());
+  RawClient talker(server);
+  talker.hello_and_join("Talker", "cows");
+  protocol::FrameDecoder decoder;
+  talker.socket().non_blocking(true);
+  std::array<uint8_t, 65536> buffer{};
+  bool pinged = false;
+  const auto start = std::chrono::steady_clock::now();
+  for (uint32_t sequence = 1; !pinged && seconds_since(start) < 6 * kBeat + 5; ++sequence) {
+    talker.send(protocol::CameraPose{.sequence = sequence, .position = {0, 0, 3}, .target = {0, 0, 0}, .up = {0, 1, 0}, .fov_y_degrees = 40});
+    std::error_code ec;
+    for (size_t n; (n = talker.socket().read_some(asio::buffer(buffer), ec)) > 0 && !ec;) decoder.feed(buffer.data(), n);
+    while (const auto m = decoder.next()) pinged |= std::holds_alternative<protocol::Ping>(*m);
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));  // a drag's pace
+  }
+  EXPECT_TRUE(pinged) << "a member that talks but hears nothing was never pinged in " << seconds_since(start) << " s";
+}
+
 TEST(DeadlineE2ETest, AClientNoticesAServerThatStoppedAnswering) {
   const fs::path dir = output_dir("deadline-dead-server");
   ServerUnderTest server(dir, config());

@@ -47,8 +47,10 @@ class Process {
   void kill(int signal) const {
     if (running()) ::kill(pid_, signal);
   }
-  // Exit status (or 128 + signal); -1 if it did not end within the timeout.
-  int wait(std::chrono::milliseconds timeout = std::chrono::seconds(60)) {
+  // Exit status (or 128 + signal); -1 if it did not end within the timeout (generous: making a
+  // product from 24 photos took over a minute with both cores busy elsewhere; ctest's own
+  // timeout of 300 s is the last word).
+  int wait(std::chrono::milliseconds timeout = std::chrono::seconds(240)) {
     const auto deadline = std::chrono::steady_clock::now() + timeout;
     while (!exited_) {
       int status = 0;
@@ -77,9 +79,11 @@ class Process {
   int status_ = -1;
 };
 
-// Waits until `predicate` holds, polling; false on timeout.
+// Waits until `predicate` holds, polling; false on timeout (one generous timeout: what a test
+// waits for comes in a second or two on a quiet machine, and may take ten times as long when both
+// cores are busy with something else).
 template <class Predicate>
-bool eventually(Predicate predicate, std::chrono::milliseconds timeout = std::chrono::seconds(20)) {
+bool eventually(Predicate predicate, std::chrono::milliseconds timeout = std::chrono::seconds(60)) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   while (!predicate()) {
     if (std::chrono::steady_clock::now() > deadline) return false;

@@ -227,9 +227,9 @@ TEST_F(TurntableE2ETest, RowsOfPhotosTurnUpAndDownAClientTurnedUpSeesTheUpperRow
   Process add("inkwire-server", {"add-product", "duck", "--photos", (dir / "photos").string(), "--step", "-30", "--elevations", "0,25,50",
                                  "--data", (dir / "data").string()},
               dir / "add.log");
-  // Finding the shape of 36 photos takes half a minute alone on this machine's two cores, longer
-  // beside other tests.
-  ASSERT_EQ(add.wait(std::chrono::seconds(240)), 0) << add.output();
+  // Finding the shape of 36 photos takes half a minute alone on this machine's two cores, and
+  // several minutes when they are busy with other work (ctest gives this test 600 s).
+  ASSERT_EQ(add.wait(std::chrono::seconds(540)), 0) << add.output();
   EXPECT_EQ(count_lines_starting(add.output(), "pair "), 2 * 2 * 12) << add.output();  // two triangles a quad
   EXPECT_NE(add.output().find("shape from the mattes"), std::string::npos) << add.output();
   EXPECT_NE(add.output().find("stored product 'duck': 36 photos 256x256"), std::string::npos) << add.output();
@@ -434,11 +434,13 @@ TEST_F(TurntableE2ETest, FollowersShowTheEditorsViewAVisitorWhoTriesToPresentIsR
   };
   const auto followed = frame_log(dir / "follower.jsonl");
   for (const auto& f : followed) EXPECT_TRUE(was_presented(f["product"]["azimuth"].get<double>())) << f.dump();
-  // The visitor's own turn, untouched: 200 degrees and 2 degrees a frame, sending nothing.
+  // The visitor's own turn, untouched: 200 degrees and 2 degrees a frame, sending nothing but
+  // its answers to the server's heartbeat (a pong is 14 bytes: the 6-byte header and the nonce;
+  // on a loaded machine its 3 s last past a heartbeat).
   const auto own = frame_log(dir / "visitor.jsonl");
   for (size_t i = 0; i < own.size(); ++i) {
     EXPECT_NEAR(on_the_circle(own[i]["product"]["azimuth"].get<double>() - (200.0 + 2.0 * double(i))), 0.0, 0.01);
-    EXPECT_EQ(own[i]["product"]["bytes_sent"], own[0]["product"]["bytes_sent"]);
+    EXPECT_EQ((own[i]["product"]["bytes_sent"].get<uint64_t>() - own[0]["product"]["bytes_sent"].get<uint64_t>()) % 14, 0u) << own[i].dump();
   }
 
   // One who follows later joins at the presenter's last view (the session keeps it) and shows

@@ -2,7 +2,7 @@
 // `inkwire-eval tween-ring`: every photo of a real ring synthesised from its two neighbours by
 // nearest sample, cross-fade and tween (automatic landmarks + warp), each compared with the
 // real photo (PSNR, SSIM), and the share of landmarks off their epipolar line (certainly wrong).
-// CONTRACTS.md fixes the JSON shape.
+// docs/cli.md fixes the JSON shape.
 #include <filesystem>
 #include <string>
 

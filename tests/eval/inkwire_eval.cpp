@@ -1,4 +1,4 @@
-// inkwire-eval: quality figures on real data sets (CONTRACTS.md).
+// inkwire-eval: quality figures on real data sets (docs/cli.md).
 //   inkwire-eval faces --dataset DIR --json OUT.json        (Yale-style subjectNN_label photos)
 //   inkwire-eval face-templates --dataset DIR --subjects 01-08 --out TEMPLATES.json --json OUT.json
 //   inkwire-eval tween-ring --dataset DIR --json OUT.json   (templeRing-style ring of photos)

@@ -25,7 +25,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       const server::CallShare s = server::parse_call_share(text);
       const server::CallShare back = server::parse_call_share(server::call_share(s));
       if (back.origin != s.origin || back.session != s.session || back.message != s.message || back.photo_member != s.photo_member ||
-          back.photo != s.photo || back.landmarks != s.landmarks)
+          back.photo != s.photo || back.landmarks != s.landmarks || back.removal != s.removal)
         __builtin_trap();
     } else if (data[0] % 3 == 1) {
       const server::BrokerEvent e = server::parse_event(text);

@@ -243,7 +243,8 @@ TEST(RealPhotosGLTest, MidwayViewsKeepTheProductsShadowAndDropTheBackdrop) {
     panels.push_back(view);
   }
   // Torn: a shadow pixel the view shows at under 0.3 of the truth's darkness, where one photo sees
-  // the truck's foot and the other clear floor (73 of 2 889 on 2026-11-27; docs/benchmarks.md).
+  // the truck's foot and the other clear floor (73 of 2 889 on 2026-11-27;
+  // docs/benchmarks-journal.md).
   std::printf("%d of %d shadow pixels torn\n", all_torn, all_shadow_pixels);
   EXPECT_LT(all_torn, 0.05 * all_shadow_pixels);
   save_image(side_by_side(panels), fs::path(INKWIRE_TEST_OUTPUT_DIR) / "real-photos-shadow.png", false);

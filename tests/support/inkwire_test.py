@@ -13,6 +13,36 @@ import time
 PROTOCOL_VERSION = json.load(open(os.path.join(os.path.dirname(__file__), "..", "golden", "protocol-frames.json")))["version"]
 
 
+def wait_until(condition, timeout, poll=0.1, ignore=()):
+    """Polls `condition` until it answers something true, and returns that answer; on timeout
+    returns its last answer (false), for the check after it to say what was seen. The one way the
+    tests wait: for a state, an event, a log line or a file, each with one generous timeout that
+    a loaded machine does not reach, never for a fixed time. Exceptions of the `ignore` types
+    count as "not yet" (a page still loading answers a script with an error)."""
+    end = time.time() + timeout
+    while True:
+        try:
+            value = condition()
+        except ignore:
+            value = None
+        if value or time.time() >= end:
+            return value
+        time.sleep(poll)
+
+
+def steady(read, still=0.5, timeout=60, poll=0.05):
+    """`read()` once its answer has stopped changing (the same for `still` seconds: a fling or a
+    stream of fetches has ended), within `timeout`: that answer."""
+    end, value = time.time() + timeout, read()
+    since = time.time()
+    while time.time() < end and time.time() - since < still:
+        time.sleep(poll)
+        now = read()
+        if now != value:
+            value, since = now, time.time()
+    return value
+
+
 def skip(reason):
     print(f"SKIPPED: {reason}")
     sys.exit(0)
@@ -44,16 +74,16 @@ class Server:
         self.process = subprocess.Popen([f"{bin_dir}/inkwire-server", "--listen", "127.0.0.1:0", "--data", data, "--config", path],
                                         stderr=self.log)
         self.tcp = self.http = 0
-        for _ in range(300):
+
+        def listening():
             for event in self.events():
                 if event.get("event") == "listening":
                     self.tcp = event["port"]
                 if event.get("event") == "http-listening":
                     self.http = event["port"]
-            if self.tcp and (self.http or "http" not in config):
-                return
-            time.sleep(0.1)
-        raise SystemExit(f"the server did not start: {self.text()}")
+            return self.tcp and (self.http or "http" not in config) or self.process.poll() is not None
+        if not wait_until(listening, 60) or self.process.poll() is not None:
+            raise SystemExit(f"the server did not start: {self.text()}")
 
     def events(self):
         self.log.seek(0)
@@ -64,8 +94,16 @@ class Server:
         return self.log.read()
 
     def stop(self):
+        """Ends the server as an operator would (SIGTERM); one still draining its members after
+        30 s (a browser's long-lived fetch holds its socket up to the idle deadline) is killed,
+        so a test's end never hangs or leaves it running."""
         self.process.terminate()
-        self.process.wait(timeout=10)
+        try:
+            self.process.wait(timeout=30)
+        except subprocess.TimeoutExpired:
+            print(f"the server took over 30 s to stop: killed ({self.text().splitlines()[-1:]})")
+            self.process.kill()
+            self.process.wait(timeout=10)
 
 
 def read_image(path, scratch):

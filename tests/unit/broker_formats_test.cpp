@@ -64,14 +64,17 @@ TEST(BrokerFormatsTest, AnythingElseIsRefusedWithAReason) {
   EXPECT_THROW(parse_session_definition("3:abc" + text_of(protocol::encode(protocol::Ping{}))), protocol::ProtocolError);
 }
 
-// A call's traffic between instances: a voice frame, a face, a roster and a photo come back as
-// they went; a message a call does not share and a truncated photo are refused.
+// A call's traffic between instances: a voice frame, a face, a roster (with its room's host and
+// lock), a photo and a room's removal of a member come back as they went; a message a call does
+// not share, a truncated photo or removal are refused.
 TEST(BrokerFormatsTest, ACallsShareComesBackAsItWentAndOtherMessagesAreRefused) {
   const std::vector<CallShare> shares = {
       {.origin = "one", .session = "call", .message = protocol::VoiceFrame{.member = 3, .time_ms = 120, .opus = protocol::Bytes(40, 7)}},
       {.origin = "one", .session = "call", .message = protocol::MemberFace{.member = 3, .time_ms = 140, .yaw = -9}},
       {.origin = "one", .session = "call", .message = protocol::Roster{.you = 0, .members = {protocol::CallMember{.member = 3, .name = "Ada"}}}},
-      {.origin = "one", .session = "call", .photo_member = 3, .photo = protocol::Bytes(5000, 0xd8), .landmarks = "{\"points\": []}"}};
+      {.origin = "one", .session = "call", .photo_member = 3, .photo = protocol::Bytes(5000, 0xd8), .landmarks = "{\"points\": []}"},
+      {.origin = "one", .session = "call", .message = protocol::Roster{.you = 0, .members = {protocol::CallMember{.member = 3, .name = "Ada"}}, .host = 3, .locked = true}},
+      {.origin = "one", .session = "call", .removal = CallShare::Removal{.instance = "two", .member = 5, .reason = "the host removed you from room call"}}};
   for (const CallShare& s : shares) {
     const CallShare back = parse_call_share(call_share(s));
     EXPECT_EQ(back.origin, s.origin);
@@ -80,7 +83,11 @@ TEST(BrokerFormatsTest, ACallsShareComesBackAsItWentAndOtherMessagesAreRefused) 
     EXPECT_EQ(back.photo_member, s.photo_member);
     EXPECT_EQ(back.photo, s.photo);
     EXPECT_EQ(back.landmarks, s.landmarks);
+    EXPECT_EQ(back.removal, s.removal);
   }
+  const std::string removal = call_share(shares[5]);
+  for (size_t cut : {size_t(1), size_t(10), removal.size() - 1}) EXPECT_THROW(parse_call_share(removal.substr(0, cut)), protocol::ProtocolError) << cut;
+  EXPECT_THROW(parse_call_share("R3:one4:call3:two0 2:no"), protocol::ProtocolError) << "member 0";
   EXPECT_THROW(parse_call_share(call_share({.origin = "one", .session = "call", .message = protocol::StyleChange{}})), protocol::ProtocolError);
   const std::string photo = call_share(shares[3]);
   for (size_t cut : {size_t(1), size_t(10), photo.size() / 2, photo.size() - 1}) EXPECT_THROW(parse_call_share(photo.substr(0, cut)), protocol::ProtocolError) << cut;

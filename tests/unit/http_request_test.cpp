@@ -4,6 +4,7 @@
 
 #include "common/error.hpp"
 #include "server/web/http_request.hpp"
+#include "server/web/http_server.hpp"
 
 using namespace inkwire::server;
 
@@ -24,4 +25,17 @@ TEST(HttpRequestTest, AQueryValueIsPercentDecodedAndAMalformedOneIsEmpty) {
   EXPECT_EQ(query_value("/p?token=bad%zz", "token"), "");
   EXPECT_EQ(query_value("/p", "token"), "");
   EXPECT_EQ(query_value("/p?token=", "token"), "");
+}
+
+// Regression: with allowed_origins naming a shop, the server's own pages were refused their
+// WebSocket (its scene page said "closed before it opened").
+TEST(HttpRequestTest, TheServersOwnPagesAreAllowedWhateverElseIsAndStarAllowsEveryOrigin) {
+  using inkwire::server::origin_allowed;
+  const std::vector<std::string> shop = {"https://shop.example"};
+  EXPECT_TRUE(origin_allowed("http://127.0.0.1:8080", "127.0.0.1:8080", shop));
+  EXPECT_TRUE(origin_allowed("https://shop.example", "127.0.0.1:8080", shop));
+  EXPECT_FALSE(origin_allowed("https://evil.example", "127.0.0.1:8080", shop));
+  EXPECT_FALSE(origin_allowed("https://evil.example", "127.0.0.1:8080", {}));
+  EXPECT_TRUE(origin_allowed("", "127.0.0.1:8080", {})) << "not from a page";
+  EXPECT_TRUE(origin_allowed("https://anyone.example", "127.0.0.1:8080", {"*"}));
 }

@@ -42,7 +42,7 @@ std::vector<Message> every_message() {
           ErrorMessage{.code = ErrorCode::BadToken, .reason = "wrong token for session demo"},
           Ping{.nonce = 0x0123456789abcdefULL},
           Pong{.nonce = 42},
-          Join{.session = "demo", .token = "s3cret"},
+          Join{.session = "demo", .token = "s3cret", .open_room = true},
           Leave{},
           Snapshot{.session = "demo", .kind = SessionKind::Turntable, .revision = 17, .assets = {asset, asset},
                    .style = style, .camera = camera, .object = object, .expression = expression,
@@ -67,13 +67,16 @@ std::vector<Message> every_message() {
           Roster{.you = 2, .members = {CallMember{.member = 2, .name = "Ada", .camera = true, .microphone = true, .speaking = false, .face_found = true, .assets = {}},
                                        CallMember{.member = 3, .name = "Grace", .camera = false, .microphone = true, .speaking = true, .face_found = false,
                                                   .assets = {AssetAnnounce{.hash = sample_hash(4), .size = 5000, .kind = AssetKind::Image, .name = "face.jpg"},
-                                                             AssetAnnounce{.hash = sample_hash(5), .size = 900, .kind = AssetKind::Landmarks, .name = "face.landmarks.json"}}}}},
+                                                             AssetAnnounce{.hash = sample_hash(5), .size = 900, .kind = AssetKind::Landmarks, .name = "face.landmarks.json"}}}},
+                 .host = 2, .locked = true},
           Permissions{.refused = {{.change = MessageType::StyleChange, .reason = "only the session's editors may change the style; you follow them"},
                                   {.change = MessageType::CameraPose, .reason = "only the session's editors may move the camera; you follow them"}}},
           FaceVideo{.time_ms = 123500, .sequence = 31, .frame_width = 640, .frame_height = 480, .x = 200, .y = 100, .width = 240, .height = 240,
                     .key = false, .vp8 = Bytes(300, 0x31)},
           KeyFrameRequest{},
           VoiceRoute{.ticket = "0123456789abcdef0123456789abcdef"},
+          HostKey{.key = "fedcba9876543210fedcba9876543210"},
+          RoomControl{.action = RoomAction::Remove, .member = 3},
           MemberLayers{.member = 3, .time_ms = 123456, .yaw = -25, .pitch = 12, .roll = 20, .expression = {inkwire::Expression::Smile, 180},
                        .mouth = {inkwire::Expression::VisemeOpen, 140}, .eye_left = 35, .eye_right = 110, .source = FaceSource::Camera}};
 }
@@ -191,6 +194,9 @@ TEST(ProtocolTest, ValuesOutOfRangeAreRejected) {
   reject(StyleChange{.renderer = "../../etc", .settings = {}});
   reject(Join{.session = "a b", .token = ""});
   reject(Join{.session = "demo\n", .token = ""});
+  reject(HostKey{.key = "not a key"});
+  reject(RoomControl{.action = RoomAction::Lock, .member = 3});
+  reject(RoomControl{.action = RoomAction::Remove, .member = 0});
   reject(AssetAnnounce{.hash = {}, .size = 1, .kind = AssetKind::Mesh, .name = "../passwd"});
   reject(AssetRequest{.hash = {}, .offset = 0, .length = 0});
   auto product = [](Product p) {

@@ -1,6 +1,6 @@
 // What the browser's turntable and call voice compute in JS as the C++ client does (issue:
 // one implementation of each algorithm; the warps stay in JS for the element's first-view budget,
-// docs/benchmarks.md; faces are drawn by the C++ itself, compiled into the browser's module): the C++ answers for fixed inputs, written to tests/golden/warp-vectors.json
+// docs/benchmarks-journal.md; faces are drawn by the C++ itself, compiled into the browser's module): the C++ answers for fixed inputs, written to tests/golden/warp-vectors.json
 // and checked by client/web/test/ (warp, turntable_pose and voice tests). A change to either side fails one of the two until
 // both agree and the file is approved again (INKWIRE_APPROVE_GOLDEN=1).
 #include <algorithm>
@@ -24,6 +24,7 @@
 #include "client/viewer/photo_fetch.hpp"
 #include "client/viewer/turntable_view.hpp"
 #include "client/viewer/window_input.hpp"
+#include "common/camera.hpp"
 #include "common/distance_field.hpp"
 #include "common/tween/view_sphere.hpp"
 #include "common/tween/warp_mesh.hpp"
@@ -322,11 +323,36 @@ TEST(WarpVectorsTest, AFlingIsHeldToATurnASecondAndCoastsToAStop) {
   EXPECT_NEAR(turned, start * kInertiaSeconds, 0.1 * start * kInertiaSeconds) << "about its speed times the time constant";
 }
 
+// The turntable's framing (fit_scale) in elements of every shape: landscape and square ones wider
+// than the photos, a phone held upright (390 x 844) with square and landscape photos, and
+// degenerate sizes (nothing to fit).
+nlohmann::json framing_cases() {
+  nlohmann::json cases = nlohmann::json::array();
+  for (const auto& [viewport, picture] : std::vector<std::pair<float, float>>{{620.0f / 500, 1}, {1, 1}, {1, 4.0f / 3}, {390.0f / 844, 1},
+                                                                              {390.0f / 844, 640.0f / 480}, {844.0f / 390, 600.0f / 338}, {0, 1}})
+    cases.push_back({{"viewport_aspect", viewport}, {"picture_aspect", picture}, {"scale", fit_scale(viewport, picture)}});
+  return cases;
+}
+
+TEST(WarpVectorsTest, APortraitViewportShowsTheWholePictureAndAWideOneItsFullHeight) {
+  EXPECT_FLOAT_EQ(fit_scale(620.0f / 500, 1), 1.0f) << "wider than the picture: full height";
+  EXPECT_NEAR(fit_scale(390.0f / 844, 1) * 844, 390, 1e-3) << "upright phone: the picture as wide as the screen";
+  // A scene's field of view spans the width of a portrait viewport: a point at the edge of a
+  // square viewport's field lands at the edge of a portrait one's width.
+  Camera c;
+  const glm::vec4 edge(std::tan(glm::radians(c.fov_y_degrees) / 2.0f), 0.0f, -1.0f, 1.0f);
+  const glm::vec4 square = c.projection(1.0f) * edge, portrait = c.projection(390.0f / 844) * edge;
+  EXPECT_NEAR(square.x / square.w, 1.0f, 1e-5f);
+  EXPECT_NEAR(portrait.x / portrait.w, 1.0f, 1e-5f) << "the object's width fits the phone's";
+  const glm::vec4 wide = c.projection(2.0f) * glm::vec4(0.0f, edge.x, -1.0f, 1.0f);
+  EXPECT_NEAR(wide.y / wide.w, 1.0f, 1e-5f) << "a landscape viewport keeps fov_y across its height";
+}
+
 TEST(WarpVectorsTest, GoldenVectorsForTheWebClientAreTheseNumbers) {
   const nlohmann::json golden = {{"delaunay", delaunay_cases()}, {"warp_meshes", warp_mesh_cases()}, {"distance_field", distance_case()},
                                  {"matte_samples", matte_cases()}, {"locate_view", locate_cases()}, {"photo_fetch", photo_fetch_cases()},
                                  {"turntable", turntable_cases()}, {"playout", playout_cases()},
-                                 {"face_crop", face_crop_cases()}, {"inertia", inertia_cases()},
+                                 {"face_crop", face_crop_cases()}, {"inertia", inertia_cases()}, {"framing", framing_cases()},
                                  {"shader_header", gl::kWebGlShaderHeader}};
   const std::filesystem::path file = std::filesystem::path(INKWIRE_GOLDEN_DIR) / "warp-vectors.json";
   if (const char* approve = std::getenv("INKWIRE_APPROVE_GOLDEN"); approve && std::string(approve) == "1") {

@@ -13,7 +13,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
-from inkwire_test import PROTOCOL_VERSION, Checks, Server, psnr, read_image, skip  # noqa: E402,F401  (re-exported for the tests)
+from inkwire_test import PROTOCOL_VERSION, Checks, Server, psnr, read_image, skip, steady, wait_until  # noqa: E402,F401  (re-exported for the tests)
 
 try:
     from selenium import webdriver
@@ -32,8 +32,10 @@ GL_FLAGS = {"swiftshader": ("--disable-gpu", "--use-angle=swiftshader", "--enabl
             "llvmpipe": ("--use-angle=gl-egl", "--ignore-gpu-blocklist")}
 
 
-def chromium(out, width, height, extra=()):
-    """Headless Chromium; `extra` flags add to this machine's (e.g. fake camera and microphone)."""
+def chromium(out, width, height, extra=(), mobile=False):
+    """Headless Chromium; `extra` flags add to this machine's (e.g. fake camera and microphone).
+    `mobile`: a phone's viewport of exactly `width` x `height` (Chromium's device emulation: a
+    desktop window is never narrower than 500 pixels)."""
     gl = os.environ.get("INKWIRE_BROWSER_GL", "swiftshader")
     if gl not in GL_FLAGS:
         raise SystemExit(f"INKWIRE_BROWSER_GL={gl}: not one of {', '.join(GL_FLAGS)}")
@@ -44,8 +46,14 @@ def chromium(out, width, height, extra=()):
         options.add_argument(a)
     for a in extra:
         options.add_argument(a)
+    if mobile:
+        options.add_experimental_option("mobileEmulation", {"deviceMetrics": {"width": width, "height": height, "pixelRatio": 1.0}})
     options.binary_location = "/usr/bin/chromium"
-    return webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
+    driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
+    # A script waits behind the page's own work, which on a machine whose cores are busy elsewhere
+    # can take long: one generous timeout, not the driver's 30 s.
+    driver.set_script_timeout(300)
+    return driver
 
 
 def face_frames(folder, neutral, smile, seconds):
@@ -109,10 +117,10 @@ def null_sound_server(out):
     daemon = subprocess.Popen(["pulseaudio", "--daemonize=no", "--exit-idle-time=-1", "-n", "--load=module-null-sink sink_name=inkwire",
                                "--load=module-native-protocol-unix", f"--log-target=file:{os.path.join(out, 'pulseaudio.log')}"],
                               env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    for _ in range(50):
-        if os.path.exists(os.path.join(runtime, "pulse", "native")):
-            break
-        time.sleep(0.1)
+    # Up before Firefox starts: a Firefox that finds no sound server keeps its audio suspended
+    # for good.
+    if not wait_until(lambda: os.path.exists(os.path.join(runtime, "pulse", "native")), 60):
+        raise RuntimeError(f"the test's sound server did not start (see {out}/pulseaudio.log)")
     return env, daemon
 
 
@@ -213,10 +221,8 @@ http {{ access_log {prefix}/logs/access.log; client_body_temp_path {prefix}/tmp;
         self.access_log = os.path.join(prefix, "logs", "access.log")
         self.process = subprocess.Popen([binary, "-p", prefix, "-c", os.path.join(prefix, "nginx.conf")],
                                         stderr=open(os.path.join(prefix, "stderr.log"), "w"))
-        for _ in range(100):
-            if os.path.exists(self.access_log):
-                return
-            time.sleep(0.05)
+        if wait_until(lambda: os.path.exists(self.access_log), 30, poll=0.05):
+            return
         raise SystemExit(f"nginx did not start: {open(os.path.join(prefix, 'stderr.log')).read()}")
 
     def log_size(self):

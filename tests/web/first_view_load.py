@@ -91,7 +91,7 @@ async def websocket_visit(port, session, assets, protocol_version):
     async with websockets.connect(f"ws://127.0.0.1:{port}/ws", ping_interval=None, max_size=2**20,
                                   origin=f"http://127.0.0.1:{port}") as ws:
         await ws.send(message(HELLO, struct.pack("<IH", MAGIC, protocol_version) + text("load")))
-        await ws.send(message(JOIN, text(session) + text("")))
+        await ws.send(message(JOIN, text(session) + text("") + b"\0"))  # session, token, open_room
         wanted = {bytes.fromhex(h): size for h, size in assets}
         have = {h: 0 for h in wanted}
         asked = False

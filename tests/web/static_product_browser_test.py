@@ -23,12 +23,11 @@ import os
 import shutil
 import subprocess
 import sys
-import time
 import urllib.error
 import urllib.request
 
 sys.path.insert(0, os.path.dirname(__file__))
-from browser_support import ENGINES, Checks, Nginx, Server, engine, engine_missing, psnr, read_image, skip
+from browser_support import ENGINES, Checks, Nginx, Server, engine, engine_missing, psnr, read_image, skip, wait_until
 
 BIN, OUT = sys.argv[1], sys.argv[2]
 wanted = [a for a in sys.argv[3:] if a in ENGINES] or list(ENGINES)
@@ -128,9 +127,7 @@ try:
                   e.setAttribute('auto-rotate', 'off'); e.id = '{id_}'; e.style.cssText = 'width:{SIZE}px;height:{SIZE}px;display:block';
                   document.body.prepend(e);""")
                 element = f"document.getElementById('{id_}')"
-                end = time.time() + 60
-                while time.time() < end and not driver.execute_script(f"return {element}.hasAttribute('loaded') || !!{element}.message.textContent"):
-                    time.sleep(0.1)
+                wait_until(lambda: driver.execute_script(f"return {element}.hasAttribute('loaded') || !!{element}.message.textContent"), 120)
                 return element
 
             def picture(element, azimuth, label):
@@ -155,9 +152,7 @@ try:
                 db = psnr(picture(static, azimuth, f"static-{azimuth}"), picture(live, azimuth, f"server-{azimuth}"))
                 check(db >= 45, f"{name}: at {azimuth} degrees the static product matches the one from inkwire-server ({db:.1f} dB >= 45)")
             driver.execute_script(f"const e = {static}; e.zoom = 4; e.draw();")
-            end = time.time() + 20
-            while time.time() < end and not any(p.endswith(tuple(zoom_files)) for p, _ in requests_since(log_start)):
-                time.sleep(0.2)
+            wait_until(lambda: any(p.endswith(tuple(zoom_files)) for p, _ in requests_since(log_start)), 60, poll=0.2)
             finer = sum(1 for p, _ in requests_since(log_start) if p.endswith(tuple(zoom_files)))
             check(finer > 0, f"{name}: zoomed in four times, the finer photos come from nginx ({finer})")
 
@@ -189,9 +184,7 @@ try:
             driver.execute_script("return caches.delete('inkwire-assets-v1').then(() => true)")
             for bad, reason in (("version", "version 2, this element reads version 1"), ("changed", "does not match its hash"), ("missing", "answered 404")):
                 e = element_for({"src": f"http://127.0.0.1:{port}/duck-{bad}/product.json"}, f"bad-{bad}")
-                end = time.time() + 30
-                while time.time() < end and not driver.execute_script(f"return {e}.message.textContent"):
-                    time.sleep(0.1)
+                wait_until(lambda: driver.execute_script(f"return {e}.message.textContent"), 60)
                 said = driver.execute_script(f"return {e}.message.textContent")
                 check(reason in said, f"{name}: a product whose {bad} photo or manifest is wrong says so ({said!r})")
                 if bad != "version":

@@ -17,11 +17,10 @@ import os
 import shutil
 import subprocess
 import sys
-import time
 import urllib.request
 
 sys.path.insert(0, os.path.dirname(__file__))
-from browser_support import Checks, Server, chromium, psnr, read_image, skip  # skips without the browser
+from browser_support import Checks, Server, chromium, psnr, read_image, skip, steady, wait_until  # skips without the browser
 from selenium.webdriver.common.action_chains import ActionChains
 
 BIN, OUT = sys.argv[1], sys.argv[2]
@@ -63,9 +62,7 @@ def loaded_element(id_, session):
       e.setAttribute('session', '{session}'); e.setAttribute('auto-rotate', 'off'); e.id = '{id_}';
       e.style.cssText = 'width:{SIZE}px;height:{SIZE}px'; document.body.prepend(e);""")
     element = f"document.getElementById('{id_}')"
-    end = time.time() + 60
-    while time.time() < end and not driver.execute_script(f"return {element}.hasAttribute('loaded')"):
-        time.sleep(0.1)
+    wait_until(lambda: driver.execute_script(f"return {element}.hasAttribute('loaded')"), 120)
     return element
 
 
@@ -88,9 +85,7 @@ try:
     driver.execute_script(f"""performance.setResourceTimingBufferSize(100000);
       document.body.innerHTML = '<inkwire-turntable session="duck" token="sh0p-0wner" auto-rotate="off" style="width:{SIZE}px;height:{SIZE}px"></inkwire-turntable>';
       import('/inkwire.js');""")
-    start = time.time()
-    while time.time() - start < 60 and not driver.execute_script("return document.querySelector('inkwire-turntable').hasAttribute('loaded')"):
-        time.sleep(0.1)
+    wait_until(lambda: driver.execute_script("return document.querySelector('inkwire-turntable').hasAttribute('loaded')"), 120)
     element = "document.querySelector('inkwire-turntable')"
     check(driver.execute_script(f"return {element}.hasAttribute('loaded')"), "the element loads the product")
     check(driver.execute_script(f"return {element}.firstViewPhotos") == 1, "the first view is drawn after one photo")
@@ -110,8 +105,7 @@ try:
     before = driver.execute_script(f"return {element}.azimuth")
     canvas = driver.execute_script(f"return {element}.canvas")
     ActionChains(driver).move_to_element(canvas).click_and_hold().move_by_offset(60, 0).move_by_offset(40, 0).release().perform()
-    time.sleep(0.3)
-    after = driver.execute_script(f"return {element}.azimuth")
+    after = steady(lambda: driver.execute_script(f"return {element}.azimuth"))  # once its fling has ended
     check(abs(after - before) >= 30, f"a drag of 100 pixels turns the view ({before:.1f} -> {after:.1f} degrees, with inertia)")
     check(driver.execute_script(traffic) == fetched, "the drag fetched nothing")
 
@@ -144,33 +138,28 @@ try:
     check(driver.execute_script(f"return {zoomed}.hasAttribute('loaded')"), "the element loads a product with a zoom level")
     fetched_zoom = f"""const e = {zoomed}, hex = (h) => Array.from(h, (b) => b.toString(16).padStart(2, '0')).join('');
       return e.snapshot.assets.filter((a) => a.kind === 7 && e.product.receivedBy.has(hex(a.hash))).length;"""
-    time.sleep(0.5)
+    # (Whatever the element fetches after loading has ended once its byte count holds still.)
+    steady(lambda: driver.execute_script(f"return {zoomed}.product.bytesReceived"))
     check(driver.execute_script(fetched_zoom) == 0, "not zoomed in, no finer photo is fetched")
     driver.execute_script(f"{zoomed}.setZoom(4)")
-    end = time.time() + 30
-    while time.time() < end and driver.execute_script(f"return {zoomed}.view.finerInView") < 2:
-        time.sleep(0.1)
-        driver.execute_script(f"{zoomed}.redraw()")
+    wait_until(lambda: driver.execute_script(f"{zoomed}.redraw(); return {zoomed}.view.finerInView >= 2"), 60)
     in_view = driver.execute_script(f"return {zoomed}.view.finerInView")
     check(in_view >= 2, f"zoomed in four times, the finer photos the view is drawn from are fetched ({in_view} drawn from)")
     # Then the photos a turn comes to next, till six (kFinerKept) hold the finer level, and no more.
-    end = time.time() + 30
-    while time.time() < end and driver.execute_script(fetched_zoom) < 6:
-        time.sleep(0.1)
-    time.sleep(1.0)
+    wait_until(lambda: driver.execute_script(fetched_zoom) >= 6, 60)
+    steady(lambda: driver.execute_script(f"return {zoomed}.product.bytesReceived"))  # and no more once the fetches have ended
     fetched = driver.execute_script(fetched_zoom)
     check(fetched == 6, f"zoomed in and still, the six photos nearest the view take the finer level and no more ({fetched} of 12)")
     db = against_client(zoomed, "zoom", "zoom", "0,0,4")
     check(db >= 35.0, f"zoomed in four times the browser's view matches the C++ client's at {db:.2f} dB (>= 35)")
     driver.execute_script(f"{zoomed}.remove()")
 
-    # Lifecycle (STYLE 17): moved in the page, the element's handlers are there once, so the same
+    # Lifecycle (what connectedCallback adds, disconnectedCallback removes): moved in the page, the element's handlers are there once, so the same
     # drag turns it as far as before (twice as far when a re-connection added them again). The
     # turn is read while the button is still held: the fling after it depends on how fast a
     # loaded machine delivers the moves, the turn under the pointer does not.
     def turned_by_drag():
-        time.sleep(1.5)  # the last fling dies down
-        start_az = driver.execute_script(f"return {element}.azimuth")
+        start_az = steady(lambda: driver.execute_script(f"return {element}.azimuth"))  # the last fling has died down
         ActionChains(driver).move_to_element(driver.execute_script(f"return {element}.canvas")).click_and_hold() \
             .move_by_offset(30, 0).move_by_offset(30, 0).perform()
         turned = driver.execute_script(f"return {element}.azimuth") - start_az
@@ -178,7 +167,6 @@ try:
         return turned
     first_turn = turned_by_drag()
     driver.execute_script(f"const e = {element}; const box = document.createElement('div'); document.body.prepend(box); box.append(e);")
-    time.sleep(1.0)
     moved_turn = turned_by_drag()
     check(first_turn != 0 and 0.7 < moved_turn / first_turn < 1.4,
           f"moved in the page, a drag turns it once as far ({first_turn:.1f} then {moved_turn:.1f} degrees)")
@@ -192,26 +180,22 @@ try:
       }}
       for (const t of ['a', 'b', 'c', 'd', '']) document.getElementById('spinner').setAttribute('token', t);""")
     loaded = "return ['spinner', 'reference'].every((id) => document.getElementById(id).hasAttribute('loaded'))"
-    end = time.time() + 60
-    while time.time() < end and not driver.execute_script(loaded):
-        time.sleep(0.1)
+    wait_until(lambda: driver.execute_script(loaded), 120)
     azimuths = "return ['spinner', 'reference'].map((id) => document.getElementById(id).azimuth)"
     s0, r0 = driver.execute_script(azimuths)
-    time.sleep(2.0)
+    # Until the one never restarted has spun 20 degrees, however long a loaded machine takes.
+    wait_until(lambda: driver.execute_script(azimuths)[1] - r0 >= 20, 120)
     s1, r1 = driver.execute_script(azimuths)
     check(r1 - r0 > 0 and 0.5 < (s1 - s0) / (r1 - r0) < 1.8,
-          f"after five restarts it auto-spins as fast as an element never restarted ({s1 - s0:.1f} against {r1 - r0:.1f} degrees in 2 s)")
+          f"after five restarts it auto-spins as fast as an element never restarted ({s1 - s0:.1f} against {r1 - r0:.1f} degrees)")
     driver.execute_script("for (const id of ['spinner', 'reference']) document.getElementById(id).remove()")
     # A visitor without the editor token who tries to present is refused, and the element says so.
     driver.execute_script(f"""const e = document.createElement('inkwire-turntable');
       e.setAttribute('session', 'duck'); e.setAttribute('present', ''); e.setAttribute('auto-rotate', 'off'); e.id = 'stranger';
       e.style.cssText = 'width:{SIZE}px;height:{SIZE}px'; document.body.append(e);""")
-    end = time.time() + 30
-    message = ""
-    while time.time() < end and "Refused" not in message:
-        driver.execute_script("const e = document.getElementById('stranger'); e.azimuth = e.azimuth + 5;")
-        message = driver.execute_script("return document.getElementById('stranger').shadowRoot.querySelector('.message').textContent")
-        time.sleep(0.2)
+    message = wait_until(lambda: driver.execute_script("""const e = document.getElementById('stranger'); e.azimuth = e.azimuth + 5;
+      const m = e.shadowRoot.querySelector('.message').textContent; return m.includes('Refused') ? m : '';"""), 60, poll=0.2) or \
+        driver.execute_script("return document.getElementById('stranger').shadowRoot.querySelector('.message').textContent")
     check("only the product's editor may" in message, f"a visitor who presents is told why it is refused: '{message}'")
     driver.execute_script("document.getElementById('stranger').remove()")
 
@@ -224,20 +208,17 @@ try:
       follower.setAttribute('follow', '');
       follower.style.cssText = 'width:{SIZE}px;height:{SIZE}px';
       document.body.appendChild(follower);""")
-    def wait_for(script, seconds=20):
-        start = time.time()
-        while time.time() - start < seconds and not driver.execute_script(script):
-            time.sleep(0.1)
-        return driver.execute_script(script)
+    def wait_for(script, seconds=60):
+        return wait_until(lambda: driver.execute_script(script), seconds)
     check(wait_for(f"return {follower}.hasAttribute('loaded')"), "a following element loads the product")
     driver.execute_script(f"{element}.setAttribute('present', ''); {element}.azimuth = 123.5;")
     check(wait_for(f"return Math.abs({follower}.azimuth - 123.5) < 0.01"),
           f"the follower turns to the presenter's 123.5 degrees ({driver.execute_script(f'return {follower}.azimuth'):.2f})")
     ActionChains(driver).move_to_element(canvas).click_and_hold().move_by_offset(-50, 0).move_by_offset(-30, 0).release().perform()
-    time.sleep(3.0)  # the presenter's inertia dies down
-    presenter_az = driver.execute_script(f"return {element}.azimuth")
-    follower_az = driver.execute_script(f"return {follower}.azimuth")
+    presenter_az = steady(lambda: driver.execute_script(f"return {element}.azimuth"))  # the presenter's fling has died down
     on_the_circle = lambda degrees: (degrees + 180) % 360 - 180
+    wait_until(lambda: abs(on_the_circle(driver.execute_script(f"return {follower}.azimuth") - presenter_az)) < 0.01, 60)
+    follower_az = driver.execute_script(f"return {follower}.azimuth")
     check(abs(on_the_circle(presenter_az - 123.5)) >= 20 and abs(on_the_circle(follower_az - presenter_az)) < 0.01,
           f"after the presenter's drag the follower shows its view ({presenter_az:.2f} -> {follower_az:.2f} degrees)")
     # A presenter shares the product page's address with ?follow; nothing else of the query reaches the page.

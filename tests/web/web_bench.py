@@ -21,10 +21,9 @@ import shutil
 import subprocess
 import sys
 import threading
-import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from browser_support import PROTOCOL_VERSION, Nginx, Server, chromium, psnr, read_image, skip  # skips without the browser
+from browser_support import PROTOCOL_VERSION, Nginx, Server, chromium, psnr, read_image, skip, steady, wait_until  # skips without the browser
 
 BIN, OUT, JSON_OUT = sys.argv[1], sys.argv[2], sys.argv[3]
 TRUCK = "/usr/share/assimp/models/glTF/CesiumMilkTruck/CesiumMilkTruck.gltf"
@@ -115,9 +114,7 @@ def drag_fps(element):
 
 
 def wait_loaded(element):
-    start = time.time()
-    while time.time() - start < 60 and not driver.execute_script(f"return {element}.hasAttribute('loaded')"):
-        time.sleep(0.05)
+    wait_until(lambda: driver.execute_script(f"return {element}.hasAttribute('loaded')"), 60, poll=0.05)
 
 
 def first_view_on_wire(product):
@@ -140,9 +137,7 @@ try:
         driver.execute_script(f"""document.body.style.margin = '0'; performance.clearResourceTimings(); performance.setResourceTimingBufferSize(100000);
           document.body.innerHTML = '<inkwire-turntable session="truck" auto-rotate="off" style="width:{size}px;height:{size}px"></inkwire-turntable>';
           import('/inkwire.js');""")
-        start = time.time()
-        while time.time() - start < 60 and not driver.execute_script(f"return {element}.hasAttribute('loaded')"):
-            time.sleep(0.05)
+        wait_until(lambda: driver.execute_script(f"return {element}.hasAttribute('loaded')"), 60, poll=0.05)
         first_bytes, first_ms, total = driver.execute_script(f"const e = {element}; return [e.firstViewBytes, e.firstViewMs, e.product.bytesReceived];")
         first_wire, first_files = first_view_on_wire(f"http://127.0.0.1:{server.http}/products/truck/")
         fps = drag_fps(element)
@@ -201,19 +196,15 @@ try:
         driver.execute_async_script("const done = arguments[0]; caches.keys().then((k) => Promise.all(k.map((n) => caches.delete(n)))).then(done);")
         driver.execute_script("""document.body.innerHTML =
           '<inkwire-turntable session="truck-zoom" auto-rotate="off" style="width:256px;height:256px"></inkwire-turntable>';""")
-        start = time.time()
-        while time.time() - start < 60 and not driver.execute_script(f"return {element}.hasAttribute('loaded')"):
-            time.sleep(0.05)
+        wait_until(lambda: driver.execute_script(f"return {element}.hasAttribute('loaded')"), 60, poll=0.05)
         if fetch == "drawn-from":
             driver.execute_script(f"""const e = {element}, ahead = e.nextFetch;
               e.nextFetch = function () {{ const n = ahead.call(this);
                 return n && n.level > 0 && !this.view.viewSamples(this.direction()).includes(n.sample) ? null : n; }};""")
         received = driver.execute_script(f"return {element}.product.bytesReceived")
         driver.execute_script(f"{element}.setZoom(4)")
-        start = time.time()
-        while time.time() - start < 30 and driver.execute_script(f"return {element}.view.finerInView") < 2:
-            time.sleep(0.1)
-        time.sleep(3.0)  # the photos ahead, where fetched
+        wait_until(lambda: driver.execute_script(f"return {element}.view.finerInView") >= 2, 30, poll=0.1)
+        steady(lambda: driver.execute_script(f"return {element}.product.bytesReceived"), still=1.0)  # the photos ahead, where fetched
         finer_bytes = driver.execute_script(f"return {element}.product.bytesReceived") - received
         held = driver.execute_script(f"return {element}.view.finer.size")
         frames = driver.execute_async_script(f"""const done = arguments[0], e = {element}, out = [], t0 = performance.now();
@@ -247,9 +238,7 @@ try:
 
     # The spin page: what the browser downloads, per its resource timing (encoded body sizes).
     driver.get(f"http://127.0.0.1:{httpd.server_address[1]}/index.html")
-    start = time.time()
-    while time.time() - start < 30 and driver.execute_script("return window.firstViewMs") is None:
-        time.sleep(0.05)
+    wait_until(lambda: driver.execute_script("return window.firstViewMs") is not None, 30, poll=0.05)
     first_ms = driver.execute_script("return window.firstViewMs")
     first_bytes = driver.execute_script("return performance.getEntriesByType('resource').concat(performance.getEntriesByType('navigation')).reduce((s, r) => s + r.transferSize, 0)")
     fps = sorted(driver.execute_async_script("""const done = arguments[0]; let frames = 0, a = 0; const t0 = performance.now();
@@ -274,7 +263,7 @@ try:
     manifest = json.load(open(os.path.join(www, "truck", "product.json")))
     first = [manifest["photos"][0], manifest["mattes"][0]]
     nginx_pids = [nginx.process.pid] + [int(p) for p in open(f"/proc/{nginx.process.pid}/task/{nginx.process.pid}/children").read().split()]
-    visits = {  # via: CONTRACTS.md's names; inkwire-server is the WebSocket path the ratio is against
+    visits = {  # via: the row names docs/cli.md fixes; inkwire-server is the WebSocket path the ratio is against
         "nginx": (lambda: static_visit(nginx.port, "/truck", [f["file"] for f in first]), nginx_pids),
         "inkwire-server": (lambda: websocket_visit(server.http, "truck", [(f["sha256"], f["size"]) for f in first], PROTOCOL_VERSION),
                            [server.process.pid]),

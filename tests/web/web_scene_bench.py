@@ -14,10 +14,9 @@ import os
 import shutil
 import subprocess
 import sys
-import time
 
 sys.path.insert(0, os.path.dirname(__file__))
-from browser_support import Server, chromium, psnr, read_image, skip  # skips without the browser
+from browser_support import Server, chromium, psnr, read_image, skip, steady, wait_until  # skips without the browser
 
 BIN, OUT, JSON_OUT, BARE_JSON, STYLES = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4], sys.argv[5:]
 MESH = os.path.join(BIN, "..", "packaged-data", "data", "meshes", "cow.off")
@@ -54,9 +53,7 @@ driver.set_script_timeout(600)  # painterly in SwiftShader takes a while for 3 x
 rows = []
 try:
     driver.get(f"http://127.0.0.1:{server.http}/scene/bench")
-    start = time.time()
-    while time.time() - start < 90 and not driver.execute_script(f"return {element}?.hasAttribute('loaded')"):
-        time.sleep(0.05)
+    wait_until(lambda: driver.execute_script(f"return {element}?.hasAttribute('loaded')"), 90, poll=0.05)
     ms, first_bytes, module_bytes = driver.execute_script(f"const e = {element}; return [e.msFirstFrame, e.bytesFirstFrame, e.moduleBytes]")
     renderer = driver.execute_script("const g = document.createElement('canvas').getContext('webgl2');"
                                      "const x = g.getExtension('WEBGL_debug_renderer_info'); return x ? g.getParameter(x.UNMASKED_RENDERER_WEBGL) : '';")
@@ -115,7 +112,9 @@ try:
         subprocess.run([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{server.tcp}", "--session", "bench", "--headless", "--frames", "1",
                         "--size", f"{WIDTH}x{HEIGHT}", "--view", "30,20,1.4", "--style", style, "--out", os.path.join(OUT, "native.png"),
                         "--cache", os.path.join(OUT, "cache")], check=True, stderr=subprocess.DEVNULL)
-        time.sleep(0.5)
+        # The element follows the native client's style and camera.
+        wait_until(lambda: driver.execute_script(f"return {element}.styleName === {json.dumps(style)}"), 60)
+        steady(lambda: driver.execute_script(f"return JSON.stringify({element}.camera)"), still=0.3)
         png = driver.execute_script(f"const e = {element}; e.draw(0); return e.canvas.toDataURL('image/png')")
         with open(os.path.join(OUT, "browser.png"), "wb") as f:
             f.write(base64.b64decode(png.split(",", 1)[1]))

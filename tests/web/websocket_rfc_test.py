@@ -58,7 +58,7 @@ async def closing_code(ws):
 
 async def main(checks, url):
     bystander = await greeted(url, "bystander")
-    await bystander.send(frame(JOIN, text("cows") + text("")))
+    await bystander.send(frame(JOIN, text("cows") + text("") + b"\0"))  # session, token, open_room
     snapshot = await asyncio.wait_for(bystander.recv(), 5)
     checks.check(kind_of(snapshot) == SNAPSHOT, "a member joins over WebSocket and gets the snapshot")
 

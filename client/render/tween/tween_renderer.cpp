@@ -6,6 +6,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "client/render/tween/mesh_samples.hpp"
+#include "common/camera.hpp"
 #include "common/error.hpp"
 #include "common/tween/view_sphere.hpp"
 
@@ -269,8 +270,10 @@ void TweenRenderer::draw(const FrameState& frame) {
   const float frame_distance = std::max(glm::length(frame.eye_in_object_space() - centre) / diagonal, 1e-3f);
   const float zoom = (model_.distance_diagonals / frame_distance) * std::tan(glm::radians(model_.fov_y_degrees) / 2.0f) /
                      std::tan(glm::radians(frame.camera.fov_y_degrees) / 2.0f);
-  const float h = float(frame.viewport.y) * zoom;
-  const float w = h * float(model_.data.width) / float(model_.data.height);
+  // The photos letterboxed: a viewport narrower than they are shows them whole (fit_scale).
+  const float photo_aspect = float(model_.data.width) / float(model_.data.height);
+  const float h = float(frame.viewport.y) * zoom * fit_scale(float(frame.viewport.x) / float(frame.viewport.y), photo_aspect);
+  const float w = h * photo_aspect;
   const glm::vec4 rect((float(frame.viewport.x) - w) / 2.0f, (float(frame.viewport.y) - h) / 2.0f, w, h);
 
   if (one_pass_) {

@@ -1,4 +1,4 @@
-// Wait-free single-producer, single-consumer rings in SharedArrayBuffers (STYLE 20, after
+// Wait-free single-producer, single-consumer rings in SharedArrayBuffers (after
 // padenot's ringbuf.js): how the call's worker and its audio worklets hand each other sound
 // without a message, so nothing waits on any other thread. Available when the page is
 // cross-origin isolated (the server sends /call/ pages with COOP and COEP); elsewhere the

@@ -1,4 +1,4 @@
-// A call member's connection and voice, off the page's thread (SPEC F15; STYLE 20): this
+// A call member's connection and voice, off the page's thread (SPEC F15): this
 // dedicated worker holds the call's WebSocket (net/session.js), encodes the microphone's chunks
 // (from call/capture_worklet.js) to Opus with WebCodecs' AudioEncoder and sends them, and decodes
 // every member's voice with an AudioDecoder each, handing the samples to call/playout_worklet.js.
@@ -21,7 +21,8 @@ import { PacketRing, SampleRing } from './audio_ring.js';
 import { CaptureClock } from './capture_clock.js';
 
 const kOpusRate = 48000, kBitrate = 10000, kFrameMs = 60;  // as client/call/publisher.hpp
-const kForwarded = ['snapshot', 'roster', 'member-layers', 'member-face', 'face-region', 'key-frame-request', 'permissions', 'state', 'refused', 'error', 'close'];
+const kForwarded = ['snapshot', 'roster', 'member-layers', 'member-face', 'face-region', 'key-frame-request', 'permissions', 'state', 'refused', 'error',
+                    'close', 'host-key', 'shut-out'];
 
 let session = null, joined = false, sending = false, clockOrigin = 0, encoding = null, playout = null, playoutRing = null, route = null;
 const decoders = new Map();  // member -> {decoder, pending: [time_ms]}
@@ -144,6 +145,7 @@ async function listenByRoute(s, url, ticket) {
       const { done, value } = await reader.read();
       if (done || session !== s) break;
       frames.feed(value);
+      s.lastHeard = performance.now();  // word from the server, as on its socket
       for (let m; (m = frames.next()); ) if (m.type === 'voice-frame') heard(m);
     }
   } catch {
@@ -154,10 +156,10 @@ async function listenByRoute(s, url, ticket) {
   }
 }
 
-function open({ url, session: name, token, name: member, clockOrigin: origin }) {
+function open({ url, session: name, token, name: member, clockOrigin: origin, openRoom }) {
   close();
   clockOrigin = origin;
-  const s = (session = new Session(url, name, token, member));
+  const s = (session = new Session(url, name, token, member, { openRoom }));
   for (const type of kForwarded)
     s.addEventListener(type, (e) => {
       if (session !== s) return;

@@ -55,11 +55,44 @@ export class WorkerSession extends EventTarget {
   }
 }
 
+// The worker as the page talks to it: what is sent before the worker's module has loaded and
+// listens is held until it says it is ready (Firefox drops messages a module worker is sent
+// while its imports still load: from a page of another origin, its script is a shim importing
+// the server's).
+class WorkerPort {
+  constructor(worker, onmessage) {
+    this.worker = worker;
+    this.held = [];
+    worker.onmessage = (e) => {
+      if (e.data.op === 'ready') this.open();
+      onmessage(e.data);
+    };
+  }
+
+  postMessage(message, transfer = []) {
+    if (this.held) this.held.push([message, transfer]);
+    else this.worker.postMessage(message, transfer);
+  }
+
+  open() {
+    const held = this.held ?? [];
+    this.held = null;
+    for (const [message, transfer] of held) this.worker.postMessage(message, transfer);
+  }
+
+  terminate() { this.worker.terminate(); }
+}
+
 export class CallLink {
   // `onLevel(db)`: the microphone's level, ten times a second, before and during the call.
   constructor({ onLevel } = {}) {
-    this.worker = new Worker(new URL('./call_worker.js', import.meta.url), { type: 'module' });
-    this.worker.onmessage = (e) => this.fromWorker(e.data);
+    // A worker's script must be of the page's own origin: from a page elsewhere (the element
+    // embedded on a community's site) a same-origin shim imports the server's worker module,
+    // which every origin may read.
+    const script = new URL('./call_worker.js', import.meta.url);
+    const sameOrigin = script.origin === globalThis.location?.origin;
+    const shim = sameOrigin ? null : URL.createObjectURL(new Blob([`import ${JSON.stringify(script.href)};`], { type: 'text/javascript' }));
+    this.worker = new WorkerPort(new Worker(shim ?? script, { type: 'module' }), (d) => this.fromWorker(d));
     this.onLevel = onLevel;
     // Shared rings need a cross-origin isolated page (COOP and COEP).
     this.shared = !!globalThis.crossOriginIsolated && typeof SharedArrayBuffer === 'function';
@@ -120,12 +153,12 @@ export class CallLink {
   }
 
   // A session in the worker; `clockStartMs` (performance.now() of this page) is the call clock's zero.
-  open(url, session, token, name) {
+  open(url, session, token, name, openRoom = false) {
     this.session?.close();
     this.playout?.port.postMessage({ reset: true });
     this.clockStartMs = performance.now();
     this.session = new WorkerSession(this);
-    this.worker.postMessage({ op: 'open', url, session, token, name, clockOrigin: performance.timeOrigin + this.clockStartMs });
+    this.worker.postMessage({ op: 'open', url, session, token, name, openRoom, clockOrigin: performance.timeOrigin + this.clockStartMs });
     this.context?.resume().catch(() => {});
     return this.session;
   }

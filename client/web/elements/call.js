@@ -1,5 +1,5 @@
 // <inkwire-call server="ws://HOST:PORT/ws" session="NAME">: a call as a person meets it (SPEC
-// F7-F11, F15-F16, CONTRACTS.md). Before joining: the camera's preview, the microphone's level, a
+// F7-F11, F15-F16, docs/calls.md). Before joining: the camera's preview, the microphone's level, a
 // name and the neutral photo (taken from the preview, retaken at will); the renderer loads
 // meanwhile. In the call: a grid of every member drawn from codes alone by the native C++ in the
 // session's style (elements/call/tiles.js: each member's neutral photo deformed by the expression
@@ -7,17 +7,19 @@
 // framed, captions under the tiles; mute, camera off, leave. The connection and the voice live off
 // the page's thread (call/voice.js: a worker with the WebSocket and WebCodecs' Opus, audio
 // worklets that capture and play), the face goes as VP8 video (JPEG crops where an engine has no
-// encoder) the server analyses (call/camera.js). One feature a file (STYLE 13): elements/call/
+// encoder) the server analyses (call/camera.js). One feature a file: elements/call/
 // prejoin.js, membership.js, publishing.js, faces.js and tiles.js. A member without a camera, a microphone, permission or what its engine lacks
 // joins as a listener and says why (`reason`).
-// Attributes: server, session, token, name, muted, camera ("off"). Sets `joined` once in the
-// call; properties `members`: [{name, speaking, expression}], `voiceStats` ({played, late,
+// Attributes: server, session, token, name, muted, camera ("off"), open-room (open a call room of
+// that name when there is none; its opener is its host: elements/call/hosting.js). Sets `joined`
+// once in the call; properties `isHost`, `locked`, `members`: [{name, speaking, expression}], `voiceStats` ({played, late,
 // dropped, delayMs, skipped}: what it heard) and `reason` ('' or why this engine cannot carry its voice);
 // method join() does what the Join button does, hangUp() what Leave does (a lost connection is
 // joined again, under the same name, until then); counters voiceSent and
 // camera.sent say what went out; `joinedAt` and `firstFaceAt` (performance.now() of joining and
 // of the first frame with a face).
 import { FacesMixin } from './call/faces.js';
+import { HostingMixin } from './call/hosting.js';
 import { MembershipMixin } from './call/membership.js';
 import { PrejoinMixin } from './call/prejoin.js';
 import { PublishingMixin } from './call/publishing.js';
@@ -36,6 +38,9 @@ const template = `
   canvas { width: 100%; height: 100%; display: block; }
   .caption { position: absolute; font-size: 12px; white-space: nowrap; overflow: hidden; text-overflow: ellipsis; }
   .caption.speaking { color: #5ae678; font-weight: 600; }
+  .caption .remove { padding: 0 6px; margin-right: 4px; background: #a33; font-size: 12px; line-height: 16px; }
+  .lock-note { color: #f7c46c; font-size: 12px; }
+  select { font: inherit; padding: 5px; border-radius: 4px; background: #3a3a42; color: #eee; border: 0; }
   .controls { position: absolute; left: 0; right: 0; bottom: 0; height: 48px; display: flex; gap: 8px; justify-content: center;
               align-items: center; }
   button { font: inherit; padding: 6px 14px; border-radius: 4px; border: 0; background: #3a3a42; color: #eee; cursor: pointer; }
@@ -56,21 +61,29 @@ const template = `
   </div>
 </div>
 <div class="grid" hidden><canvas part="canvas"></canvas><div class="captions"></div></div>
-<div class="controls" hidden><button class="mute">Mute</button><button class="camera">Camera off</button><button class="leave">Leave</button></div>`;
+<div class="controls" hidden><button class="mute">Mute</button><button class="camera">Camera off</button>
+  <button class="lock" hidden>Lock room</button>
+  <select class="style" hidden aria-label="The call's style"><option value="default">Plain</option><option value="comic-extended">Comic</option>
+    <option value="painterly">Painted</option></select>
+  <span class="lock-note"></span><button class="leave">Leave</button></div>`;
 
-export class InkwireCall extends FacesMixin(PublishingMixin(MembershipMixin(PrejoinMixin(SessionElement)))) {
+export class InkwireCall extends HostingMixin(FacesMixin(PublishingMixin(MembershipMixin(PrejoinMixin(SessionElement))))) {
   static observedAttributes = [...SessionElement.observedAttributes, 'name'];
 
   constructor() {
     super(template);
     const $ = (s) => this.shadowRoot.querySelector(s);
     Object.assign(this, { preview: $('.preview'), photoImg: $('.photo'), level: $('.level'), nameInput: $('.name'), prejoin: $('.prejoin'),
-                          grid: $('.grid'), controls: $('.controls'), muteButton: $('.mute'), cameraButton: $('.camera') });
+                          grid: $('.grid'), controls: $('.controls'), muteButton: $('.mute'), cameraButton: $('.camera'),
+                          lockButton: $('.lock'), styleSelect: $('.style'), lockNote: $('.lock-note') });
     $('.take').addEventListener('click', () => this.takePhoto());
     $('.join').addEventListener('click', () => this.join());
     $('.leave').addEventListener('click', () => this.hangUp());
     this.muteButton.addEventListener('click', () => this.setMuted(!this.muted));
     this.cameraButton.addEventListener('click', () => this.setCameraOff(!this.cameraOff));
+    this.lockButton.addEventListener('click', () => this.lockRoom(!this.locked));
+    this.styleSelect.addEventListener('change', () => this.setCallStyle(this.styleSelect.value));
+    this.captionDecorator = (div, tile) => this.decorateCaption(div, tile);
     this.tiles = new CallTiles(this.canvas, $('.captions'));
     this.photos = new Map();  // member -> the hash of the photo its tile shows
     this.expressions = new Map();  // member -> its face (member-layers or member-face) last due
@@ -79,6 +92,9 @@ export class InkwireCall extends FacesMixin(PublishingMixin(MembershipMixin(Prej
 
   get voiceStats() { return this.link?.voiceStats ?? { played: 0, late: 0, dropped: 0, delayMs: 0, skipped: 0 }; }
   get voiceSent() { return this.link?.status.voiceSent ?? 0; }
+  // How the voice passes between the worker and the audio worklets: 'rings' (shared memory, on a
+  // cross-origin isolated page) or 'ports' (message ports, elsewhere: `isolationNote` says so).
+  get voicePath() { return this.link?.shared ? 'rings' : 'ports'; }
 
   get members() {
     const names = this.tiles.names ?? [];

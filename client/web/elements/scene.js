@@ -6,7 +6,8 @@
 // Attributes: server, session, token, editor-token (joins as an editor: a session that names one
 // lets only editors steer; what the server will refuse this member it says on joining, and those
 // controls are off with the reason beside them); `loaded` once the module and
-// model are there and the first frame is drawn. Properties: styleName, settings (object),
+// model are there and the first frame is drawn (and `modelName`, the model's file name; a model
+// the editor replaces arrives in a new snapshot and is drawn as the first was). Properties: styleName, settings (object),
 // camera ({azimuth, elevation, distance}); setting them changes the session as the panel would.
 import { fitCanvas, lendBytes, loadRenderModule, SessionElement } from './session_element.js';
 import { AssetKind } from '../net/session.js';
@@ -68,8 +69,15 @@ export class InkwireScene extends SessionElement {
     this.canvas.addEventListener('wheel', (e) => this.wheel(e), { signal, passive: false });
   }
 
-  // An editor joins with the editor token (the server then lets it steer a session that names one).
-  joinToken() { return this.getAttribute('editor-token') ?? super.joinToken(); }
+  // An editor joins with the editor token (the server then lets it steer a session that names
+  // one): the attribute, else the key this browser keeps for a scene it made (pages/upload.js).
+  joinToken() {
+    let kept = null;
+    try {
+      kept = localStorage.getItem(`inkwire-editor-key ${this.serverUrl()} ${this.getAttribute('session') ?? ''}`);
+    } catch {}
+    return this.getAttribute('editor-token') ?? kept ?? super.joinToken();
+  }
 
   // The session and the module, loaded side by side; the model once both are there.
   async start() {
@@ -89,8 +97,10 @@ export class InkwireScene extends SessionElement {
         const [bytes] = await Promise.all([session.fetchAsset(mesh), module]);
         this.progress(0.9);
         this.bytesFirstFrame = session.bytesReceived + (this.moduleBytes ?? 0);
+        // A second snapshot brings a replaced model (SPEC N8): drawn in the same style from the same camera.
         const reason = this.loadModel(bytes, mesh.name);
         if (reason) throw new Error(reason);
+        this.modelName = mesh.name;
         this.applyStyle(snapshot.style);
         this.applyCamera(snapshot.camera);
         this.applyObject(snapshot.object);

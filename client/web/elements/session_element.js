@@ -1,4 +1,4 @@
-// What both elements are made of (STYLE 13: one custom element per use, shared behaviour in one
+// What both elements are made of (one custom element per use, shared behaviour in one
 // place): a shadow root from a template, a session opened from the `server`, `session` and `token`
 // attributes (the page's own server by default) and closed when the element leaves the page, a
 // one-line message for what went wrong, a WebGL2 canvas sized by the container at the device
@@ -69,7 +69,7 @@ export class SessionElement extends HTMLElement {
     this.message = this.shadowRoot.querySelector('.message');
   }
 
-  // What connectedCallback adds, disconnectedCallback removes (STYLE 17): listeners are added
+  // What connectedCallback adds, disconnectedCallback removes: listeners are added
   // with `this.connection` (an AbortSignal) and go with it, the observer is disconnected.
   connectedCallback() {
     this.setAttribute('role', 'img');
@@ -93,7 +93,9 @@ export class SessionElement extends HTMLElement {
     if (this.isConnected && before !== after && before !== null) this.start();
   }
 
+  // What went wrong, on the element's face and as its `reason` (read by tests and the page).
   fail(reason) {
+    this.reason = reason;
     this.message.textContent = reason;
     this.dispatchEvent(new CustomEvent('error', { detail: reason }));
   }

@@ -1,7 +1,7 @@
 // <inkwire-turntable server="ws://HOST:PORT/ws" session="NAME">, or <inkwire-turntable
 // src="https://CDN/PRODUCT/product.json"> for a product exported as static files (SPEC T20-T21;
 // the server serves each of its products so too): a product a shop embeds with one script tag
-// (SPEC W2, CONTRACTS.md). It downloads the product progressively (each photo's
+// (SPEC W2, docs/products.md). It downloads the product progressively (each photo's
 // matte and photo, nearest the view first; a first view after one photo; a progress bar), then
 // synthesises every view locally (render/tween/tween_view.js). Drag with mouse, touch or pen
 // (with inertia; up and down too on a product in rows), wheel or pinch to zoom, arrow keys step
@@ -11,6 +11,7 @@
 // view to the session as object poses, `follow` shows the newest view a presenter sent (a drag
 // turns it until the next); property azimuth (degrees); attribute `loaded` once every photo and
 // tween cell is there.
+import { fitScale } from '../common/framing.js';
 import { SessionElement } from './session_element.js';
 import { AutoSpinMixin } from './turntable/autospin.js';
 import { ControlsMixin } from './turntable/controls.js';
@@ -74,7 +75,9 @@ export class InkwireTurntable extends PresenterMixin(AutoSpinMixin(ControlsMixin
     if (!this.gl || !this.view) return;
     this.present();
     const [width, height] = this.beginFrame();
-    this.displayHeight = height;
+    // The photos' height on the display (letterboxed in a narrow element), for the level it needs.
+    const { product } = this.snapshot;
+    this.displayHeight = height * fitScale(width / height, product.width / product.height);
     this.view.useFiner = this.wantedLevel() > 0;
     if (this.wake) this.wake(), this.wake = null;  // the view may need photos it did not
     if (this.view.draw([width, height], this.direction(), this.zoom) && this.firstViewPhotos === undefined) {

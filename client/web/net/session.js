@@ -9,6 +9,23 @@ const kRequestsAhead = 4;
 // with no word from it and the connection is taken as dead, as client/net/session_client.hpp.
 export const kServerSilenceMs = 15000;
 const kCacheName = 'inkwire-assets-v1';
+// Why a WebSocket to `url` closed before it opened (a refused one tells the page nothing): the
+// server answers a plain GET of the same address with its reason, readable by pages of any
+// origin ("this server does not accept pages of ORIGIN"), or cannot be reached at all.
+export async function whyNotConnected(url) {
+  const http = new URL(url);
+  http.protocol = http.protocol === 'wss:' ? 'https:' : 'http:';
+  let answer;
+  try {
+    answer = await fetch(http.href, { cache: 'no-store' });
+  } catch {
+    return `cannot reach the server at ${http.host}`;
+  }
+  const text = (await answer.text().catch(() => '')).trim();
+  // 400 says the address takes WebSockets from this page: the connection failed otherwise.
+  return answer.status !== 400 && text ? text : `the server at ${http.host} closed the connection before it opened`;
+}
+
 export const toHex = (bytes) => Array.from(bytes, (b) => b.toString(16).padStart(2, '0')).join('');
 
 // An asset's bytes ({hash, name}) from Cache Storage, or from `download()` checked against its
@@ -30,12 +47,16 @@ export class Session extends EventTarget {
   // style, pose or expression change: detail the message), 'refused' (a change this member may
   // not make: detail the server's reason; the session's own value follows as a 'state'), 'error'
   // (detail: the reason), 'close'; in a call also 'roster', 'member-layers' (and 'member-face' from a
-  // server of version 7), 'voice-frame',
-  // 'face-region', 'key-frame-request' and 'voice-route' (detail: the message).
-  constructor(url, session, token = '', clientName = 'inkwire-web') {
+  // server of version 7 or 8), 'voice-frame',
+  // 'face-region', 'key-frame-request' and 'voice-route' (detail: the message), 'host-key' (the
+  // key of a room this member opened) and 'shut-out' (a locked room or the host's removal: the
+  // reason; an 'error' follows).
+  // `openRoom`: open a call room of this name when no session has it (SPEC N6), as its host.
+  constructor(url, session, token = '', clientName = 'inkwire-web', { openRoom = false } = {}) {
     super();
     this.session = session;
     this.token = token;
+    this.openRoom = openRoom;
     this.bytesSent = 0;
     this.bytesReceived = 0;
     // Of those, the heartbeat's (the server's pings and our pongs), which flow whatever the
@@ -45,17 +66,24 @@ export class Session extends EventTarget {
     this.receivedBy = new Map();  // hash hex -> bytesReceived when its download completed
     this.socket = new WebSocket(url);
     this.socket.binaryType = 'arraybuffer';
-    this.socket.addEventListener('open', () => this.send({ type: 'hello', client_name: clientName }));
+    this.opened = false;
+    this.socket.addEventListener('open', () => {
+      this.opened = true;
+      this.send({ type: 'hello', client_name: clientName });
+    });
     this.socket.addEventListener('message', (e) => this.receive(e.data));
     this.lastHeard = performance.now();
     this.silenceTimer = setInterval(() => {
       if (performance.now() - this.lastHeard <= kServerSilenceMs) return;
       this.fail(`no word from the server for ${kServerSilenceMs / 1000} seconds`);
     }, 1000);
-    this.socket.addEventListener('close', () => {
+    this.socket.addEventListener('close', async () => {
       clearInterval(this.silenceTimer);
       for (const w of this.waiting.values()) w.reject(new Error('connection closed'));
       this.waiting.clear();
+      // Refused before it opened (an origin the server does not accept, a server away): said
+      // before the close, so whoever listens shows the reason and not only a closed session.
+      if (!this.opened && !this.closing) this.dispatchEvent(new CustomEvent('error', { detail: await whyNotConnected(url) }));
       this.dispatchEvent(new Event('close'));
     });
   }
@@ -68,6 +96,7 @@ export class Session extends EventTarget {
   }
 
   close() {
+    this.closing = true;
     clearInterval(this.silenceTimer);
     this.socket.close();
   }
@@ -82,7 +111,7 @@ export class Session extends EventTarget {
     } catch (e) {
       return this.fail(`malformed data from the server: ${e.message}`);
     }
-    if (m.type === 'welcome') this.send({ type: 'join', session: this.session, token: this.token });
+    if (m.type === 'welcome') this.send({ type: 'join', session: this.session, token: this.token, open_room: this.openRoom });
     else if (m.type === 'ping') {
       this.keepAliveBytes.received += data.byteLength;
       this.send({ type: 'pong', nonce: m.nonce });
@@ -96,8 +125,11 @@ export class Session extends EventTarget {
              m.type === 'voice-route')
       this.dispatchEvent(new CustomEvent(m.type, { detail: m }));  // a call's (elements/call.js)
     else if (m.type === 'permissions') this.dispatchEvent(new CustomEvent('permissions', { detail: m.refused }));
+    else if (m.type === 'host-key') this.dispatchEvent(new CustomEvent('host-key', { detail: m.key }));
     else if (m.type === 'error' && m.code === ErrorCode['not-allowed']) this.dispatchEvent(new CustomEvent('refused', { detail: m.reason }));
     else if (m.type === 'error') {
+      // A locked room or a host's removal: the member is not to come back by itself.
+      if (m.code === ErrorCode.locked || m.code === ErrorCode.removed) this.dispatchEvent(new CustomEvent('shut-out', { detail: m.reason }));
       for (const w of this.waiting.values()) w.reject(new Error(m.reason));
       this.waiting.clear();
       this.dispatchEvent(new CustomEvent('error', { detail: m.reason }));

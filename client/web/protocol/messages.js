@@ -5,7 +5,7 @@
 import { ProtocolError, ReadStream, WriteStream } from './streams.js';
 
 export const kMagic = 0x574b4e49;  // the bytes "INKW" read as a little-endian u32
-export const kVersion = 8;
+export const kVersion = 9;
 export const kMaxName = 64;
 export const kMaxToken = 128;
 export const kMaxReason = 512;
@@ -25,6 +25,7 @@ export const kMaxPhotoBytes = 120 * 1024;
 export const kMaxVoiceBytes = 1275;
 export const kMaxMembers = 64;
 export const kVoiceTicketChars = 32;
+export const kHostKeyChars = 32;
 export const kMaxPoseDegrees = 90;
 export const kMaxEyeOpenness = 200;
 
@@ -32,9 +33,11 @@ export const MessageType = Object.freeze({
   hello: 1, welcome: 2, error: 3, ping: 4, pong: 5, join: 6, leave: 7, snapshot: 8, 'style-change': 9, 'camera-pose': 10,
   'object-pose': 11, 'expression-code': 12, 'tween-data': 13, 'asset-announce': 14, 'asset-request': 15, 'asset-chunk': 16,
   publish: 17, 'neutral-photo': 18, 'face-crop': 19, 'face-region': 20, 'voice-frame': 21, 'member-face': 22, roster: 23,
-  permissions: 24, 'face-video': 25, 'key-frame-request': 26, 'voice-route': 27, 'member-layers': 28,
+  permissions: 24, 'face-video': 25, 'key-frame-request': 26, 'voice-route': 27, 'host-key': 28, 'room-control': 29,
+  'member-layers': 30,
 });
-export const kMessageTypes = 28;
+export const kMessageTypes = 30;
+export const RoomAction = Object.freeze({ lock: 1, unlock: 2, remove: 3 });
 export const FaceSource = Object.freeze({ neutral: 0, camera: 1, voice: 2 });
 export const nameOf = (type) => Object.keys(MessageType).find((k) => MessageType[k] === type) ?? 'unknown';
 
@@ -43,7 +46,7 @@ export const AssetKind = Object.freeze({ mesh: 1, image: 2, samples: 3, tween: 4
 export const kAssetKinds = 7;
 export const ErrorCode = Object.freeze({
   'bad-version': 1, malformed: 2, 'no-session': 3, 'bad-token': 4, 'not-joined': 5, 'no-asset': 6, 'too-slow': 7,
-  'shutting-down': 8, refused: 9, 'not-allowed': 10,
+  'shutting-down': 8, refused: 9, 'not-allowed': 10, locked: 11, removed: 12,
 });
 
 function check(ok, reason) {
@@ -77,7 +80,7 @@ function serialiseWelcome(s, m) {
 }
 
 function serialiseErrorMessage(s, m) {
-  m.code = enumeration(s, m.code ?? 9, 1, 10, 'error code', 2);
+  m.code = enumeration(s, m.code ?? 9, 1, 12, 'error code', 2);
   m.reason = s.text(m.reason ?? '', kMaxReason);
 }
 
@@ -87,6 +90,7 @@ function serialisePong(s, m) { m.nonce = s.u64(m.nonce ?? 0n); }
 function serialiseJoin(s, m) {
   m.session = s.text(m.session ?? '', kMaxName);
   m.token = s.text(m.token ?? '', kMaxToken);
+  m.open_room = flag(s, m.open_room, 'join open room');
   if (s.constructor.reading) check(m.session.length > 0 && plain(m.session, '-_.'), 'session name must be letters, digits, - _ .');
 }
 
@@ -353,6 +357,19 @@ function serialiseRoster(s, m) {
     serialiseCallMember(s, member);
     m.members.push(member);
   }
+  m.host = s.u16(m.host ?? 0);
+  m.locked = flag(s, m.locked, 'roster locked');
+}
+
+function serialiseHostKey(s, m) {
+  m.key = s.text(m.key ?? '', kHostKeyChars);
+  if (s.constructor.reading) check(/^[0-9a-f]{32}$/.test(m.key), 'host key is not 32 hex digits');
+}
+
+function serialiseRoomControl(s, m) {
+  m.action = enumeration(s, m.action ?? RoomAction.lock, 1, 3, 'room action', 1);
+  m.member = s.u16(m.member ?? 0);
+  if (s.constructor.reading) check(m.action === RoomAction.remove ? m.member !== 0 : m.member === 0, 'room control names a member only to remove');
 }
 
 // The changes the server will refuse this member: [{change: 'camera-pose', reason}], by name.
@@ -372,7 +389,8 @@ const serialisers = [serialiseHello, serialiseWelcome, serialiseErrorMessage, se
                      serialiseSnapshot, serialiseStyleChange, serialiseCameraPose, serialiseObjectPose, serialiseExpressionCode,
                      serialiseTweenData, serialiseAssetAnnounce, serialiseAssetRequest, serialiseAssetChunk, serialisePublish,
                      serialiseNeutralPhoto, serialiseFaceCrop, serialiseFaceRegion, serialiseVoiceFrame, serialiseMemberFace, serialiseRoster,
-                     serialisePermissions, serialiseFaceVideo, serialiseKeyFrameRequest, serialiseVoiceRoute, serialiseMemberLayers];
+                     serialisePermissions, serialiseFaceVideo, serialiseKeyFrameRequest, serialiseVoiceRoute, serialiseHostKey,
+                     serialiseRoomControl, serialiseMemberLayers];
 
 export const kHeaderBytes = 6;
 export const kMaxPayload = 128 * 1024;

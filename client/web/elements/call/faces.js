@@ -1,10 +1,11 @@
 // <inkwire-call>'s faces (SPEC F10, F16): the session's style on every tile, the roster with each
 // member's photo and landmarks handed to the renderer (call/tiles.js), each face shown when the
-// sound of its moment plays, and the drawing loop. A mixin over SessionElement (STYLE 13).
+// sound of its moment plays, and the drawing loop. A mixin over SessionElement (one feature a file).
 
 export const FacesMixin = (Base) => class extends Base {
   // The session's style on every tile, once the renderer is there.
   async showStyle(style) {
+    this.styleSelect.value = style.renderer;
     await this.tilesReady;
     const reason = this.tiles.setStyle(style);
     if (reason) this.message.textContent = `the faces keep their look: ${reason}`;
@@ -15,6 +16,7 @@ export const FacesMixin = (Base) => class extends Base {
   // as it arrives, the roster then given again so its tile shows the face.
   async updateRoster(session, roster) {
     this.roster = roster;
+    this.showHostControls();
     const mine = roster.members.find((m) => m.member === roster.you);
     if (mine && !mine.face_found && mine.camera) this.message.textContent = 'no face found in your camera picture';
     await this.tilesReady;
@@ -38,7 +40,7 @@ export const FacesMixin = (Base) => class extends Base {
     }
   }
 
-  // A face (member-layers, or member-face from a server of version 7) comes when the sound of its
+  // A face (member-layers, or member-face from a server of version 7 or 8) comes when the sound of its
   // moment plays, so the mouth moves with the voice.
   faceArrived(m) {
     const due = this.link?.localTime(m.member, m.time_ms);
@@ -55,7 +57,7 @@ export const FacesMixin = (Base) => class extends Base {
     if (!this.hasAttribute('joined')) return;
     if (this.tiles.view && this.tiles.due()) {
       try {
-        if (this.tiles.draw(performance.now() / 1000)) this.firstFaceAt ??= performance.now();
+        if (this.tiles.draw(performance.now() / 1000, this.isHost ? this.captionDecorator : null)) this.firstFaceAt ??= performance.now();
       } catch (error) {
         this.fail(`the call cannot be drawn: ${error.message}`);
         return;

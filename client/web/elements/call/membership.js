@@ -1,14 +1,32 @@
 // <inkwire-call>'s membership (SPEC F8, F19): joining under a name, entering (the neutral photo
 // and the camera's face video sent, the grid shown), a lost connection joined again under the same
-// name, and leaving. A mixin over SessionElement (STYLE 13).
+// name, and leaving. A mixin over SessionElement (one feature a file).
 import { CameraSender, faceFormat } from '../../call/camera.js';
 
 export const MembershipMixin = (Base) => class extends Base {
   join() {
     if (this.session) return;
+    this.shutOut = '';
     const name = this.nameInput.value.trim() || this.getAttribute('name') || 'guest';
-    const session = (this.session = this.link.open(this.serverUrl(), this.getAttribute('session') ?? '', this.joinToken(), name.slice(0, 64)));
-    session.addEventListener('error', (e) => this.fail(e.detail));
+    const token = this.joinTokenForRoom(), withHostKey = !!this.hostKey && token === this.hostKey;
+    const session = (this.session = this.link.open(this.serverUrl(), this.getAttribute('session') ?? '', token, name.slice(0, 64),
+                                                   this.hasAttribute('open-room')));
+    session.addEventListener('error', (e) => {
+      // A key kept for a room of this name that is gone (a new one took its name): forgotten, and joined without it.
+      if (withHostKey && !this.hasAttribute('joined') && this.session === session) {
+        this.forgetHostKey();
+        this.leave();
+        this.join();
+        return;
+      }
+      this.fail(e.detail);
+    });
+    session.addEventListener('host-key', (e) => this.keepHostKey(e.detail));
+    // Locked out or removed by the host: said, and not joined again by itself.
+    session.addEventListener('shut-out', (e) => {
+      this.rejoinUntil = 0;
+      this.shutOut = e.detail;
+    });
     session.addEventListener('refused', (e) => this.refused(e.detail));
     session.addEventListener('snapshot', (e) => this.entered(session, e.detail), { once: true });
     session.addEventListener('state', (e) => { if (e.detail.type === 'style-change') this.showStyle(e.detail); });
@@ -25,7 +43,7 @@ export const MembershipMixin = (Base) => class extends Base {
   // tile back. Leaving on purpose (hangUp) stops that.
   lost(session) {
     if (this.session !== session) return;
-    if (this.hasAttribute('joined')) this.rejoinUntil = performance.now() + 60000;
+    if (this.hasAttribute('joined') && !this.shutOut) this.rejoinUntil = performance.now() + 60000;
     this.leave();
     if (!(performance.now() < this.rejoinUntil) || !this.isConnected) return;
     this.message.textContent = 'the connection was lost: joining again';
@@ -41,6 +59,7 @@ export const MembershipMixin = (Base) => class extends Base {
   async entered(session, snapshot) {
     if (this.rejoinUntil) this.message.textContent = '';
     this.rejoinUntil = 0;
+    this.reason = this.voiceReason ?? this.reason;
     if (this.preview.videoWidth && !this.photo) await this.takePhoto();
     const format = await faceFormat();
     if (this.session !== session) return;

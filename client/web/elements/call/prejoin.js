@@ -1,7 +1,7 @@
 // <inkwire-call>'s pre-join (SPEC F7, F15): the camera's preview and the microphone (or the
 // reason there are none, `reason`), captured off the page's thread (call/voice.js) while the
 // person picks a name and takes the neutral photo; the renderer loads meanwhile. A mixin over
-// SessionElement (STYLE 13: one feature a file, as the turntable element).
+// SessionElement (one feature a file, as the turntable element).
 import { photoOf } from '../../call/camera.js';
 import { CallLink, voiceUnsupported } from '../../call/voice.js';
 
@@ -39,7 +39,12 @@ export const PrejoinMixin = (Base) => class extends Base {
         this.reason = `${error.message}: you will join without voice`;
       }
     }
+    // Embedded in a page that is not cross-origin isolated, the voice still flows, through message
+    // ports instead of shared rings: said, since a busy page then may hold it back in some engines.
+    this.isolationNote = link.shared ? '' : 'this page is not cross-origin isolated: the voice goes through message ports';
     if (this.reason) this.message.textContent = this.reason;
+    else if (this.isolationNote) this.message.textContent = this.isolationNote;
+    this.voiceReason = this.reason;  // what a connection's failure said goes once it is in the call
   }
 
   async takePhoto() {

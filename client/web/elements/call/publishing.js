@@ -1,5 +1,5 @@
 // <inkwire-call>'s publishing (SPEC F9): what goes out, said to the call (camera, microphone) and
-// done; mute and camera off. A mixin over SessionElement (STYLE 13).
+// done; mute and camera off. A mixin over SessionElement (one feature a file).
 
 export const PublishingMixin = (Base) => class extends Base {
   // What goes out, said to the call and done: voice flows only while it says a microphone is on.

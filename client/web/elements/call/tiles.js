@@ -62,15 +62,17 @@ export class CallTiles {
 
   // One frame at the canvas's size in device pixels, then the captions under the tiles. Returns
   // whether a face was drawn.
-  draw(seconds) {
+  // `decorate(div, tile)`, when given, adds to each tile's caption (the host's remove button).
+  draw(seconds, decorate = null) {
     fitCanvas(this.canvas);
     const ratio = window.devicePixelRatio || 1;
     const reason = this.view.draw(seconds);
     if (reason) throw new Error(reason);
     this.changed = false;
     const tiles = JSON.parse(this.view.tilesJson());
-    const text = JSON.stringify(tiles.map((t) => [t.caption, t.speaking, t.rect]));
-    if (text !== this.shown) {
+    const text = JSON.stringify([tiles.map((t) => [t.caption, t.speaking, t.rect]), !!decorate]);
+    if (text !== this.shown || decorate !== this.decorate) {
+      this.decorate = decorate;
       this.shown = text;
       this.captions.replaceChildren(...tiles.map((t) => {
         const div = document.createElement('div');
@@ -78,6 +80,7 @@ export class CallTiles {
         const [x, y, w, h] = t.rect.map((v) => v / ratio);
         Object.assign(div.style, { left: `${x}px`, top: `${y + h + 2}px`, width: `${w}px` });
         div.textContent = t.caption;
+        decorate?.(div, t);
         return div;
       }));
     }

@@ -1,7 +1,7 @@
 // <inkwire-turntable>'s controls (SPEC W2): drag with mouse, touch or pen (with inertia; up and
 // down as far as the product has rows of photos, SPEC T17), wheel or pinch to zoom, arrow keys
 // step one photo left and right, one row up and down. Handlers are added with the connection's
-// AbortSignal and go when the element leaves the page (STYLE 17), so an element moved in the
+// AbortSignal and go when the element leaves the page, so an element moved in the
 // page turns once as far, never twice.
 
 import { draggedVelocity } from '../../common/inertia.js';

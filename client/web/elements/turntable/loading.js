@@ -3,7 +3,7 @@
 // session's server, which serves them the same way; its photos one at a time (each matte, then
 // the photo, nearest the current view first, each drawn as it comes), its tween cells after the
 // first view, a progress bar, and the attribute `loaded` once all are there. Only the live part,
-// a presenter and followers, goes through a WebSocket. A mixin over SessionElement (STYLE 13: one
+// a presenter and followers, goes through a WebSocket. A mixin over SessionElement (one
 // feature a file, as <model-viewer> does).
 import { nextPhotoFetch, wantedLevel } from '../../common/photo_fetch.js';
 import { decodeTweenCell } from '../../common/tween_data.js';

@@ -3,6 +3,7 @@
 // the view, composed by their mattes in one pass (image_warper.cpp's one-pass view), bilinear
 // on a ring, trilinear on a sphere. Until a view's cell and its photos are there, the nearest
 // photo that is shows, as it is.
+import { fitScale } from '../../common/framing.js';
 import { finerToDrop } from '../../common/photo_fetch.js';
 import { pathWeights } from '../../common/tween_data.js';
 import { locateView, nearestSample, viewSamples } from '../../common/view_sphere.js';
@@ -168,7 +169,8 @@ export class TweenView {
     const gl = this.gl, view = this.plan(direction);
     if (!view) return false;
     const { width, height } = this.product;
-    const h = viewport[1] * zoom, w = (h * width) / height;
+    // Letterboxed: a viewport narrower than the photos shows them whole.
+    const h = viewport[1] * zoom * fitScale(viewport[0] / viewport[1], width / height), w = (h * width) / height;
     const rect = [(viewport[0] - w) / 2, (viewport[1] - h) / 2, w, h];
     // Image pixel (y down) -> window pixel in rect (y up) -> clip space.
     const toClip = [(2 * rect[2]) / (width * viewport[0]), (-2 * rect[3]) / (height * viewport[1]), (2 * rect[0]) / viewport[0] - 1,

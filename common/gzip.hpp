@@ -4,8 +4,8 @@
 #include <string>
 #include <string_view>
 
-namespace inkwire::server {
+namespace inkwire {
 
 std::string gzipped(std::string_view bytes);
 
-}  // namespace inkwire::server
+}  // namespace inkwire

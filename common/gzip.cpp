@@ -1,10 +1,10 @@
-#include "server/web/gzip.hpp"
+#include "common/gzip.hpp"
 
 #include <zlib.h>
 
 #include "common/error.hpp"
 
-namespace inkwire::server {
+namespace inkwire {
 
 std::string gzipped(std::string_view bytes) {
   z_stream z{};
@@ -22,4 +22,4 @@ std::string gzipped(std::string_view bytes) {
   return out;
 }
 
-}  // namespace inkwire::server
+}  // namespace inkwire
