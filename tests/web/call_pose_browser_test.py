@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """A member whose head rolls is drawn rolled at the other members (SPEC F20), natively and in a
 real headless browser: a native inkwire-client member ("Nat") publishes a camera that shows
-libdlib's example photo upright for eight seconds, then turned 20 degrees in the picture (as a
-head tilted towards its right shoulder); a Chromium member ("Ada", no camera: a listener) and
+libdlib's example photo upright until the page has drawn it upright, then turned 20 degrees in
+the picture (as a head tilted towards its right shoulder); a Chromium member ("Ada", no camera: a listener) and
 Nat's own recording (its tile shows what the others are sent) draw Nat's face. Checks: the pose
 the page's element and the native frame log say Nat's face is drawn with (roll 20 +- 3), and the
 pose the server's own reading finds in each drawn picture (inkwire-eval head-pose against the
@@ -36,10 +36,20 @@ ROLL = 20
 upright, tilted = os.path.join(OUT, "upright.png"), os.path.join(OUT, "tilted.png")
 subprocess.run(["ffmpeg", "-v", "error", "-y", "-i", PHOTO, "-vf", "scale=320:-2", upright], check=True)
 subprocess.run(["ffmpeg", "-v", "error", "-y", "-i", upright, "-vf", f"rotate={ROLL}*PI/180:fillcolor=gray", tilted], check=True)
+# The client reads each picture when it is due, so the tilt comes when the links are turned to the
+# tilted picture: once the page has drawn the face upright, whenever that is on a loaded machine.
 camera = os.path.join(OUT, "camera")
 os.makedirs(camera)
-for frame in range(15 * 18):
-    os.symlink(upright if frame < 15 * 8 else tilted, os.path.join(camera, f"{frame:04d}.png"))
+FRAMES = 15 * 90
+for frame in range(FRAMES):
+    os.symlink(upright, os.path.join(camera, f"{frame:04d}.png"))
+
+
+def tilt_camera():
+    for frame in range(FRAMES):
+        link = os.path.join(camera, f"{frame:04d}.png")
+        os.symlink(tilted, link + ".new")
+        os.replace(link + ".new", link)
 
 
 def pose_in(picture):
@@ -58,17 +68,18 @@ try:
     driver.get(f"http://127.0.0.1:{server.http}/call/call")
     driver.execute_script(f"const e = {element}; e.nameInput.value = 'Ada'; e.join();")
     native = subprocess.Popen([f"{BIN}/inkwire-client", "--connect", f"127.0.0.1:{server.tcp}", "--session", "call", "--name", "Nat",
-                               "--camera", camera, "--headless", "--frames", str(15 * 17), "--fps", "15", "--size", "480x360",
+                               "--camera", camera, "--headless", "--frames", str(FRAMES), "--fps", "15", "--size", "480x360",
                                "--out", os.path.join(OUT, "nat-%04d.png"), "--frame-log", os.path.join(OUT, "nat.jsonl"),
                                "--cache", os.path.join(OUT, "cache-nat")], stderr=open(os.path.join(OUT, "nat.log"), "w"))
     nat = lambda: [m for m in driver.execute_script(f"return {element}.members") if m["name"] == "Nat"]
     # Before the tilt: Nat's face drawn upright (once its photo is in and a face came).
     face = lambda: nat()[0].get("face") if nat() else None
-    end = time.time() + 30
+    end = time.time() + 60
     while time.time() < end and not (face() and abs(face()["pose"][2]) <= 3):
         time.sleep(0.2)
     checks.check(bool(face()) and abs(face()["pose"][2]) <= 3, f"the page draws Nat's face upright before the tilt (its element says {face()})")
     driver.save_screenshot(os.path.join(OUT, "ada-upright.png"))
+    tilt_camera()
     # The tilt: the page's element says the face is drawn rolled (the server read it), then the
     # picture shows it, 0.5 s on (the tween takes 0.1 s).
     end = time.time() + 20
@@ -82,6 +93,7 @@ finally:
     if driver:
         driver.quit()
     if native:
+        native.terminate()  # it would show the camera for 90 s: its frame log holds every frame drawn so far
         native.wait(timeout=120)
     server.stop()
 
