@@ -54,8 +54,11 @@ set(INKWIRE_SHARED_COMMON_SOURCES
   edge_chains.cpp
   face/expression.cpp
   face/expression_templates.cpp
+  face/face_depth.cpp
+  face/face_layers.cpp
   face/face_mesh.cpp
   face/face_shape.cpp
+  face/head_pose.cpp
   face/landmarks_file.cpp
   glb_mesh.cpp
   image.cpp

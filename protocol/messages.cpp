@@ -317,6 +317,37 @@ void serialise(Stream& s, MemberFace& m) {
   enumeration(s, m.source, 0, 2, "face source");
 }
 
+// A layer's code and intensity: only codes that layer takes (common/face/face_layers.hpp).
+template <class Stream>
+void layer(Stream& s, ExpressionState& v, bool (*takes)(Expression), const char* what) {
+  auto code = uint8_t(v.expression);
+  s.u8(code);
+  s.u8(v.intensity);
+  if constexpr (Stream::reading) {
+    const auto e = expression_from_code(code);
+    if (!e || !takes(*e)) throw ProtocolError(std::string(what) + " code " + std::to_string(code) + " is not one that layer takes");
+    v.expression = *e;
+  }
+}
+
+template <class Stream>
+void serialise(Stream& s, MemberLayers& m) {
+  s.u16(m.member);
+  s.u32(m.time_ms);
+  for (int8_t* v : {&m.yaw, &m.pitch, &m.roll}) {
+    auto raw = uint8_t(*v);
+    s.u8(raw);
+    *v = int8_t(raw);
+    if constexpr (Stream::reading) check(std::abs(int(*v)) <= kMaxPoseDegrees, "member layers: head pose outside +-90 degrees");
+  }
+  layer(s, m.expression, expression_layer_takes, "member layers: expression");
+  layer(s, m.mouth, mouth_layer_takes, "member layers: mouth");
+  s.u8(m.eye_left);
+  s.u8(m.eye_right);
+  if constexpr (Stream::reading) check(m.eye_left <= kMaxEyeOpenness && m.eye_right <= kMaxEyeOpenness, "member layers: eye openness over 200%");
+  enumeration(s, m.source, 0, 2, "face source");
+}
+
 template <class Stream>
 void serialise(Stream& s, CallMember& m) {
   s.u16(m.member);
@@ -409,7 +440,7 @@ const char* name_of(MessageType type) {
                                 "style-change", "camera-pose", "object-pose", "expression-code", "tween-data",
                                 "asset-announce", "asset-request", "asset-chunk", "publish", "neutral-photo",
                                 "face-crop", "face-region", "voice-frame", "member-face", "roster", "permissions",
-                                "face-video", "key-frame-request", "voice-route", "host-key", "room-control"};
+                                "face-video", "key-frame-request", "voice-route", "host-key", "room-control", "member-layers"};
   const auto i = unsigned(type);
   return i >= 1 && i <= kMessageTypes ? names[i - 1] : "unknown";
 }

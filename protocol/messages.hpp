@@ -18,8 +18,11 @@
 namespace inkwire::protocol {
 
 inline constexpr uint32_t kMagic = 0x574B4E49;  // the bytes "INKW" read as a little-endian u32
-inline constexpr uint16_t kVersion = 8;  // 2: snapshots describe a turntable's product; 3: calls, refused changes; 4: zoom levels; 5: permissions;
-                                         // 6: face video; 7: voice route; 8: rooms opened on joining, their host
+inline constexpr uint16_t kVersion = 9;  // 2: snapshots describe a turntable's product; 3: calls, refused changes; 4: zoom levels; 5: permissions;
+                                         // 6: face video; 7: voice route; 8: rooms opened on joining, their host;
+                                         // 9: member faces in layers with their head's pose
+// The oldest version a server still serves (protocol/versions.hpp says what such a peer is sent instead).
+inline constexpr uint16_t kOldestVersion = 7;
 
 inline constexpr size_t kMaxName = 64;           // session, client and server names
 inline constexpr size_t kMaxToken = 128;
@@ -49,9 +52,9 @@ enum class MessageType : uint16_t {
   Hello = 1, Welcome, Error, Ping, Pong, Join, Leave, Snapshot, StyleChange, CameraPose,
   ObjectPose, ExpressionCode, TweenData, AssetAnnounce, AssetRequest, AssetChunk,
   Publish, NeutralPhoto, FaceCrop, FaceRegion, VoiceFrame, MemberFace, Roster, Permissions,
-  FaceVideo, KeyFrameRequest, VoiceRoute, HostKey, RoomControl
+  FaceVideo, KeyFrameRequest, VoiceRoute, HostKey, RoomControl, MemberLayers
 };
-inline constexpr uint16_t kMessageTypes = 29;
+inline constexpr uint16_t kMessageTypes = 30;
 
 enum class SessionKind : uint8_t { Scene = 1, Turntable = 2, Conference = 3 };
 // Samples: a product's sample photos in sample order; Matte: their mattes, in the same order;
@@ -323,6 +326,25 @@ struct MemberFace {
   FaceSource source = FaceSource::Neutral;
 };
 
+// What a member's face shows, in layers, with its head's pose (S->C, version 9; SPEC F20-F22):
+// replaces member-face, which a server still sends a peer of version 7 or 8 (protocol/face_versions.hpp).
+// The expression (brows, cheeks: neutral, smile, laugh, frown, surprise, sad), the mouth (0: the
+// expression's own, drawn back to rest by its intensity; a viseme over it; an expression's mouth
+// instead of it) and each eye's
+// openness in percent of the neutral photo's (0 shut .. 200), as common/face/face_layers.hpp
+// mixes them; yaw, pitch and roll in degrees, each within +-90. 22 bytes framed.
+inline constexpr int kMaxPoseDegrees = 90;
+struct MemberLayers {
+  static constexpr MessageType type = MessageType::MemberLayers;
+  bool operator==(const MemberLayers&) const = default;
+  uint16_t member = 0;
+  uint32_t time_ms = 0;
+  int8_t yaw = 0, pitch = 0, roll = 0;
+  ExpressionState expression, mouth;
+  uint8_t eye_left = 100, eye_right = 100;
+  FaceSource source = FaceSource::Neutral;
+};
+
 // Every member of a call (S->C, a state message: the newest replaces the last). `assets` is
 // empty until the member's neutral photo is in, then the photo (kind image) and its landmarks.
 struct CallMember {
@@ -380,7 +402,7 @@ struct Permissions {
 using Message = std::variant<Hello, Welcome, ErrorMessage, Ping, Pong, Join, Leave, Snapshot, StyleChange, CameraPose,
                              ObjectPose, ExpressionCode, TweenData, AssetAnnounce, AssetRequest, AssetChunk,
                              Publish, NeutralPhoto, FaceCrop, FaceRegion, VoiceFrame, MemberFace, Roster, Permissions,
-                             FaceVideo, KeyFrameRequest, VoiceRoute, HostKey, RoomControl>;
+                             FaceVideo, KeyFrameRequest, VoiceRoute, HostKey, RoomControl, MemberLayers>;
 
 MessageType type_of(const Message& m);
 const char* name_of(MessageType type);

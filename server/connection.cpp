@@ -6,6 +6,7 @@
 #include "common/error.hpp"
 #include "common/log.hpp"
 #include "protocol/framing.hpp"
+#include "protocol/versions.hpp"
 #include "server/making/session_maker.hpp"
 #include "server/relay/relay.hpp"
 #include "server/server.hpp"
@@ -43,6 +44,10 @@ void Connection::send(const Message& message) {
 
 void Connection::send_frame(std::shared_ptr<const Bytes> frame, MessageType type) {
   if (closing_) return;
+  // An older peer is sent its version's frame; a type newer than it would end its connection, so
+  // it is not sent (callers such as Call::send_face send what it reads instead).
+  frame = frame_for(version_, std::move(frame), type);
+  if (!frame) return;
   if (type == MessageType::VoiceFrame && voice_stream_) {
     if (voice_stream_->open()) {
       voice_stream_->send(std::move(frame));
@@ -65,7 +70,9 @@ void Connection::close_with(ErrorCode code, const std::string& reason) {
   if (closing_) return;
   // The error goes out even past the byte limit: it is the last thing this peer gets.
   queue_.take_all();
-  queue_.push(std::make_shared<const Bytes>(encode(ErrorMessage{.code = code, .reason = reason.substr(0, kMaxReason)})), MessageType::Error);
+  queue_.push(frame_for(version_, std::make_shared<const Bytes>(encode(ErrorMessage{.code = code, .reason = reason.substr(0, kMaxReason)})),
+                       MessageType::Error),
+              MessageType::Error);
   closing_ = true;
   closed_for_ = {code, reason};
   wake_.cancel();
@@ -129,7 +136,7 @@ asio::awaitable<void> Connection::read_loop() {
       if (const std::error_code ec = co_await transport_->read_frame(frame)) break;
       last_heard_ = Clock::now();
       const FrameHeader h = parse_header(frame.data());
-      Message message = decode(h.type, frame.data() + kHeaderBytes, frame.size() - kHeaderBytes);
+      Message message = decode_from(version_, h.type, frame.data() + kHeaderBytes, frame.size() - kHeaderBytes);
       ++server_.counters().messages_in;
       // An address that guessed tokens waits before each join is looked at (this connection
       // reads nothing meanwhile; the others are served as usual).
@@ -180,16 +187,18 @@ void Connection::handle(Message& message) {
   if (!greeted_) {
     const auto* hello = std::get_if<Hello>(&message);
     if (!hello) throw ProtocolError(std::string("expected hello, got ") + name_of(type_of(message)));
-    if (hello->magic != kMagic || hello->version != kVersion) {
+    if (hello->magic != kMagic || hello->version < kOldestVersion || hello->version > kVersion) {
       log_warn("bad-version", {{"client", id_}, {"peer", peer_}, {"version", hello->version}});
-      close_with(ErrorCode::BadVersion, "protocol mismatch: server speaks Inkwire version " + std::to_string(kVersion) +
-                                            ", client sent magic " + std::to_string(hello->magic) + " version " + std::to_string(hello->version));
+      close_with(ErrorCode::BadVersion, "protocol mismatch: server speaks Inkwire version " + std::to_string(kVersion) + " (and back to " +
+                                            std::to_string(kOldestVersion) + "), client sent magic " + std::to_string(hello->magic) + " version " +
+                                            std::to_string(hello->version));
       return;
     }
     greeted_ = true;
+    version_ = hello->version;
     client_name_ = hello->client_name;
     log_info("hello", {{"client", id_}, {"peer", peer_}, {"name", client_name_}});
-    send(Welcome{.version = kVersion, .server_name = server_.config().name});
+    send(Welcome{.version = version_, .server_name = server_.config().name});  // the version it is spoken to in
     return;
   }
   switch (type_of(message)) {

@@ -34,6 +34,8 @@ class Connection : public std::enable_shared_from_this<Connection> {
   // Sends an error, then closes once it is written (or after a second if the peer is not reading).
   void close_with(protocol::ErrorCode code, const std::string& reason);
   uint64_t id() const { return id_; }
+  // The protocol version the peer said hello with (kOldestVersion .. kVersion): what it can read.
+  uint16_t version() const { return version_; }
   const std::string& address() const { return address_; }  // the peer's IP address
   const Transport& transport() const { return *transport_; }
   bool in_session() const { return session_ != nullptr; }
@@ -73,6 +75,7 @@ class Connection : public std::enable_shared_from_this<Connection> {
   Role role_ = Role::Visitor;  // in session_
   std::pair<protocol::ErrorCode, std::string> closed_for_;  // why close_with() ends the connection
   bool greeted_ = false, closing_ = false, shut_ = false;
+  uint16_t version_ = protocol::kVersion;
   using Clock = std::chrono::steady_clock;
   Clock::time_point last_heard_ = Clock::now(), last_ping_ = Clock::now(), last_written_ = Clock::now();
   std::optional<Clock::time_point> writing_since_;  // set while a write waits for the peer

@@ -5,6 +5,7 @@
 
 #include "client/gl/gl.hpp"
 #include "common/error.hpp"
+#include "protocol/face_versions.hpp"
 
 namespace inkwire {
 namespace {
@@ -50,16 +51,20 @@ void CallGrid::set_style(const std::string& renderer, const std::vector<std::str
   for (auto& [member, view] : views_) view->set_style(renderer, settings);
 }
 
-void CallGrid::set_face(const protocol::MemberFace& face) {
-  // Codes this client does not know (a newer server) are ignored: the face keeps its expression.
-  const auto state = protocol::expression_state(face.expression);
-  if (const auto it = views_.find(face.member); it != views_.end() && state) it->second->set_expression(*state);
+void CallGrid::set_face(const protocol::MemberLayers& face) {
+  if (const auto it = views_.find(face.member); it != views_.end()) it->second->set_face(protocol::face_state_of(face));
 }
 
 std::optional<ExpressionState> CallGrid::expression(uint16_t member) const {
   const auto it = views_.find(member);
   if (it == views_.end()) return std::nullopt;
   return it->second->expression();
+}
+
+std::optional<FaceState> CallGrid::face(uint16_t member) const {
+  const auto it = views_.find(member);
+  if (it == views_.end()) return std::nullopt;
+  return it->second->face();
 }
 
 void CallGrid::draw(glm::ivec2 viewport, double time_seconds, ConferenceView* speaker) {

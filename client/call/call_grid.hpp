@@ -31,12 +31,14 @@ class CallGrid {
   // members whose files are not there yet get a tile without a face.
   void update(const protocol::Roster& roster, const std::map<uint16_t, std::vector<std::filesystem::path>>& files);
   void set_style(const std::string& renderer, const std::vector<std::string>& settings);
-  void set_face(const protocol::MemberFace& face);
+  // A member's face: its layers and pose (SPEC F20-F22).
+  void set_face(const protocol::MemberLayers& face);
   // Into the bound framebuffer; `speaker`: the session's own speaker as a tile of its own.
   void draw(glm::ivec2 viewport, double time_seconds, ConferenceView* speaker);
   const std::vector<Tile>& tiles() const { return tiles_; }
-  // The expression a member's tile shows.
+  // The expression a member's tile shows (the one code that says most of it), and its whole face.
   std::optional<ExpressionState> expression(uint16_t member) const;
+  std::optional<FaceState> face(uint16_t member) const;
   // Whether a tile changes by itself, frame after frame (a painterly face): a grid that does not
   // need drawing again until something changes (the native window and the browser wait so).
   bool animates() const {

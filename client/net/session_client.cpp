@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "common/error.hpp"
+#include "protocol/face_versions.hpp"
 
 namespace inkwire {
 namespace {
@@ -193,10 +194,11 @@ void SessionClient::on_message(Message message) {
   } else if (auto* permissions = std::get_if<Permissions>(&message)) {
     permissions_ = std::move(*permissions);
     ++updates_;
-  } else if (const auto* face = std::get_if<MemberFace>(&message)) {
-    member_faces_[face->member] = *face;
+  } else if (std::holds_alternative<MemberLayers>(message) || std::holds_alternative<MemberFace>(message)) {
+    const MemberLayers face = std::holds_alternative<MemberLayers>(message) ? std::get<MemberLayers>(message) : member_layers_of(std::get<MemberFace>(message));
+    member_faces_[face.member] = face;
     if (face_queue_.size() >= 1000) face_queue_.pop_front();
-    face_queue_.push_back(*face);
+    face_queue_.push_back(face);
     ++updates_;
   } else if (const auto* region = std::get_if<FaceRegion>(&message)) {
     face_region_ = *region;
@@ -322,7 +324,7 @@ Roster SessionClient::roster() const {
   return roster_;
 }
 
-std::map<uint16_t, MemberFace> SessionClient::member_faces() const {
+std::map<uint16_t, MemberLayers> SessionClient::member_faces() const {
   std::lock_guard lock(mutex_);
   return member_faces_;
 }
@@ -332,7 +334,7 @@ std::optional<FaceRegion> SessionClient::face_region() const {
   return face_region_;
 }
 
-std::deque<MemberFace> SessionClient::take_member_faces() {
+std::deque<MemberLayers> SessionClient::take_member_faces() {
   std::lock_guard lock(mutex_);
   return std::exchange(face_queue_, {});
 }

@@ -93,7 +93,8 @@ class SessionClient {
   // found this member's face, and the voice packets received since the last take (at most a
   // few seconds' worth are kept: a reader that does not take them loses the oldest).
   protocol::Roster roster() const;
-  std::map<uint16_t, protocol::MemberFace> member_faces() const;
+  // Faces come as member-layers (a member-face from a server of version 7 or 8 is read as layers).
+  std::map<uint16_t, protocol::MemberLayers> member_faces() const;
   std::optional<protocol::FaceRegion> face_region() const;
   // True once after the server asked for a key frame of this member's face video.
   bool take_key_frame_request() { return key_frame_requested_.exchange(false); }
@@ -103,7 +104,7 @@ class SessionClient {
   };
   std::deque<ReceivedVoice> take_voice();
   // Every member-face received since the last take, in order (a few seconds' worth at most).
-  std::deque<protocol::MemberFace> take_member_faces();
+  std::deque<protocol::MemberLayers> take_member_faces();
 
   uint64_t bytes_sent() const { return bytes_sent_; }
   uint64_t bytes_received() const { return bytes_received_; }
@@ -145,11 +146,11 @@ class SessionClient {
   std::map<uint16_t, protocol::Bytes> tween_cells_;
   protocol::Roster roster_;
   protocol::Permissions permissions_;
-  std::map<uint16_t, protocol::MemberFace> member_faces_;
+  std::map<uint16_t, protocol::MemberLayers> member_faces_;
   std::optional<protocol::FaceRegion> face_region_;
   std::atomic<bool> key_frame_requested_{false};
   std::deque<ReceivedVoice> voice_;
-  std::deque<protocol::MemberFace> face_queue_;
+  std::deque<protocol::MemberLayers> face_queue_;
   uint64_t updates_ = 0;
   bool connected_ = true;
   std::string last_error_, refusal_;

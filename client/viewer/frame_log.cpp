@@ -24,8 +24,14 @@ nlohmann::json frame_log_line(SessionSync& sync, const SessionClient& client, lo
     for (const CallGrid::Tile& t : call.tiles()) {
       if (t.member == 0) continue;
       const auto shown = call.expression(t.member);
-      members.push_back({{"name", t.name}, {"speaking", t.speaking}, {"expression", name_of(shown ? shown->expression : Expression::Neutral)},
-                         {"you", t.you}, {"camera", t.camera}, {"microphone", t.microphone}, {"face_found", t.face_found}});
+      nlohmann::json member = {{"name", t.name}, {"speaking", t.speaking}, {"expression", name_of(shown ? shown->expression : Expression::Neutral)},
+                               {"you", t.you}, {"camera", t.camera}, {"microphone", t.microphone}, {"face_found", t.face_found}};
+      // The face's layers and pose it is drawn to (SPEC F20-F22).
+      if (const auto face = call.face(t.member))
+        member["face"] = {{"pose", {face->pose.yaw, face->pose.pitch, face->pose.roll}},
+                          {"eyes", {face->layers.eye_left, face->layers.eye_right}},
+                          {"layers", {name_of(face->layers.expression.expression), name_of(face->layers.mouth.expression)}}};
+      members.push_back(member);
     }
     line["members"] = members;
   }

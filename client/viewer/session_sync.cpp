@@ -64,7 +64,7 @@ bool SessionSync::poll_call() {
     changed = true;
   }
   for (const auto& voice : client_.take_voice()) audio_.add(voice.frame, voice.arrived);
-  for (protocol::MemberFace& face : client_.take_member_faces()) faces_waiting_.push_back(face);
+  for (protocol::MemberLayers& face : client_.take_member_faces()) faces_waiting_.push_back(face);
   // A face comes when the sound of its moment plays (its member's clock mapped as the voice's),
   // so the mouth moves with the voice; a member never heard is shown at once.
   const auto now = std::chrono::steady_clock::now();

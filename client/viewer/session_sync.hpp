@@ -52,7 +52,7 @@ class SessionSync {
   bool poll_call();
   protocol::Roster roster_;
   std::map<uint16_t, std::vector<std::filesystem::path>> member_files_;
-  std::deque<protocol::MemberFace> faces_waiting_;
+  std::deque<protocol::MemberLayers> faces_waiting_;
   CallAudio audio_{std::chrono::steady_clock::now()};
   void fetch_photo(TurntableView::PhotoFetch which);
   // Hands a fetched photo to the view; rethrows the error that stopped its fetch.

@@ -39,7 +39,7 @@ class SessionView {
   // A call (a conference whose members publish themselves): the roster with its members'
   // cached photo and landmarks files, and each member's face as it is due.
   void update_call(const protocol::Roster& roster, const std::map<uint16_t, AssetFiles>& files);
-  void set_member_face(const protocol::MemberFace& face) { conference().call().set_face(face); }
+  void set_member_face(const protocol::MemberLayers& face) { conference().call().set_face(face); }
   const CallGrid& call() const;
 
   // A turntable session's product (null in other sessions), and this visitor's own view of it

@@ -33,6 +33,15 @@ inline std::optional<Expression> expression_from_code(uint8_t code) {
   return Expression(code);
 }
 
+// The layers a face is sent in (SPEC F21, common/face/face_layers.hpp) take only some codes: the
+// expression layer no eyes-closed, winks or visemes (the eyes and the mouth are theirs), the mouth
+// layer no eyes. Each eye's openness is a percentage of the neutral photo's, 0 (shut) to 200.
+constexpr bool is_viseme(Expression e) { return e >= Expression::VisemeClosed && e <= Expression::VisemeRound; }
+constexpr bool expression_layer_takes(Expression e) { return e <= Expression::Sad; }
+constexpr bool mouth_layer_takes(Expression e) { return expression_layer_takes(e) || is_viseme(e); }
+inline constexpr uint8_t kEyeOpen = 100;  // as in the neutral photo
+inline constexpr uint8_t kMaxEyeOpenness = 200;
+
 // An expression as the face shows it: which one, and how strongly (255 = the full template).
 struct ExpressionState {
   Expression expression = Expression::Neutral;

@@ -1,9 +1,12 @@
 #include "common/face/face_mesh.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <tuple>
 
 #include <glm/geometric.hpp>
 
+#include "common/face/face_depth.hpp"
 #include "common/face/face_shape.hpp"
 
 namespace inkwire {
@@ -11,16 +14,40 @@ namespace inkwire {
 namespace {
 
 constexpr float kClosedMouthGap = 0.04f;  // inner lips closer than this (inter-ocular) count as closed
+constexpr float kCavityDepth = 0.15f;     // the mouth's inside lies behind the lips: a turned face's lips hide it
 
-// Anchors around the face (face frame): the jaw line pushed out from the face centre and the
-// brows lifted to the hairline. They stay fixed, so the deformation fades out between the
-// landmarks and them, and an opening jaw (up to ~0.35 inter-ocular) cannot fold over them.
-std::vector<glm::vec2> face_anchors(const FaceLandmarks& face) {
+// Anchors around the face (face frame, with depth), and how much each turns with the head:
+//   the forehead, the brows lifted to the hairline, and the head's outline over the hair and
+//   down past the ears (an ellipse a fifth wider than the jaw line, reaching 1.8 eye distances
+//   above the brows): they turn with the head, so the hair goes with the face;
+//   the neck, the jaw line pushed out from the face centre: half way, as a neck turns under a
+//   head;
+// the image border stays. The expression's deformation fades out between the landmarks and them,
+// and an opening jaw (up to ~0.35 inter-ocular) cannot fold over them.
+struct Anchor {
+  glm::vec3 point;
+  float follows;
+};
+
+std::vector<Anchor> face_anchors(const FaceLandmarks& face) {
+  std::vector<Anchor> anchors;
+  // The forehead: over the brows' ends, their middles and between them.
+  for (const auto& [a, b, depth] : {std::tuple{17, 17, -0.25f}, std::tuple{19, 19, 0.05f}, std::tuple{21, 22, 0.25f}, std::tuple{24, 24, 0.05f},
+                                    std::tuple{26, 26, -0.25f}})
+    anchors.push_back({glm::vec3(0.5f * (face[size_t(a)] + face[size_t(b)]) + glm::vec2(0.0f, -0.8f), depth), 1.0f});
+  // The head's outline: its centre level with the brows' top, on the head's widest (the skull's
+  // centre, 1.3 behind the eyes: its outline seen from the front lies there).
+  const float brows = std::min(face[19].y, face[24].y);
+  const float half_width = 1.2f * 0.5f * (face[16].x - face[0].x), centre_x = 0.5f * (face[16].x + face[0].x);
+  const float half_height = 1.8f, centre_y = brows;
+  for (int k = 0; k <= 6; ++k) {
+    const float angle = 3.14159265f * float(k) / 6.0f;
+    anchors.push_back({{centre_x + half_width * std::cos(angle), centre_y - half_height * std::sin(angle), -1.3f}, 1.0f});
+  }
+  for (float side : {-1.0f, 1.0f}) anchors.push_back({{centre_x + side * half_width, 0.5f * (face[0].y + face[16].y) + 0.4f, -1.1f}, 1.0f});
+  // The neck: the lower jaw line pushed out from the face centre.
   const glm::vec2 centre{0.0f, 0.45f};
-  std::vector<glm::vec2> anchors;
-  for (int i = 0; i <= 16; i += 2) anchors.push_back(centre + 1.6f * (face[size_t(i)] - centre));
-  for (int i = 17; i <= 26; i += 3) anchors.push_back(face[size_t(i)] + glm::vec2(0.0f, -0.8f));
-  anchors.push_back(face[26] + glm::vec2(0.0f, -0.8f));
+  for (int i = 0; i <= 16; i += 2) anchors.push_back({glm::vec3(centre + 1.6f * (face[size_t(i)] - centre), -0.9f), 0.5f});
   return anchors;
 }
 
@@ -40,17 +67,29 @@ FaceMesh build_face_mesh(const FaceLandmarks& landmarks, const ExpressionTemplat
   const FaceLandmarks face = to_face(landmarks, frame);
   FaceMesh out;
 
-  // Points: the 68 landmarks, fixed anchors, the image border.
+  // Points: the 68 landmarks, the anchors, the image border.
   std::vector<glm::vec2> points(landmarks.begin(), landmarks.end());
-  for (int i = 0; i < kFaceLandmarks; ++i) out.landmark_of.push_back(i);
+  const std::array<float, kFaceLandmarks> depth = landmark_depths(face);
+  for (int i = 0; i < kFaceLandmarks; ++i) {
+    out.landmark_of.push_back(i);
+    out.head_point.push_back(glm::vec3(face[size_t(i)], depth[size_t(i)]));
+    out.follows.push_back(1.0f);
+  }
   // Anchors near or past the image edge are left out (the border points hold the frame there);
   // squeezed against the edge they would make sliver triangles the triangulation can miss.
   const float margin = 0.04f * float(std::min(width, height));
-  for (const glm::vec2& face_point : face_anchors(face)) {
-    const glm::vec2 a = frame.to_image(face_point);
-    if (a.x > margin && a.y > margin && a.x < float(width) - margin && a.y < float(height) - margin) points.push_back(a);
+  for (const Anchor& anchor : face_anchors(face)) {
+    const glm::vec2 a = frame.to_image(glm::vec2(anchor.point));
+    if (!(a.x > margin && a.y > margin && a.x < float(width) - margin && a.y < float(height) - margin)) continue;
+    points.push_back(a);
+    out.head_point.push_back(anchor.point);
+    out.follows.push_back(anchor.follows);
   }
-  for (const glm::vec2& b : border_points(width, height)) points.push_back(b);
+  for (const glm::vec2& b : border_points(width, height)) {
+    points.push_back(b);
+    out.head_point.push_back(glm::vec3(frame.to_face(b), 0.0f));
+    out.follows.push_back(0.0f);
+  }
   out.landmark_of.resize(points.size(), -1);
 
   // Triangulated with the mouth open, so the inner lips are apart and the triangles between
@@ -81,6 +120,8 @@ FaceMesh build_face_mesh(const FaceLandmarks& landmarks, const ExpressionTemplat
       const glm::vec2 p = points[t[size_t(k)]];
       out.mesh.points.push_back({glm::vec2(p.x, cavity_y), p, p});
       out.landmark_of.push_back(int(t[size_t(k)]));
+      out.head_point.push_back(out.head_point[t[size_t(k)]] - glm::vec3(0.0f, 0.0f, kCavityDepth));
+      out.follows.push_back(1.0f);
     }
     out.mesh.triangles.push_back(copy);
   }

@@ -1,8 +1,10 @@
 // inkwire-conference: a whole low-bandwidth conference in one process, for demos and
 // measurement. The speaker side (camera, video or image sequence) runs the server's face
-// pipeline; the expression codes go through the real wire encoding and decoding; the receiver
-// side deforms the neutral photo (sent once) by each code, and optionally paints it. Writes the
-// side-by-side video input | reconstruction | painted reconstruction and the bytes sent.
+// pipeline; what a call sends of a face (member-layers: the layers and the head's pose) goes
+// through the real wire encoding and decoding; the receiver side deforms and turns the neutral
+// photo (sent once) by each, and optionally paints it. Writes the side-by-side video input |
+// reconstruction | painted reconstruction and the bytes sent (and what the session-wide single
+// code would have cost).
 //
 //   inkwire-conference --input SRC --out side.mp4 [--neutral PHOTO] [--json stats.json]
 //   inkwire-conference --speaker PHOTO --script smile:1,neutral:0.5 --out side.mp4 [--input-out speaker.mp4]
@@ -22,6 +24,7 @@
 #include "client/render/painterly/video_painter.hpp"
 #include "common/error.hpp"
 #include "common/video_source.hpp"
+#include "protocol/face_versions.hpp"
 #include "protocol/framing.hpp"
 #include "server/face/face_coder.hpp"
 
@@ -171,15 +174,14 @@ int run(const Options& o) {
   for (std::optional<Image> frame = std::move(first); frame && (o.frames == 0 || frames < o.frames); frame = speaker.next(), ++frames) {
     const double now = double(frames) / speaker.fps();
     const auto start = std::chrono::steady_clock::now();
-    const auto message = coder.code(*frame, now);
+    const FaceCoder::Sent sent = coder.read(*frame, now);
     analysis_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     faces += coder.last_face().has_value();
-    if (message) {
-      const protocol::Bytes bytes = protocol::encode(*message);  // over the wire and back
+    if (sent.layers) {
+      const protocol::Bytes bytes = protocol::encode(*sent.layers);  // over the wire and back
       wire.feed(bytes.data(), bytes.size());
       while (auto received = wire.next())
-        if (const auto* code = std::get_if<protocol::ExpressionCode>(&*received))
-          if (const auto state = protocol::expression_state(*code)) receiver.set_expression(*state, now);
+        if (const auto* face = std::get_if<protocol::MemberLayers>(&*received)) receiver.set_face(protocol::face_state_of(*face), now);
     }
     receiver.render(now);
     const Image reconstruction = receiver.read();  // opaque: the warped photo covers every pixel
@@ -201,9 +203,10 @@ int run(const Options& o) {
                           {"seconds", seconds},
                           {"fps", speaker.fps()},
                           {"faces_found", faces},
-                          {"messages", coder.stream().messages()},
-                          {"bytes", coder.stream().bytes()},
-                          {"bytes_per_second", seconds > 0 ? double(coder.stream().bytes()) / seconds : 0.0},
+                          {"messages", coder.layers_stream().messages()},
+                          {"bytes", coder.layers_stream().bytes()},
+                          {"bytes_per_second", seconds > 0 ? double(coder.layers_stream().bytes()) / seconds : 0.0},
+                          {"single_code_bytes_per_second", seconds > 0 ? double(coder.stream().bytes()) / seconds : 0.0},
                           {"neutral_photo_bytes", neutral.pixels.size()},
                           {"analysis_ms_mean", frames ? analysis_ms / frames : 0.0},
                           {"frames_per_expression", shown}};

@@ -6,7 +6,9 @@
 #include <algorithm>
 
 #include "common/log.hpp"
+#include "protocol/face_versions.hpp"
 #include "protocol/framing.hpp"
+#include "protocol/versions.hpp"
 #include "server/call/call_member.hpp"
 #include "server/connection.hpp"
 #include "server/relay/relay.hpp"
@@ -179,6 +181,20 @@ void Call::send_to_all(const protocol::Message& message) {
   const auto frame = std::make_shared<const Bytes>(protocol::encode(message));
   for (const auto& [id, m] : members_)
     if (const auto c = m->connection.lock()) c->send_frame(frame, protocol::type_of(message));
+}
+
+void Call::send_face(const protocol::MemberLayers& face) {
+  const auto layers = std::make_shared<const Bytes>(protocol::encode(face));
+  std::shared_ptr<const Bytes> legacy;  // encoded once, if any peer needs it
+  for (const auto& [id, m] : members_)
+    if (const auto c = m->connection.lock()) {
+      if (c->version() >= protocol::kLayersVersion) {
+        c->send_frame(layers, protocol::MessageType::MemberLayers);
+        continue;
+      }
+      if (!legacy) legacy = std::make_shared<const Bytes>(protocol::encode(protocol::member_face_of(face)));
+      c->send_frame(legacy, protocol::MessageType::MemberFace);
+    }
 }
 
 size_t Call::send_to_others(const Member& from, const protocol::Message& message) {

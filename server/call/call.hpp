@@ -97,6 +97,9 @@ class Call {
   void send_roster();
   size_t send_to_others(const Member& from, const protocol::Message& message);  // how many it went to
   void send_to_all(const protocol::Message& message);
+  // A member's face to every member here, each in the version it reads (member-face for a peer
+  // of version 7 or 8).
+  void send_face(const protocol::MemberLayers& face);
   void update_speakers(Clock::time_point now);
 
   std::string session_;

@@ -9,18 +9,16 @@
 #include "common/face/landmarks_file.hpp"
 #include "common/image.hpp"
 #include "common/log.hpp"
-#include "server/face/expression_selector.hpp"
-#include "server/face/expression_stream.hpp"
 #include "server/face/face_analyzer.hpp"
 #include "server/face/face_features.hpp"
-#include "server/face/head_pose.hpp"
+#include "server/face/face_reader.hpp"
+#include "server/face/layers_stream.hpp"
 
 namespace inkwire::server {
 namespace {
 
 constexpr int kMaxDecodedSide = 1024;  // a crop is ~160 px, a whole frame 320: anything bigger is refused
 constexpr int kDetectSide = 200;       // pictures are looked at this large (see looked_at)
-constexpr float kPoseStep = 8;         // degrees a head must turn before it is sent again
 constexpr int kDetectEvery = 2;        // crops: the detector checks the face is still there; between, it is tracked
 constexpr size_t kMaxWaitingFrames = 45;  // a member's video frames waiting (3 s): past this they go, and the stream waits for a key frame
 
@@ -31,8 +29,6 @@ Image decode_jpeg(const protocol::Bytes& jpeg, const char* what) {
     throw Error(std::string(what) + " is larger than " + std::to_string(kMaxDecodedSide) + " px");
   return image;
 }
-
-int8_t degrees_byte(float degrees) { return int8_t(std::clamp(std::lround(degrees), -127L, 127L)); }
 
 const FaceBox& largest(const std::vector<FaceBox>& faces) {
   return *std::max_element(faces.begin(), faces.end(), [](const FaceBox& a, const FaceBox& b) { return a.width() < b.width(); });
@@ -77,10 +73,8 @@ struct CallAnalyst::Models {
 
 // What the analyst keeps of a member between crops.
 struct CallAnalyst::Member {
-  ExpressionSelector selector{ExpressionSelector::Options{.calibration_frames = 15}};
-  ExpressionStream stream{2.0};  // a face that does not change is said again every two seconds
-  std::optional<FaceLandmarks> neutral;  // pose reference: the neutral photo's, else the first face seen
-  HeadPose sent_pose;
+  FaceReader reader;   // calibrated by the neutral photo, else by the first faces seen
+  LayersStream stream{2.0};  // a face that does not change is said again every two seconds
   // Tracking between detections: where the face was in the frame, and crops since the detector ran.
   std::optional<FaceLandmarks> last_in_frame;
   int since_detection = 0;
@@ -220,8 +214,7 @@ PhotoAnalysed CallAnalyst::analyse_photo(const MemberKey& who, protocol::Bytes j
     if (!found) throw Error("no face found in your photo");
     const FaceLandmarks& landmarks = *found;
     auto member = std::make_unique<Member>();
-    member->selector.calibrate(measure_features(landmarks, &photo));
-    member->neutral = landmarks;
+    member->reader.calibrate(landmarks, &photo);
     {
       std::lock_guard lock(mutex_);
       members_[who] = std::move(member);  // a retake calibrates anew (a member who left meanwhile is dropped by the server)
@@ -327,8 +320,8 @@ void CallAnalyst::analyse_picture(const MemberKey& who, const Picture& crop, Cro
       member->box_scale = glm::vec2(float(detected->width()), float(detected->height())) / size;
       member->box_offset = (box_centre - (lo + hi) * 0.5f) / size.x;
     }
-    const ExpressionState state = member->selector.update(found ? std::optional(measure_features(*found, &image)) : std::nullopt);
     if (!found) {
+      member->reader.read(std::nullopt);
       member->last_in_frame.reset();
       out.region = protocol::FaceRegion{.found = false};
       return;
@@ -347,17 +340,11 @@ void CallAnalyst::analyse_picture(const MemberKey& who, const Picture& crop, Cro
                                       .width = uint16_t(std::clamp(side, 8.0f, float(crop.frame_width) - x0)),
                                       .height = uint16_t(std::clamp(side, 8.0f, float(crop.frame_height) - y0))};
     member->last_in_frame = in_frame;
-    if (!member->neutral) member->neutral = in_frame;
-    const HeadPose pose = head_pose(in_frame, *member->neutral);
-    const auto code = member->stream.next(state, crop.time_ms / 1000.0);
-    const bool turned = std::abs(pose.yaw - member->sent_pose.yaw) >= kPoseStep || std::abs(pose.pitch - member->sent_pose.pitch) >= kPoseStep ||
-                        std::abs(pose.roll - member->sent_pose.roll) >= kPoseStep;
-    if (code || turned) {
-      member->sent_pose = pose;
-      protocol::ExpressionCode expression = code.value_or(protocol::ExpressionCode{.code = uint8_t(state.expression), .intensity = state.intensity});
-      out.face = protocol::MemberFace{.member = who.member, .time_ms = crop.time_ms, .expression = expression, .yaw = degrees_byte(pose.yaw),
-                                      .pitch = degrees_byte(pose.pitch), .roll = degrees_byte(pose.roll), .source = protocol::FaceSource::Camera};
-    }
+    // Features from the picture's landmarks (the eyes' shade is read in it), the pose from the
+    // frame's (a crop at the frame's edge may be scaled unevenly).
+    const FaceState& state = member->reader.read(*found, &image, &in_frame);
+    out.mouth_sure = std::abs(state.pose.yaw) <= kSureYaw && face_frame(*found).scale >= kSureEyes;
+    out.face = member->stream.next(state, crop.time_ms / 1000.0, who.member, crop.time_ms);
   }
 }
 

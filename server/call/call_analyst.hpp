@@ -27,6 +27,8 @@
 namespace inkwire::server {
 
 inline constexpr float kRegionMargin = 1.8f;  // the next crop: the face's landmarks' box grown this much about its centre
+inline constexpr float kSureYaw = 30;         // degrees
+inline constexpr float kSureEyes = 20;        // pixels between the eyes in the picture read
 
 // JPEG files start with SOI and a marker: anything else is refused before it is decoded.
 bool looks_like_jpeg(const protocol::Bytes& bytes);
@@ -67,7 +69,11 @@ struct CropAnalysed {
   int frames_dropped = 0;             // video frames that could not be decoded (the first one's reason in `error`)
   bool key_frame_wanted = false;      // the member's video waits for a key frame: ask for one
   std::optional<protocol::FaceRegion> region;  // where to crop next, for the publisher (none: nothing was analysed)
-  std::optional<protocol::MemberFace> face;  // what to send the others, when it changed (or once a second)
+  std::optional<protocol::MemberLayers> face;  // what to send the others, when it changed (or every two seconds)
+  // Whether the camera's mouth can be trusted: a head turned past kSureYaw hides a mouth corner,
+  // and a face under kSureEyes pixels between the eyes shows its lips in a few blurred pixels.
+  // When not, the voice's mouth goes over the camera's face (SPEC F21).
+  bool mouth_sure = true;
 };
 
 class CallAnalyst {

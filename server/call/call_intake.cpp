@@ -120,9 +120,16 @@ void Call::analysed(const CropAnalysed& result) {
     send_roster();
   }
   // Everyone, the member too: its own tile shows what the others see of it.
+  if (result.region->found) m->camera_mouth_sure = result.mouth_sure;
   if (result.face) {
-    send_to_all(*result.face);
-    relay_.share_call({.origin = origin_, .session = session_, .message = *result.face});
+    m->camera_face = *result.face;
+    if (!(result.face->mouth == m->camera_mouth)) m->camera_mouth = result.face->mouth, m->camera_mouth_moved = now;
+    protocol::MemberLayers face = *result.face;
+    // A mouth the camera cannot say: the voice's, while the member speaks (SPEC F21).
+    const bool speaking = now - m->last_voice < kSpeakingHold;
+    if (speaking && m->voice_moves_mouth(now, speaking)) face.mouth = m->voice_mouth;
+    send_face(face);
+    relay_.share_call({.origin = origin_, .session = session_, .message = face});
   }
 }
 

@@ -18,6 +18,7 @@ using protocol::Bytes;
 
 inline constexpr auto kSpeakingHold = std::chrono::milliseconds(400);  // silence before a speaker stops speaking
 inline constexpr auto kFaceLost = std::chrono::milliseconds(1000);     // camera faces older than this: the voice moves the mouth
+inline constexpr auto kStillMouth = std::chrono::milliseconds(600);    // a camera's mouth unmoved this long while the voice speaks: the voice's
 inline constexpr auto kVoiceMouthStep = std::chrono::milliseconds(150); // a mouth from the voice changes at most this often
 inline constexpr auto kNoFaceAfter = std::chrono::seconds(3);          // crops without a face this long: "no face found"
 inline constexpr auto kVoiceMouthKeepalive = std::chrono::seconds(1);
@@ -69,6 +70,15 @@ struct Call::Member {
   Clock::time_point last_voice{}, last_face{};
   std::optional<Clock::time_point> faceless_since;  // crops have come without a face since then
   bool faceless = false;                            // ... for longer than kNoFaceAfter
+  std::optional<protocol::MemberLayers> camera_face;  // what the camera read last: the voice's mouth goes over it
+  bool camera_mouth_sure = true;                      // ... and whether its mouth is to be trusted (CropAnalysed::mouth_sure)
+  ExpressionState camera_mouth;                       // its mouth layer, and when that last moved: a mouth that
+  Clock::time_point camera_mouth_moved{};             // holds still while the voice speaks is not the camera's to say
+  // Whether the voice says the mouth now (SPEC F10, F21): no face read, a mouth the camera cannot
+  // be sure of, or one that holds still while the member speaks (a frozen or blurred camera).
+  bool voice_moves_mouth(Clock::time_point now, bool speaking) const {
+    return !entry.camera || faceless || now - last_face > kFaceLost || !camera_mouth_sure || (speaking && now - camera_mouth_moved > kStillMouth);
+  }
   ExpressionState voice_mouth;
   Clock::time_point voice_mouth_sent{};
   uint32_t latest_voice_time = 0;

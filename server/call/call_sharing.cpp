@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "common/log.hpp"
+#include "protocol/face_versions.hpp"
 #include "protocol/framing.hpp"
 #include "server/call/call_member.hpp"
 #include "server/connection.hpp"
@@ -93,6 +94,12 @@ void Call::remote(const CallShare& share) {
     if (reading->level_db > VoiceAnalysis::kSilenceDb) r->last_voice = now;
     update_speakers(now);
     if (!r->entry.speaking) return;
+  }
+  // From an instance of before layers: its one code as layers.
+  if (const auto* face = std::get_if<protocol::MemberFace>(&message)) message = protocol::member_layers_of(*face);
+  if (const auto* face = std::get_if<protocol::MemberLayers>(&message)) {
+    send_face(*face);
+    return;
   }
   const auto frame = std::make_shared<const Bytes>(protocol::encode(message));
   for (const auto& [id, m] : members_)

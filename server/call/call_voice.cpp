@@ -32,18 +32,24 @@ void Call::voice(uint64_t connection, protocol::VoiceFrame frame) {
     counters_.voice_relayed += send_to_others(*m, frame);
     relay_.share_call({.origin = origin_, .session = session_, .message = frame});
   }
-  // Without a face to read, the voice moves the mouth (SPEC F10).
-  const bool face_gone = !m->entry.camera || m->faceless || now - m->last_face > kFaceLost;
+  // Without a face to read, or a mouth the camera cannot say, the voice moves the mouth (SPEC F10, F21).
+  // (Speaking: heard lately, so the pauses between syllables close the mouth too.)
+  const bool face_gone = m->voice_moves_mouth(now, now - m->last_voice < kSpeakingHold);
   // Mouths change with syllables, four to seven a second: one every packet would be more codes
   // than speech needs (SPEC F14 counts them).
   const bool changed = !(reading->mouth == m->voice_mouth) && now - m->voice_mouth_sent >= kVoiceMouthStep;
   if (face_gone && (changed || now - m->voice_mouth_sent > kVoiceMouthKeepalive)) {
     m->voice_mouth = reading->mouth;
     m->voice_mouth_sent = now;
-    const protocol::MemberFace face{.member = m->entry.member, .time_ms = frame.time_ms,
-                                    .expression = {.code = uint8_t(reading->mouth.expression), .intensity = reading->mouth.intensity},
-                                    .source = protocol::FaceSource::Voice};
-    send_to_all(face);
+    // The mouth over what the camera read last (its expression, eyes and pose), while the camera is
+    // on: a member whose face the camera lost a moment keeps its smile; with the camera off, a
+    // neutral face.
+    protocol::MemberLayers face = m->entry.camera && m->camera_face ? *m->camera_face : protocol::MemberLayers{};
+    face.member = m->entry.member;
+    face.time_ms = frame.time_ms;
+    face.mouth = reading->mouth;
+    face.source = protocol::FaceSource::Voice;
+    send_face(face);
     relay_.share_call({.origin = origin_, .session = session_, .message = face});
   }
 }

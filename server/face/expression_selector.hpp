@@ -53,6 +53,8 @@ class ExpressionSelector {
   // Calibrates at once from a known neutral face (e.g. a neutral photo) instead of the first frames.
   void calibrate(const FaceFeatures& neutral);
   bool calibrated() const { return neutral_.has_value(); }
+  const std::optional<FaceFeatures>& neutral() const { return neutral_; }
+  const Options& options() const { return options_; }
 
   // One frame's features, or nothing when no face was found (the state is kept). Returns the
   // stable state: neutral until calibrated.

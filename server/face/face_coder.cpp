@@ -1,5 +1,7 @@
 #include "server/face/face_coder.hpp"
 
+#include <algorithm>
+
 #include "common/error.hpp"
 
 namespace inkwire {
@@ -9,15 +11,15 @@ FaceLandmarks FaceCoder::calibrate(const Image& neutral_photo) {
   const auto face = analyzer_.analyse(neutral_photo);
   analyzer_.reset();
   if (!face) throw Error("neutral photo: no face found");
-  selector_.calibrate(measure_features(face->landmarks, &neutral_photo));
+  reader_.calibrate(face->landmarks, &neutral_photo);
   return face->landmarks;
 }
 
-std::optional<protocol::ExpressionCode> FaceCoder::code(const Image& frame, double now) {
+FaceCoder::Sent FaceCoder::read(const Image& frame, double now) {
   last_face_ = analyzer_.analyse(frame);
-  const ExpressionState state =
-      selector_.update(last_face_ ? std::optional(measure_features(last_face_->landmarks, &frame)) : std::nullopt);
-  return stream_.next(state, now);
+  const FaceState& state = reader_.read(last_face_ ? std::optional(last_face_->landmarks) : std::nullopt, &frame);
+  return {.code = stream_.next(reader_.expression(), now),
+          .layers = layers_.next(state, now, 0, uint32_t(std::max(0.0, now) * 1000.0))};
 }
 
 }  // namespace inkwire

@@ -73,7 +73,8 @@ CallShare parse_call_share(std::string_view text) {
   if (text[0] == 'M') {
     share.message = r.frame();
     const auto type = protocol::type_of(*share.message);
-    if (type != protocol::MessageType::VoiceFrame && type != protocol::MessageType::MemberFace && type != protocol::MessageType::Roster)
+    if (type != protocol::MessageType::VoiceFrame && type != protocol::MessageType::MemberFace && type != protocol::MessageType::MemberLayers &&
+        type != protocol::MessageType::Roster)
       throw ProtocolError(std::string("broker text: a call does not share a ") + protocol::name_of(type));
     return share;
   }

@@ -35,12 +35,13 @@ std::string session_definition(const StoredSession& stored);
 StoredSession parse_session_definition(std::string_view text);
 
 // A call's traffic between instances (SPEC F12): what an instance's own members publish, for
-// the members on other instances. `message` is a voice-frame or member-face of one of the
-// origin's members (by the origin's member number), or a roster of the origin's own members
-// (its `host` the origin's number of the room's host when the host is there, and then its
-// `locked` the room's); a member's neutral photo travels with its landmarks' JSON (photo_member
-// non-zero). A room's host removing a member of another instance asks that instance to
-// (`removal`: the instance, its number for the member, the reason the member is given).
+// the members on other instances. `message` is a voice-frame or member-layers (member-face from
+// an instance of version 7 or 8) of one of the origin's members (by the origin's member number),
+// or a roster of the origin's own members (its `host` the origin's number of the room's host
+// when the host is there, and then its `locked` the room's); a member's neutral photo travels
+// with its landmarks' JSON (photo_member non-zero). A room's host removing a member of another
+// instance asks that instance to (`removal`: the instance, its number for the member, the reason
+// the member is given).
 struct CallShare {
   struct Removal {
     std::string instance;

@@ -30,6 +30,7 @@
 #include "client/net/session_client.hpp"
 #include "common/error.hpp"
 #include "net_load.hpp"
+#include "protocol/face_versions.hpp"
 #include "server/server.hpp"
 
 namespace inkwire::bench {
@@ -254,7 +255,7 @@ std::vector<Result> run_call_suite(Harness& harness) {
       viewer.join("call", "");
       SessionClient member(up.address(), "member");
       member.join("call", "");
-      std::vector<protocol::MemberFace> faces;
+      std::vector<protocol::MemberLayers> faces;
       Clock::time_point publisher_start;
       uint64_t sent_before = 0;
       double seconds = 0;
@@ -287,7 +288,7 @@ std::vector<Result> run_call_suite(Harness& harness) {
         if (t % 2000 < 700) continue;
         std::optional<Expression> shown;
         for (const auto& f : faces)
-          if (f.time_ms <= uint32_t(t)) shown = expression_from_code(f.expression.code);
+          if (f.time_ms <= uint32_t(t)) shown = expression_from_code(protocol::member_face_of(f).expression.code);
         const auto& want = wanted[size_t(t / 2000)];
         ++subject_samples;
         subject_matched += shown && std::find(want.begin(), want.end(), *shown) != want.end();

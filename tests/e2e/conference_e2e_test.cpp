@@ -171,3 +171,19 @@ TEST(ConferenceE2ETest, AScriptedWinkIsSeenOnTheSameEye) {
   EXPECT_GT(shown.value("wink-left", 0), 10) << shown.dump();
   EXPECT_EQ(shown.value("wink-right", 0), 0) << shown.dump();
 }
+
+// A blink of 150 ms on a speaker photo, at a camera's 15 pictures a second (SPEC F22): the server
+// reads it (both eyes' lids falling together, though dlib's model follows a shut lid part way)
+// and the receiver draws the eyes shut for about as long, then open again.
+TEST(ConferenceE2ETest, AScriptedBlinkOf150MillisecondsIsDrawnAsABlinkAndTheEyesOpenAgain) {
+  if (!fs::exists(kSpeakerPhoto) || !fs::exists(kFaceModel)) GTEST_SKIP() << "libdlib-dev's example faces or libdlib-data's model is missing";
+  const fs::path dir = output_dir("conference-blink");
+  Process conference("inkwire-conference", {"--speaker", kSpeakerPhoto.string(), "--script", "neutral:1,eyes-closed:0.15,neutral:1", "--fps", "15",
+                                            "--paint", "none", "--out", (dir / "blink.mp4").string(), "--json", (dir / "blink.json").string()},
+                     dir / "blink.log");
+  ASSERT_EQ(conference.wait(std::chrono::seconds(120)), 0) << conference.output();
+  const auto shown = nlohmann::json::parse(std::ifstream(dir / "blink.json"))["frames_per_expression"];
+  EXPECT_GE(shown.value("eyes-closed", 0), 1) << "no blink drawn: " << shown.dump();
+  EXPECT_LE(shown.value("eyes-closed", 0), 5) << "the eyes stayed shut: " << shown.dump();
+  EXPECT_GE(shown.value("neutral", 0), 28) << shown.dump();
+}

@@ -14,6 +14,7 @@
 #include "client/net/session_client.hpp"
 #include "common/image.hpp"
 #include "e2e_support.hpp"
+#include "protocol/face_versions.hpp"
 
 using namespace inkwire;
 using namespace inkwire::e2e;
@@ -84,7 +85,7 @@ TEST(FaceVideoE2ETest, AFaceSentAsVideoIsReadAsWellAsJpegAtAFractionOfTheBits) {
     const auto smiling = [&] {
       const auto faces = listener.member_faces();
       if (!faces.count(ada_number)) return false;
-      const protocol::MemberFace& f = faces.at(ada_number);
+      const protocol::MemberFace f = protocol::member_face_of(faces.at(ada_number));
       if (read.empty() || read.back().second != f.expression.code) read.emplace_back(f.time_ms, f.expression.code);
       return is_smile(f.expression.code);
     };
@@ -93,7 +94,7 @@ TEST(FaceVideoE2ETest, AFaceSentAsVideoIsReadAsWellAsJpegAtAFractionOfTheBits) {
   }
   ASSERT_TRUE(ada.face_region() && ada.face_region()->found) << "the server never found Ada's face in her video";
   ASSERT_TRUE(eventually([&] { return listener.member_faces().count(ada_number); }));
-  const protocol::MemberFace face = listener.member_faces().at(ada_number);
+  const protocol::MemberFace face = protocol::member_face_of(listener.member_faces().at(ada_number));
   EXPECT_EQ(face.source, protocol::FaceSource::Camera);
   if (yale) {
     std::string seen;

@@ -35,12 +35,19 @@ nlohmann::json rooms_config(nlohmann::json making = nlohmann::json::object()) {
 // code (11 locked, 12 removed), which SessionClient turns into a sentence.
 class RawMember {
  public:
-  RawMember(const ServerUnderTest& server, const std::string& name) : socket_(io_) {
+  // `version`: the protocol version it says hello with and writes its join in (version 7's has
+  // no open_room).
+  RawMember(const ServerUnderTest& server, const std::string& name, uint16_t version = protocol::kVersion) : socket_(io_), version_(version) {
     socket_.connect(server.endpoint());
-    send(protocol::Hello{.client_name = name});
+    send(protocol::Hello{.version = version, .client_name = name});
   }
   void send(const protocol::Message& m) {
-    const protocol::Bytes frame = protocol::encode(m);
+    protocol::Bytes frame = protocol::encode(m);
+    if (version_ < 8 && std::holds_alternative<protocol::Join>(m)) {
+      frame.pop_back();
+      const auto payload = uint32_t(frame.size() - protocol::kHeaderBytes);
+      for (int i = 0; i < 4; ++i) frame[size_t(i)] = uint8_t(payload >> (8 * i));
+    }
     asio::write(socket_, asio::buffer(frame));
   }
   // The first message `wanted` takes, or nothing when the server closed first or `patience`
@@ -80,6 +87,7 @@ class RawMember {
  private:
   asio::io_context io_;
   asio::ip::tcp::socket socket_;
+  uint16_t version_;
   std::array<uint8_t, 16384> buffer_{};
   protocol::FrameDecoder decoder_;
 };
@@ -231,6 +239,15 @@ TEST_F(RoomsE2ETest, TheHostLocksOpensAndRemovesAndOthersAreRefusedEachWithTheRe
     ASSERT_TRUE(answer && std::holds_alternative<protocol::ErrorMessage>(*answer)) << error_text(answer);
     const auto& refused = std::get<protocol::ErrorMessage>(*answer);
     EXPECT_EQ(refused.code, protocol::ErrorCode::Locked) << refused.reason;
+    EXPECT_EQ(refused.reason, "room chess is locked: ask Hilda (its host) to open it");
+  }
+  {
+    // A client of protocol version 7 knows no error 11: it is refused (9) with the same reason.
+    RawMember older(server, "Olga", 7);
+    const auto answer = older.join({.session = "chess", .token = "", .open_room = false});
+    ASSERT_TRUE(answer && std::holds_alternative<protocol::ErrorMessage>(*answer)) << error_text(answer);
+    const auto& refused = std::get<protocol::ErrorMessage>(*answer);
+    EXPECT_EQ(refused.code, protocol::ErrorCode::Refused) << refused.reason;
     EXPECT_EQ(refused.reason, "room chess is locked: ask Hilda (its host) to open it");
   }
   // ... the native client too, which says so and stops,

@@ -17,6 +17,8 @@
 #include "server/call/call_analyst.hpp"
 #include "server/face/expression_selector.hpp"
 #include "server/face/face_analyzer.hpp"
+#include "server/face/face_reader.hpp"
+#include "common/face/face_layers.hpp"
 
 namespace inkwire::eval {
 namespace fs = std::filesystem;
@@ -119,7 +121,7 @@ FaceAnalyzerOptions still_options(int upsample) { return {.detect_every = 1, .de
 nlohmann::json features_json(const FaceFeatures& f) {
   return {{"brow_raise", {f.brow_raise_left, f.brow_raise_right}}, {"eye_open", {f.eye_open_left, f.eye_open_right}},
           {"mouth_open", f.mouth_open}, {"mouth_width", f.mouth_width}, {"corner_lift", f.corner_lift},
-          {"jaw_drop", f.jaw_drop}, {"brow_inner_raise", f.brow_inner_raise}};
+          {"jaw_drop", f.jaw_drop}, {"brow_inner_raise", f.brow_inner_raise}, {"eye_shade", {f.eye_shade_left, f.eye_shade_right}}};
 }
 
 }  // namespace
@@ -129,6 +131,14 @@ nlohmann::json run_faces(const FacesOptions& options) {
   FaceAnalyzer analyzer(still_options(0)), upsampled(still_options(1));
   nlohmann::json per_label = nlohmann::json::object(), confusion = nlohmann::json::object(), details = nlohmann::json::array();
   int images = 0, correct = 0, no_face = 0, no_neutral = 0;
+  // Each layer on its own (SPEC F21), as a call's reader (server/face/face_reader.hpp) tells a
+  // still photo held for five pictures: the expression (happy: smile, surprised: surprise, sad:
+  // sad, the others neutral), the eyes (sleepy: both shut, wink: one, the others both open) and
+  // the mouth as drawn (open: its inner lips parted 0.1 eye distances more than the neutral
+  // face's; surprised open, normal, sleepy, wink and sad not; happy faces show their teeth either
+  // way and are not counted).
+  std::map<std::string, std::pair<int, int>> layer_scores;  // layer -> (correct, n)
+  const auto score = [&](const std::string& layer, bool right) { layer_scores[layer].first += right, ++layer_scores[layer].second; };
   int framed = 0, framed_correct = 0, framed_call = 0, framed_call_correct = 0;  // the photos as call pictures frame them
   nlohmann::json framed_per_subject = nlohmann::json::object();
   for (const auto& [subject, by_label] : photos) {
@@ -158,6 +168,19 @@ nlohmann::json run_faces(const FacesOptions& options) {
         features = measure_features(*points, &image);
         state = classify(*features, neutral);
         chosen = label_of(state.expression);
+        FaceReader reader;
+        reader.calibrate(*neutral_points, &neutral_photo);
+        for (int k = 0; k < 5; ++k) reader.read(*points, &image);
+        const FaceLayers& layers = reader.state().layers;
+        const Expression face = layers.expression.intensity > 0 ? layers.expression.expression : Expression::Neutral;
+        const Expression wanted = label == "happy" ? Expression::Smile : label == "surprised" ? Expression::Surprise : label == "sad" ? Expression::Sad : Expression::Neutral;
+        score("expression", face == wanted);
+        const int shut = (layers.eye_left == 0) + (layers.eye_right == 0);
+        score("eyes", shut == (label == "sleepy" ? 2 : label == "wink" ? 1 : 0));
+        if (label != "happy") {
+          const FaceFeatures drawn = measure_features(apply_layers(*neutral_points, shipped_templates(), layers));
+          score("mouth", (drawn.mouth_open - neutral.mouth_open > 0.1f) == (label == "surprised"));
+        }
         if (call_neutral) {
           const bool in_call = label == "normal" || label == "happy" || label == "surprised";  // what the call bench shows
           int right_here = 0, here = 0;
@@ -205,6 +228,12 @@ nlohmann::json run_faces(const FacesOptions& options) {
                         {"no_face", no_face},
                         {"subjects_without_neutral", no_neutral},
                         {"per_label", per_label},
+                        {"per_layer", [&] {
+                           nlohmann::json j = nlohmann::json::object();
+                           for (const auto& [layer, cn] : layer_scores)
+                             j[layer] = {{"n", cn.second}, {"correct", cn.first}, {"accuracy", cn.second ? double(cn.first) / cn.second : 0.0}};
+                           return j;
+                         }()},
                         {"confusion", confusion}};
   if (options.details) out["details"] = details;
   return out;

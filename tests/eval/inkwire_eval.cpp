@@ -2,6 +2,8 @@
 //   inkwire-eval faces --dataset DIR --json OUT.json        (Yale-style subjectNN_label photos)
 //   inkwire-eval face-templates --dataset DIR --subjects 01-08 --out TEMPLATES.json --json OUT.json
 //   inkwire-eval tween-ring --dataset DIR --json OUT.json   (templeRing-style ring of photos)
+//   inkwire-eval face-pose [--clip VIDEO] [--yale DIR] --json OUT.json [--images DIR]  (faces drawn with their head's pose)
+//   inkwire-eval head-pose --neutral PHOTO --image PICTURE --json OUT.json  (the pose a picture shows, as a call reads it)
 #include <fstream>
 #include <iostream>
 
@@ -9,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.hpp"
+#include "eval_face_pose.hpp"
 #include "eval_faces.hpp"
 #include "eval_tween_ring.hpp"
 
@@ -40,6 +43,20 @@ int main(int argc, char** argv) {
   faces->add_option("--limit", faces_options.limit, "at most this many images (0: all)")->check(CLI::Range(0, 100000));
   faces->add_flag("--details", faces_options.details, "per-image features and choices in the JSON");
   templates->add_option("--out", templates_out, "template file to write")->required();
+  eval::FacePoseOptions pose_options;
+  CLI::App* pose = app.add_subcommand("face-pose", "faces drawn from what a call sends against the faces that were there: head pose "
+                                                   "error, NME and the turn's reading, before poses travelled and now");
+  pose->add_option("--clip", pose_options.clip, "a video with turning heads (e.g. /usr/share/doc/opencv-doc/examples/data/Megamind.avi)");
+  pose->add_option("--yale", pose_options.yale, "a folder of subjectNN_normal photos, turned in the picture for roll");
+  pose->add_option("--json", json_path, "write the figures here")->required();
+  pose->add_option("--images", pose_options.images_dir, "write sender | before | now sheets of some frames here");
+  pose->add_option("--limit", pose_options.limit, "at most this many frames of the clip (0: all)")->check(CLI::Range(0, 1000000));
+  std::string neutral_photo, posed_picture;
+  CLI::App* head = app.add_subcommand("head-pose", "the head's pose in a picture against a neutral photo of the same face, read as a "
+                                                   "call's server reads a member's camera (yaw, pitch, roll in degrees)");
+  head->add_option("--neutral", neutral_photo, "the neutral photo")->required();
+  head->add_option("--image", posed_picture, "the picture to read")->required();
+  head->add_option("--json", json_path, "write the pose here")->required();
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -50,6 +67,8 @@ int main(int argc, char** argv) {
     if (tween_ring->parsed()) out = eval::run_tween_ring(ring);
     if (faces->parsed()) out = eval::run_faces(faces_options);
     if (templates->parsed()) out = eval::make_face_templates(faces_options, templates_out);
+    if (pose->parsed()) out = eval::run_face_pose(pose_options);
+    if (head->parsed()) out = eval::read_head_pose(neutral_photo, posed_picture);
     std::ofstream file(json_path);
     file << out.dump(2) << "\n";
     if (!file) throw Error("cannot write " + json_path);

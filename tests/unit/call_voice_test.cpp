@@ -10,7 +10,6 @@
 #include <opus.h>
 
 #include "server/call/voice_analysis.hpp"
-#include "server/face/head_pose.hpp"
 
 using namespace inkwire;
 using namespace inkwire::server;
@@ -86,25 +85,6 @@ TEST(CallVoiceTest, BytesThatAreNotMonoOpusAreRefusedWithTheReason) {
   // Code 3 (a frame count byte follows) with a count of 0: no Opus packet.
   EXPECT_FALSE(voice.read(std::vector<uint8_t>{0x03, 0x00}, &reason));
   EXPECT_FALSE(reason.empty());
-}
-
-TEST(CallVoiceTest, HeadPoseIsZeroForTheNeutralFaceAndFollowsATurnedNose) {
-  FaceLandmarks neutral{};
-  for (int i = 0; i < kFaceLandmarks; ++i) neutral[size_t(i)] = {100.0f + float(i % 10), 100.0f + float(i / 10)};
-  // Eyes level, 60 px apart; the nose tip below their middle.
-  for (int i = 36; i < 42; ++i) neutral[size_t(i)] = {70, 100};
-  for (int i = 42; i < 48; ++i) neutral[size_t(i)] = {130, 100};
-  neutral[face_index::kNoseTip] = {100, 140};
-  const HeadPose still = head_pose(neutral, neutral);
-  EXPECT_NEAR(still.yaw, 0, 1e-3);
-  EXPECT_NEAR(still.pitch, 0, 1e-3);
-  EXPECT_NEAR(still.roll, 0, 1e-3);
-  FaceLandmarks turned = neutral;
-  turned[face_index::kNoseTip].x += 18;  // 0.3 inter-ocular units: asin(0.3 / 0.6) = 30 degrees
-  EXPECT_NEAR(head_pose(turned, neutral).yaw, 30.0f, 0.5f);
-  FaceLandmarks tilted = neutral;
-  for (int i = 42; i < 48; ++i) tilted[size_t(i)].y += 60;  // the right eye 45 degrees down
-  EXPECT_NEAR(head_pose(tilted, neutral).roll, 45.0f, 0.5f);
 }
 
 // Found by fuzz_voice (2026-11-25): the 6-byte packet below decodes past full scale, and its

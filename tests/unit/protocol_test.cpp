@@ -76,7 +76,9 @@ std::vector<Message> every_message() {
           KeyFrameRequest{},
           VoiceRoute{.ticket = "0123456789abcdef0123456789abcdef"},
           HostKey{.key = "fedcba9876543210fedcba9876543210"},
-          RoomControl{.action = RoomAction::Remove, .member = 3}};
+          RoomControl{.action = RoomAction::Remove, .member = 3},
+          MemberLayers{.member = 3, .time_ms = 123456, .yaw = -25, .pitch = 12, .roll = 20, .expression = {inkwire::Expression::Smile, 180},
+                       .mouth = {inkwire::Expression::VisemeOpen, 140}, .eye_left = 35, .eye_right = 110, .source = FaceSource::Camera}};
 }
 
 Bytes stream_of(const std::vector<Message>& messages) {
@@ -110,6 +112,10 @@ TEST(ProtocolTest, EveryMessageRoundTripsAndMeasuresItsOwnSize) {
 
 TEST(ProtocolTest, ExpressionCodeIsEightBytesOfPayload) {
   EXPECT_EQ(encoded_size(ExpressionCode{}) - kHeaderBytes, 8u);
+}
+
+TEST(ProtocolTest, MemberLayersAre22BytesFramed) {
+  EXPECT_EQ(encoded_size(MemberLayers{}), 22u);  // SPEC F21: a face every 200 ms is 0.9 kbit/s
 }
 
 TEST(ProtocolTest, DecoderFedOneByteAtATimeYieldsEveryMessage) {
@@ -211,6 +217,19 @@ TEST(ProtocolTest, ValuesOutOfRangeAreRejected) {
   reject(product({.width = 0, .height = 0, .directions = {}, .cells = 0, .levels = {{64, 64}}}));
   EXPECT_THROW(encode(product({.width = 64, .height = 64, .directions = ring, .cells = 3,
                                .levels = std::vector<ImageSize>(kMaxZoomLevels + 1, ImageSize{128, 128})})), ProtocolError);
+  // A face's pose within +-90 degrees, each layer's codes its own, eyes open at most 200% (SPEC F20-F22).
+  using inkwire::Expression;
+  reject(MemberLayers{.yaw = 91});
+  reject(MemberLayers{.pitch = -91});
+  reject(MemberLayers{.roll = -128});
+  reject(MemberLayers{.expression = {Expression::WinkLeft, 255}});       // the eyes are their layer's
+  reject(MemberLayers{.expression = {Expression::VisemeOpen, 255}});     // the mouth is its layer's
+  reject(MemberLayers{.mouth = {Expression::EyesClosed, 255}});
+  reject(MemberLayers{.eye_left = 201});
+  reject(MemberLayers{.eye_right = 255});
+  Bytes unknown_code = encode(MemberLayers{});
+  unknown_code[kHeaderBytes + 2 + 4 + 3] = 13;  // the expression's code: none this version knows
+  EXPECT_THROW(decode(MessageType::MemberLayers, unknown_code.data() + kHeaderBytes, unknown_code.size() - kHeaderBytes), ProtocolError);
   Bytes bad_kind = encode(AssetAnnounce{.hash = {}, .size = 1, .kind = AssetKind::Mesh, .name = "a.off"});
   bad_kind[kHeaderBytes + 32 + 8] = 9;
   EXPECT_THROW(decode(MessageType::AssetAnnounce, bad_kind.data() + kHeaderBytes, bad_kind.size() - kHeaderBytes), ProtocolError);

@@ -15,6 +15,11 @@ ConferenceView::ConferenceView(const std::filesystem::path& photo, const std::fi
   face_.emplace(photo_, landmarks_);
 }
 
+void ConferenceView::set_face(const FaceState& state) {
+  if (state == face_->face()) pending_.reset();
+  else pending_ = state;
+}
+
 void ConferenceView::set_expression(ExpressionState state) {
   if (state == face_->expression()) pending_.reset();
   else pending_ = state;
@@ -26,9 +31,11 @@ void ConferenceView::set_style(const std::string& renderer, const std::vector<st
     // The face is made again from the comic photo (or the plain one), showing what it showed.
     Image source = photo_;
     if (comic) comic_photo(source);
-    const ExpressionState shown = face_->expression();
+    const FaceState shown = face_->face();
+    const ExpressionState code = face_->expression();
     face_.emplace(source, landmarks_);
-    face_->set_expression(shown, 0);
+    face_->set_face(shown, 0);
+    if (code != dominant_expression(shown.layers)) face_->set_expression(code, 0);
     comic_ = comic;
   }
   painted_frames_ = 0;
@@ -53,7 +60,9 @@ void ConferenceView::draw(glm::ivec2 viewport, double time_seconds) {
   if (pending_) {
     // A face shown for the first time shows the expression it joined at, not a tween from neutral
     // (a painted face would keep strokes of the tween).
-    face_->set_expression(*pending_, drawn_ ? time_seconds : time_seconds - 1.0);
+    const double from = drawn_ ? time_seconds : time_seconds - 1.0;
+    if (const auto* code = std::get_if<ExpressionState>(&*pending_)) face_->set_expression(*code, from);
+    else face_->set_face(std::get<FaceState>(*pending_), from);
     pending_.reset();
   }
   drawn_ = true;

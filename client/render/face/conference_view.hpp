@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "client/gl/canvas.hpp"
@@ -24,7 +25,9 @@ class ConferenceView {
   // Throws inkwire::Error when the photo or the landmarks are unreadable or do not fit together.
   ConferenceView(const std::filesystem::path& photo, const std::filesystem::path& landmarks);
 
-  // The tween to `state` starts at the next drawn frame.
+  // The tween to `state` starts at the next drawn frame: a face's layers and pose, or one code
+  // (a session-wide speaker's; the head keeps its pose).
+  void set_face(const FaceState& state);
   void set_expression(ExpressionState state);
   // Throws inkwire::Error for painterly settings the painter does not take (the previous look
   // is kept).
@@ -33,6 +36,7 @@ class ConferenceView {
   void draw(glm::ivec2 viewport, double time_seconds);
 
   ExpressionState expression() const { return face_->expression(); }
+  const FaceState& face() const { return face_->face(); }
   // Whether the picture changes by itself, frame after frame (a painterly face's brushes move).
   bool animates() const { return painter_ != nullptr; }
   // Frames painted since the painterly style was set (0 in other styles): the painting after as
@@ -43,7 +47,7 @@ class ConferenceView {
   Image photo_;  // as it came: a comic style draws from a copy
   FaceLandmarks landmarks_;
   std::optional<FaceReconstructor> face_;
-  std::optional<ExpressionState> pending_;
+  std::optional<std::variant<ExpressionState, FaceState>> pending_;
   std::unique_ptr<VideoPainter> painter_;  // painterly style only
   int painted_frames_ = 0;
   bool drawn_ = false;

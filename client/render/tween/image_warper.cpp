@@ -87,6 +87,12 @@ void ImageWarper::update_mesh(int mesh, const WarpMesh& moved) {
   m.vertices.upload(vertices.size() * sizeof(float), vertices.data(), GL_DYNAMIC_DRAW);
 }
 
+void ImageWarper::update_triangles(int mesh, std::span<const std::array<uint32_t, 3>> triangles) {
+  Mesh& m = meshes_.at(size_t(mesh));
+  if (GLsizei(triangles.size() * 3) != m.index_count) throw Error("ImageWarper::update_triangles(): the triangle count changed");
+  m.indices.upload(triangles.size_bytes(), triangles.data(), GL_DYNAMIC_DRAW);
+}
+
 void ImageWarper::blend(int mesh, const glm::vec3& position_weights, std::span<const WarpSource> sources,
                         const glm::vec4& to_clip) const {
   if (sources.empty() || sources.size() > 3) throw Error("ImageWarper: a view is made of 1 to 3 samples");

@@ -56,6 +56,9 @@ class ImageWarper {
   int add_mesh(const WarpMesh& mesh);
   // Replaces a mesh's positions (same points and triangles, e.g. moved landmarks each frame).
   void update_mesh(int mesh, const WarpMesh& moved);
+  // Replaces a mesh's triangles by the same number in another order (the first to reach a pixel
+  // is the one drawn there: a turned face lays its nearest triangles first).
+  void update_triangles(int mesh, std::span<const std::array<uint32_t, 3>> triangles);
   size_t triangles(int mesh) const { return meshes_.at(size_t(mesh)).index_count / 3; }
 
   // One pass into the warper's target (then read()): the mesh at position_weights . (p0, p1,

@@ -21,8 +21,8 @@ import { PacketRing, SampleRing } from './audio_ring.js';
 import { CaptureClock } from './capture_clock.js';
 
 const kOpusRate = 48000, kBitrate = 10000, kFrameMs = 60;  // as client/call/publisher.hpp
-const kForwarded = ['snapshot', 'roster', 'member-face', 'face-region', 'key-frame-request', 'permissions', 'state', 'refused', 'error', 'close',
-                    'host-key', 'shut-out'];
+const kForwarded = ['snapshot', 'roster', 'member-layers', 'member-face', 'face-region', 'key-frame-request', 'permissions', 'state', 'refused', 'error',
+                    'close', 'host-key', 'shut-out'];
 
 let session = null, joined = false, sending = false, clockOrigin = 0, encoding = null, playout = null, playoutRing = null, route = null;
 const decoders = new Map();  // member -> {decoder, pending: [time_ms]}

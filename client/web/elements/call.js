@@ -86,7 +86,7 @@ export class InkwireCall extends HostingMixin(FacesMixin(PublishingMixin(Members
     this.captionDecorator = (div, tile) => this.decorateCaption(div, tile);
     this.tiles = new CallTiles(this.canvas, $('.captions'));
     this.photos = new Map();  // member -> the hash of the photo its tile shows
-    this.expressions = new Map();  // member -> the expression ({code, intensity}) last due
+    this.expressions = new Map();  // member -> its face (member-layers or member-face) last due
     this.roster = { you: 0, members: [] };
   }
 
@@ -98,7 +98,9 @@ export class InkwireCall extends HostingMixin(FacesMixin(PublishingMixin(Members
 
   get members() {
     const names = this.tiles.names ?? [];
-    return this.roster.members.map((m) => ({ name: m.name, speaking: m.speaking, expression: names[this.expressions.get(m.member)?.code ?? 0] ?? 'neutral' }));
+    // What a member's tile shows; before its photo is in, what its last face said.
+    const shown = (member) => (this.tiles.view && this.tiles.expressionOf(member)) || names[this.expressions.get(member)?.expression.code ?? 0] || 'neutral';
+    return this.roster.members.map((m) => ({ name: m.name, speaking: m.speaking, expression: shown(m.member), face: this.tiles.view ? this.tiles.faceOf(m.member) : null }));
   }
 
   now() { return this.link.now(); }

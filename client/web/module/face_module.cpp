@@ -22,6 +22,7 @@
 #include "client/gl/gl.hpp"
 #include "client/web/module/module_class.hpp"
 #include "common/error.hpp"
+#include "protocol/face_versions.hpp"
 
 namespace inkwire {
 namespace {
@@ -93,10 +94,31 @@ class CallGridView {
     return guarded([&] { grid_.set_style(renderer, settings_of(settings_json)); });
   }
 
-  // A member's expression, from the moment of the next drawn frame.
-  void set_face(int member, int code, int intensity) {
-    if (code < 0 || code > 255) return;
-    grid_.set_face({.member = uint16_t(member), .expression = {.code = uint8_t(code), .intensity = uint8_t(std::clamp(intensity, 0, 255))}});
+  // A member's expression as a member-face says it (a server or recording of protocol version
+  // 7), from the next drawn frame on; a code this version does not know shows as neutral.
+  void set_face(int member, int code, int intensity, int yaw, int pitch, int roll) {
+    const auto byte = [](int v) { return int8_t(std::clamp(v, -128, 127)); };
+    grid_.set_face(protocol::member_layers_of({.member = uint16_t(member),
+                                               .expression = {.code = uint8_t(std::clamp(code, 0, 255)), .intensity = uint8_t(std::clamp(intensity, 0, 255))},
+                                               .yaw = byte(yaw), .pitch = byte(pitch), .roll = byte(roll)}));
+  }
+
+  // A member's face from the next drawn frame on, as a member-layers message says it (SPEC
+  // F20-F22): the expression's and the mouth's codes and intensities, each eye's openness in
+  // percent, the head's yaw, pitch and roll in degrees. Out of range (the page's codec refuses
+  // such messages) is ignored.
+  void set_layers(int member, int expression, int expression_intensity, int mouth, int mouth_intensity, int eye_left, int eye_right, int yaw,
+                  int pitch, int roll) {
+    const auto e = expression_from_code(uint8_t(std::clamp(expression, 0, 255))), m = expression_from_code(uint8_t(std::clamp(mouth, 0, 255)));
+    const auto in = [](int v, int lo, int hi) { return v >= lo && v <= hi; };
+    if (!e || !m || !expression_layer_takes(*e) || !mouth_layer_takes(*m) || !in(expression_intensity, 0, 255) || !in(mouth_intensity, 0, 255) ||
+        !in(eye_left, 0, kMaxEyeOpenness) || !in(eye_right, 0, kMaxEyeOpenness))
+      return;
+    for (int angle : {yaw, pitch, roll})
+      if (!in(angle, -protocol::kMaxPoseDegrees, protocol::kMaxPoseDegrees)) return;
+    grid_.set_face({.member = uint16_t(member), .yaw = int8_t(yaw), .pitch = int8_t(pitch), .roll = int8_t(roll),
+                    .expression = {*e, uint8_t(expression_intensity)}, .mouth = {*m, uint8_t(mouth_intensity)},
+                    .eye_left = uint8_t(eye_left), .eye_right = uint8_t(eye_right)});
   }
 
   // One frame of the grid at `time_seconds` into the canvas's drawing buffer.
@@ -121,6 +143,16 @@ class CallGridView {
 
   // The expression a member's tile shows: {"code", "name", "intensity"}, or null.
   std::string member_expression_json(int member) const { return expression_json(grid_.expression(uint16_t(member))); }
+  // The face a member's tile is drawn to: {"pose": [yaw, pitch, roll], "eyes": [left, right],
+  // "layers": [expression, mouth]}, or null.
+  std::string member_face_json(int member) const {
+    const auto face = grid_.face(uint16_t(member));
+    if (!face) return "null";
+    return json{{"pose", {face->pose.yaw, face->pose.pitch, face->pose.roll}},
+                {"eyes", {face->layers.eye_left, face->layers.eye_right}},
+                {"layers", {name_of(face->layers.expression.expression), name_of(face->layers.mouth.expression)}}}
+        .dump();
+  }
 
  private:
   ModuleCanvas canvas_;
@@ -194,10 +226,12 @@ EMSCRIPTEN_BINDINGS(inkwire_faces) {
       .function("setRoster", &CallGridView::set_roster)
       .function("setStyle", &CallGridView::set_style)
       .function("setFace", &CallGridView::set_face)
+      .function("setLayers", &CallGridView::set_layers)
       .function("draw", &CallGridView::draw)
       .function("tilesJson", &CallGridView::tiles_json)
       .function("animates", &CallGridView::animates)
-      .function("expressionJson", &CallGridView::member_expression_json);
+      .function("expressionJson", &CallGridView::member_expression_json)
+      .function("faceJson", &CallGridView::member_face_json);
   using inkwire::FaceView;
   class_<FaceView>("FaceView")
       .constructor<std::string>()

@@ -47,7 +47,8 @@ export class Session extends EventTarget {
   // Events: 'snapshot' (detail: the snapshot), 'tween-data' (detail: {pair, data}), 'state' (a
   // style, pose or expression change: detail the message), 'refused' (a change this member may
   // not make: detail the server's reason; the session's own value follows as a 'state'), 'error'
-  // (detail: the reason), 'close'; in a call also 'roster', 'member-face', 'voice-frame',
+  // (detail: the reason), 'close'; in a call also 'roster', 'member-layers' (and 'member-face' from a
+  // server of version 7 or 8), 'voice-frame',
   // 'face-region', 'key-frame-request' and 'voice-route' (detail: the message), 'host-key' (the
   // key of a room this member opened) and 'shut-out' (a locked room or the host's removal: the
   // reason; an 'error' follows).
@@ -121,7 +122,7 @@ export class Session extends EventTarget {
     else if (m.type === 'expression-code' || m.type === 'style-change' || m.type === 'camera-pose' || m.type === 'object-pose')
       this.dispatchEvent(new CustomEvent('state', { detail: m }));
     else if (m.type === 'asset-chunk') this.chunk(m);
-    else if (m.type === 'roster' || m.type === 'member-face' || m.type === 'voice-frame' || m.type === 'face-region' || m.type === 'key-frame-request' ||
+    else if (m.type === 'roster' || m.type === 'member-layers' || m.type === 'member-face' || m.type === 'voice-frame' || m.type === 'face-region' || m.type === 'key-frame-request' ||
              m.type === 'voice-route')
       this.dispatchEvent(new CustomEvent(m.type, { detail: m }));  // a call's (elements/call.js)
     else if (m.type === 'permissions') this.dispatchEvent(new CustomEvent('permissions', { detail: m.refused }));

@@ -5,7 +5,7 @@
 import { ProtocolError, ReadStream, WriteStream } from './streams.js';
 
 export const kMagic = 0x574b4e49;  // the bytes "INKW" read as a little-endian u32
-export const kVersion = 8;
+export const kVersion = 9;
 export const kMaxName = 64;
 export const kMaxToken = 128;
 export const kMaxReason = 512;
@@ -26,14 +26,17 @@ export const kMaxVoiceBytes = 1275;
 export const kMaxMembers = 64;
 export const kVoiceTicketChars = 32;
 export const kHostKeyChars = 32;
+export const kMaxPoseDegrees = 90;
+export const kMaxEyeOpenness = 200;
 
 export const MessageType = Object.freeze({
   hello: 1, welcome: 2, error: 3, ping: 4, pong: 5, join: 6, leave: 7, snapshot: 8, 'style-change': 9, 'camera-pose': 10,
   'object-pose': 11, 'expression-code': 12, 'tween-data': 13, 'asset-announce': 14, 'asset-request': 15, 'asset-chunk': 16,
   publish: 17, 'neutral-photo': 18, 'face-crop': 19, 'face-region': 20, 'voice-frame': 21, 'member-face': 22, roster: 23,
   permissions: 24, 'face-video': 25, 'key-frame-request': 26, 'voice-route': 27, 'host-key': 28, 'room-control': 29,
+  'member-layers': 30,
 });
-export const kMessageTypes = 29;
+export const kMessageTypes = 30;
 export const RoomAction = Object.freeze({ lock: 1, unlock: 2, remove: 3 });
 export const FaceSource = Object.freeze({ neutral: 0, camera: 1, voice: 2 });
 export const nameOf = (type) => Object.keys(MessageType).find((k) => MessageType[k] === type) ?? 'unknown';
@@ -303,6 +306,31 @@ function serialiseMemberFace(s, m) {
   m.source = enumeration(s, m.source ?? 0, 0, 2, 'face source', 1);
 }
 
+// A layer's code and intensity: only codes that layer takes (common/face/expression.hpp): the
+// expression layer 0-5 (neutral .. sad), the mouth layer those and the visemes 9-12.
+const expressionLayerTakes = (code) => code <= 5;
+const mouthLayerTakes = (code) => code <= 5 || (code >= 9 && code <= 12);
+function layer(s, v, takes, what) {
+  const out = { code: s.u8(v?.code ?? 0), intensity: s.u8(v?.intensity ?? 0) };
+  if (s.constructor.reading) check(takes(out.code), `${what} code ${out.code} is not one that layer takes`);
+  return out;
+}
+
+function serialiseMemberLayers(s, m) {
+  m.member = s.u16(m.member ?? 0);
+  m.time_ms = s.u32(m.time_ms ?? 0);
+  for (const f of ['yaw', 'pitch', 'roll']) {
+    m[f] = int8(s, m[f]);
+    if (s.constructor.reading) check(Math.abs(m[f]) <= kMaxPoseDegrees, 'member layers: head pose outside +-90 degrees');
+  }
+  m.expression = layer(s, m.expression, expressionLayerTakes, 'member layers: expression');
+  m.mouth = layer(s, m.mouth, mouthLayerTakes, 'member layers: mouth');
+  m.eye_left = s.u8(m.eye_left ?? 100);
+  m.eye_right = s.u8(m.eye_right ?? 100);
+  if (s.constructor.reading) check(m.eye_left <= kMaxEyeOpenness && m.eye_right <= kMaxEyeOpenness, 'member layers: eye openness over 200%');
+  m.source = enumeration(s, m.source ?? 0, 0, 2, 'face source', 1);
+}
+
 function serialiseCallMember(s, m) {
   m.member = s.u16(m.member ?? 0);
   m.name = s.text(m.name ?? '', kMaxName);
@@ -362,7 +390,7 @@ const serialisers = [serialiseHello, serialiseWelcome, serialiseErrorMessage, se
                      serialiseTweenData, serialiseAssetAnnounce, serialiseAssetRequest, serialiseAssetChunk, serialisePublish,
                      serialiseNeutralPhoto, serialiseFaceCrop, serialiseFaceRegion, serialiseVoiceFrame, serialiseMemberFace, serialiseRoster,
                      serialisePermissions, serialiseFaceVideo, serialiseKeyFrameRequest, serialiseVoiceRoute, serialiseHostKey,
-                     serialiseRoomControl];
+                     serialiseRoomControl, serialiseMemberLayers];
 
 export const kHeaderBytes = 6;
 export const kMaxPayload = 128 * 1024;

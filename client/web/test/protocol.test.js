@@ -54,6 +54,10 @@ test('decoded fields are the C++ ones', () => {
   assert.deepEqual([byType['voice-frame'].member, byType['voice-frame'].time_ms, byType['voice-frame'].opus.length], [3, 123440, 40]);
   const face = byType['member-face'];
   assert.deepEqual([face.member, face.yaw, face.pitch, face.roll, face.source, face.expression.code], [3, -20, 5, 127, 1, 3]);
+  const layers = byType['member-layers'];
+  assert.deepEqual([layers.member, layers.time_ms, layers.yaw, layers.pitch, layers.roll, layers.expression.code, layers.expression.intensity,
+                    layers.mouth.code, layers.mouth.intensity, layers.eye_left, layers.eye_right, layers.source],
+                   [3, 123456, -25, 12, 20, 1, 180, 10, 140, 35, 110, 1]);
   const roster = byType.roster;
   assert.equal(roster.you, 2);
   assert.deepEqual(roster.members.map((m) => [m.member, m.name, m.speaking, m.face_found, m.assets.length]),
@@ -130,6 +134,14 @@ test('values out of range are refused as the C++ reader refuses them', () => {
   refuse({ type: 'face-crop', frame_width: 640, frame_height: 480, x: 600, y: 0, width: 64, height: 64, jpeg });
   refuse({ type: 'voice-frame', opus: new Uint8Array() });
   refuse({ type: 'member-face', source: 3 });
+  // A face's pose within +-90 degrees, each layer's codes its own, eyes open at most 200% (as the C++ codec).
+  refuse({ type: 'member-layers', yaw: 91 });
+  refuse({ type: 'member-layers', roll: -128 });
+  refuse({ type: 'member-layers', expression: { code: 7, intensity: 255 } });
+  refuse({ type: 'member-layers', expression: { code: 10, intensity: 255 } });
+  refuse({ type: 'member-layers', mouth: { code: 6, intensity: 255 } });
+  refuse({ type: 'member-layers', mouth: { code: 13, intensity: 255 } });
+  refuse({ type: 'member-layers', eye_left: 201 });
   refuse({ type: 'roster', members: [{ member: 0, name: 'x' }] });
   refuse({ type: 'permissions', refused: [{ change: 'snapshot', reason: 'x' }] });
   assert.throws(() => encode({ type: 'voice-frame', opus: new Uint8Array(1276) }), ProtocolError);

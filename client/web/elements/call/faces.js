@@ -32,21 +32,22 @@ export const FacesMixin = (Base) => class extends Base {
         if (this.session !== session || this.photos.get(m.member) !== photo) continue;
         this.tiles.setMemberFace(m.member, bytes, new TextDecoder().decode(landmarks));
         this.tiles.setRoster(this.roster);
-        const expression = this.expressions.get(m.member);
-        if (expression) this.tiles.setFace(m.member, expression);
+        const face = this.expressions.get(m.member);
+        if (face) this.tiles.setFace(m.member, face);
       } catch (error) {
         this.message.textContent = `cannot show ${m.name}: ${error.message}`;
       }
     }
   }
 
-  // A face comes when the sound of its moment plays, so the mouth moves with the voice.
+  // A face (member-layers, or member-face from a server of version 7 or 8) comes when the sound of its
+  // moment plays, so the mouth moves with the voice.
   faceArrived(m) {
     const due = this.link?.localTime(m.member, m.time_ms);
     const show = () => {
       if (!this.session) return;
-      this.expressions.set(m.member, m.expression);
-      if (this.tiles.view) this.tiles.setFace(m.member, m.expression);
+      this.expressions.set(m.member, m);
+      if (this.tiles.view) this.tiles.setFace(m.member, m);
     };
     if (due && due > performance.now()) setTimeout(show, due - performance.now());
     else show();

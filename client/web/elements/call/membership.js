@@ -33,6 +33,7 @@ export const MembershipMixin = (Base) => class extends Base {
     session.addEventListener('roster', (e) => this.updateRoster(session, e.detail));
     session.addEventListener('face-region', (e) => { if (this.camera) this.camera.region = e.detail; });
     session.addEventListener('key-frame-request', () => this.camera?.keyFrame());
+    session.addEventListener('member-layers', (e) => this.faceArrived(e.detail));
     session.addEventListener('member-face', (e) => this.faceArrived(e.detail));
     session.addEventListener('close', () => this.lost(session));
   }

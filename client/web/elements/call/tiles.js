@@ -46,13 +46,19 @@ export class CallTiles {
     return this.view.setStyle(style.renderer, JSON.stringify(style.settings ?? []));
   }
 
-  setFace(member, expression) {
-    this.view.setFace(member, expression.code, expression.intensity);
+  // A member's face as a member-layers message says it (layers and head pose), or a member-face's
+  // one code.
+  setFace(member, face) {
+    if (face.type === 'member-face') this.view.setFace(member, face.expression.code, face.expression.intensity, face.yaw, face.pitch, face.roll);
+    else this.view.setLayers(member, face.expression.code, face.expression.intensity, face.mouth.code, face.mouth.intensity, face.eye_left, face.eye_right,
+                             face.yaw, face.pitch, face.roll);
     this.tweenUntil = performance.now() + 250;  // the face tweens for 100 ms
   }
 
-  // The name of the expression a member's tile shows ('neutral' before any).
-  expressionOf(member) { return JSON.parse(this.view.expressionJson(member))?.name ?? 'neutral'; }
+  // The name of the expression a member's tile shows (the one code that says most of its
+  // layers; null without a face on its tile), and the face it is drawn to ({pose, eyes, layers}).
+  expressionOf(member) { return JSON.parse(this.view.expressionJson(member))?.name ?? null; }
+  faceOf(member) { return JSON.parse(this.view.faceJson(member)); }
 
   // One frame at the canvas's size in device pixels, then the captions under the tiles. Returns
   // whether a face was drawn.
