@@ -76,9 +76,11 @@ void Connection::close_with(ErrorCode code, const std::string& reason) {
   closing_ = true;
   closed_for_ = {code, reason};
   wake_.cancel();
-  // A peer that does not read would keep the error unsent forever: cut it off after a second.
+  // A peer that does not read would keep the error unsent forever: cut it off after a few
+  // seconds. (One was too few: a browser on a loaded machine, still taking the batch written
+  // before the error, lost the host's "removed you", joined again and was told the room is locked.)
   auto self = shared_from_this();
-  auto timer = std::make_shared<asio::steady_timer>(transport_->executor(), std::chrono::seconds(1));
+  auto timer = std::make_shared<asio::steady_timer>(transport_->executor(), std::chrono::seconds(5));
   timer->async_wait([self, timer](std::error_code) { self->shut(); });
 }
 
