@@ -503,18 +503,30 @@ void RedisRelay::discover() {
   });
 }
 
-void RedisRelay::take_definition(const std::string& name, std::string_view definition) {
-  if (adopting_.count(name)) return;
-  const std::shared_ptr<Session> served = sessions_.find_session(name);
-  if (!served) return adopt_remote(name, definition);
-  if (const auto known = definitions_.find(name); known != definitions_.end() && known->second == definition) return;
+// A session's definition as the broker holds it under `name`, or nothing (logged) when it is
+// malformed or defines another session.
+std::optional<StoredSession> RedisRelay::read_definition(const std::string& name, std::string_view definition) {
   StoredSession stored;
   try {
     stored = parse_session_definition(definition);
   } catch (const std::exception& e) {
     log_warn("broker-session-malformed", {{"session", name}, {"reason", e.what()}});
-    return;
+    return std::nullopt;
   }
+  if (stored.state.session != name) {
+    log_warn("broker-session-malformed", {{"session", name}, {"reason", "it defines '" + stored.state.session + "'"}});
+    return std::nullopt;
+  }
+  return stored;
+}
+
+void RedisRelay::take_definition(const std::string& name, std::string_view definition) {
+  if (adopting_.count(name)) return;
+  const std::shared_ptr<Session> served = sessions_.find_session(name);
+  if (!served) return adopt_remote(name, definition);
+  if (const auto known = definitions_.find(name); known != definitions_.end() && known->second == definition) return;
+  std::optional<StoredSession> stored = read_definition(name, definition);
+  if (!stored) return;
   // Only a made scene's model changes while it runs (its editor's new upload); other differences
   // (the same name configured otherwise on two instances) are left as they are.
   const auto mesh = [](const protocol::Snapshot& s) {
@@ -522,10 +534,10 @@ void RedisRelay::take_definition(const std::string& name, std::string_view defin
       if (a.kind == AssetKind::Mesh) return std::optional(a);
     return std::optional<AssetAnnounce>();
   };
-  const bool scene = served->state().kind == SessionKind::Scene && served->state().product.directions.empty() && stored.state.kind == SessionKind::Scene &&
+  const bool scene = served->state().kind == SessionKind::Scene && served->state().product.directions.empty() && stored->state.kind == SessionKind::Scene &&
                      served->stored().maker != MadeBy::Operator;
-  if (!scene || !mesh(stored.state) || mesh(stored.state) == mesh(served->state())) return;
-  adopt_model(name, definition, std::move(stored));
+  if (!scene || !mesh(stored->state) || mesh(stored->state) == mesh(served->state())) return;
+  adopt_model(name, definition, std::move(*stored));
 }
 
 // Another instance's editor gave a scene served here a new model: fetched, then every member
@@ -564,20 +576,11 @@ void RedisRelay::model_replaced(const Session& session) {
 // A session another instance shared: its assets are fetched, checked against their hashes and
 // stored, then the session is served here too.
 void RedisRelay::adopt_remote(const std::string& name, std::string_view definition) {
-  StoredSession stored;
-  try {
-    stored = parse_session_definition(definition);
-  } catch (const std::exception& e) {
-    log_warn("broker-session-malformed", {{"session", name}, {"reason", e.what()}});
-    return;
-  }
-  if (stored.state.session != name) {
-    log_warn("broker-session-malformed", {{"session", name}, {"reason", "it defines '" + stored.state.session + "'"}});
-    return;
-  }
+  std::optional<StoredSession> stored = read_definition(name, definition);
+  if (!stored) return;
   adopting_.insert(name);
   definitions_[name] = std::string(definition);
-  auto session = std::make_shared<StoredSession>(std::move(stored));
+  auto session = std::make_shared<StoredSession>(std::move(*stored));
   fetch_missing(name, session->state.assets, [this, name, session](bool fetched) {
     adopting_.erase(name);
     if (!fetched || sessions_.find_session(name)) return;

@@ -15,8 +15,10 @@
 #include <chrono>
 #include <functional>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <asio.hpp>
@@ -53,6 +55,7 @@ class RedisRelay final : public Relay {
 
  private:
   void removed_elsewhere(const std::string& name);
+  std::optional<StoredSession> read_definition(const std::string& name, std::string_view definition);
   using Event = BrokerEvent;
   struct SessionSync {
     uint32_t revision = 0;  // the broker's revision applied here

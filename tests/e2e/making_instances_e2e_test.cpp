@@ -48,24 +48,6 @@ struct TwoInstances {
   ServerUnderTest one, two;
 };
 
-std::unique_ptr<Process> call_member(const ServerUnderTest& server, const std::string& room, const fs::path& dir, const std::string& name,
-                                     std::vector<std::string> extra = {}) {
-  std::vector<std::string> args{"--connect", server.address(), "--session", room, "--headless", "--frames", "3000", "--fps", "5",
-                                "--size", "160x120", "--cache", (dir / ("cache-" + name)).string(), "--out",
-                                (dir / (name + "-%04d.png")).string(), "--frame-log", (dir / (name + ".jsonl")).string(), "--name", name,
-                                "--photo", kDlibPhoto.string()};
-  args.insert(args.end(), extra.begin(), extra.end());
-  return std::make_unique<Process>("inkwire-client", args, dir / (name + ".log"));
-}
-
-std::set<std::string> shown_members(const fs::path& dir, const std::string& name) {
-  const auto log = frame_log(dir / (name + ".jsonl"));
-  std::set<std::string> names;
-  if (!log.empty() && log.back().contains("members"))
-    for (const auto& m : log.back()["members"]) names.insert(m.value("name", ""));
-  return names;
-}
-
 }  // namespace
 
 class MakingInstancesE2ETest : public ::testing::Test {
@@ -81,11 +63,11 @@ TEST_F(MakingInstancesE2ETest, ARoomOpenedOnOneInstanceIsJoinedFromTheOther) {
   const fs::path dir = output_dir("making-instances-room");
   TwoInstances instances(dir);
   ServerUnderTest &one = instances.one, &two = instances.two;
-  auto ada = call_member(one, "crossing", dir, "Ada", {"--new"});
+  auto ada = native_member(one, "crossing", dir, "Ada", {"--new"});
   ASSERT_TRUE(eventually([&] { return ada->output().find("you opened room 'crossing' and are its host") != std::string::npos; })) << ada->output();
   ASSERT_TRUE(eventually([&] { return events_for(two, "session-added", "crossing") == 1; })) << two.process().output();
   // Joined on instance two without --new: the room is there.
-  auto bob = call_member(two, "crossing", dir, "Bob");
+  auto bob = native_member(two, "crossing", dir, "Bob");
   EXPECT_TRUE(eventually([&] { return shown_members(dir, "Ada") == std::set<std::string>{"Ada", "Bob"}; })) << ada->output();
   EXPECT_TRUE(eventually([&] { return shown_members(dir, "Bob") == std::set<std::string>{"Ada", "Bob"}; })) << bob->output();
   EXPECT_EQ(events_for(two, "room-opened", "crossing"), 0u) << "instance two opened a second room of the name";

@@ -4,6 +4,8 @@
 // what the data folder holds.
 #include <algorithm>
 #include <map>
+#include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -100,6 +102,28 @@ inline size_t events_for(ServerUnderTest& server, const std::string& event, cons
   size_t n = 0;
   for (const auto& j : log_events(server.process().output(), event)) n += j.value("session", "") == session;
   return n;
+}
+
+// A native member in a call: headless, five frames a second for up to ten minutes (stopped by the
+// test), its frame log listing the members it shows. It shows its neutral photo (a window shows a
+// call's grid once some member has a face or publishes).
+inline std::unique_ptr<Process> native_member(const ServerUnderTest& server, const std::string& room, const fs::path& dir, const std::string& name,
+                                       std::vector<std::string> extra = {}) {
+  std::vector<std::string> args{"--connect", server.address(), "--session", room, "--headless", "--frames", "3000", "--fps", "5",
+                                "--size", "160x120", "--cache", (dir / ("cache-" + name)).string(), "--out",
+                                (dir / (name + "-%04d.png")).string(), "--frame-log", (dir / (name + ".jsonl")).string(), "--name", name,
+                                "--photo", kDlibPhoto.string()};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return std::make_unique<Process>("inkwire-client", args, dir / (name + ".log"));
+}
+
+// The member names of the newest line of a native member's frame log.
+inline std::set<std::string> shown_members(const fs::path& dir, const std::string& name) {
+  const auto log = frame_log(dir / (name + ".jsonl"));
+  std::set<std::string> names;
+  if (!log.empty() && log.back().contains("members"))
+    for (const auto& m : log.back()["members"]) names.insert(m.value("name", ""));
+  return names;
 }
 
 }  // namespace inkwire::e2e
