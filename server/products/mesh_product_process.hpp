@@ -22,7 +22,7 @@ std::filesystem::path mesh_product_helper();
 // to `progress`. Throws inkwire::Error with the helper's own reason when it fails.
 void make_mesh_product_in_helper(const std::filesystem::path& data, const ProductSource& source, const PairProgress& progress);
 
-// The helper's arguments for `source` (its options: server/apps/inkwire_mesh_product.cpp).
+// The helper's arguments for `source` (its options: tools/inkwire_mesh_product.cpp).
 std::vector<std::string> mesh_product_arguments(const std::filesystem::path& data, const ProductSource& source);
 
 }  // namespace inkwire::server

@@ -70,7 +70,7 @@ struct MeshProductOptions {
   UpAxis up = UpAxis::Auto;  // which way is up in the mesh file
 };
 
-// (A mesh is made into a product by products/mesh_product.hpp, in a process of its own: the
+// (A mesh is made into a product by tools/mesh_product.hpp, in a process of its own: the
 // serving process loads no GL.)
 
 }  // namespace inkwire

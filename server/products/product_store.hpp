@@ -30,7 +30,7 @@ struct ProductSource {
 // turntable session named `session` that shows it.
 protocol::Snapshot store_product(AssetStore& store, const Product& product, const std::string& session);
 
-// How a mesh becomes a product in this process: products/mesh_product.hpp's product_from_mesh,
+// How a mesh becomes a product in this process: tools/mesh_product.hpp's product_from_mesh,
 // in the helper that links GL. Without one, a mesh product is made by that helper as a process
 // of its own (mesh_product_process.hpp), so the caller never loads GL.
 using MeshRenderer = std::function<Product(const std::filesystem::path&, const MeshProductOptions&, const PairProgress&)>;

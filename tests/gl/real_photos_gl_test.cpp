@@ -16,7 +16,7 @@
 #include "common/image_metrics.hpp"
 #include "gl_test_support.hpp"
 #include "server/products/matte.hpp"
-#include "server/products/mesh_product.hpp"
+#include "tools/mesh_product.hpp"
 #include "server/products/photo_shape.hpp"
 #include "server/products/product.hpp"
 #include "server/products/product_samples.hpp"

@@ -10,8 +10,8 @@
 
 #include "common/error.hpp"
 #include "common/mesh_import.hpp"
-#include "server/products/mesh_product.hpp"
 #include "server/products/product_store.hpp"
+#include "tools/mesh_product.hpp"
 
 using namespace inkwire;
 

@@ -1,4 +1,4 @@
-#include "server/products/mesh_product.hpp"
+#include "tools/mesh_product.hpp"
 
 #include "client/gl/context.hpp"
 #include "client/render/scene_object.hpp"
