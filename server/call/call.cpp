@@ -197,6 +197,18 @@ void Call::send_face(const protocol::MemberLayers& face) {
     }
 }
 
+void Call::offer_face(Member& m, const protocol::MemberLayers& face, Clock::time_point now) {
+  m.face_waiting = face;
+  send_waiting_face(m, now);
+}
+
+void Call::send_waiting_face(Member& m, Clock::time_point now) {
+  if (!m.face_waiting || !m.faces.take(kFacesPerSecond, now)) return;
+  send_face(*m.face_waiting);
+  relay_.share_call({.origin = origin_, .session = session_, .message = *m.face_waiting});
+  m.face_waiting.reset();
+}
+
 size_t Call::send_to_others(const Member& from, const protocol::Message& message) {
   const auto frame = std::make_shared<const Bytes>(protocol::encode(message));
   size_t sent = 0;

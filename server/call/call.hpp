@@ -100,6 +100,11 @@ class Call {
   // A member's face to every member here, each in the version it reads (member-face for a peer
   // of version 7 or 8).
   void send_face(const protocol::MemberLayers& face);
+  // The member's face to every member here and to the other instances, within its budget
+  // (kFacesPerSecond): one that finds no room waits, replaced by any newer one, and goes with the
+  // member's next packet or crop that finds room.
+  void offer_face(Member& m, const protocol::MemberLayers& face, Clock::time_point now);
+  void send_waiting_face(Member& m, Clock::time_point now);
   void update_speakers(Clock::time_point now);
 
   std::string session_;

@@ -128,8 +128,9 @@ void Call::analysed(const CropAnalysed& result) {
     // A mouth the camera cannot say: the voice's, while the member speaks (SPEC F21).
     const bool speaking = now - m->last_voice < kSpeakingHold;
     if (speaking && m->voice_moves_mouth(now, speaking)) face.mouth = m->voice_mouth;
-    send_face(face);
-    relay_.share_call({.origin = origin_, .session = session_, .message = face});
+    offer_face(*m, face, now);
+  } else {
+    send_waiting_face(*m, now);
   }
 }
 

@@ -26,6 +26,9 @@ inline constexpr auto kKeyFrameAskEvery = std::chrono::milliseconds(500);  // a 
 inline constexpr auto kRejoinWithin = std::chrono::seconds(60);         // a member back this soon takes its number again
 inline constexpr auto kTwinSilence = std::chrono::seconds(8);           // beyond a heartbeat and its answer: that connection is gone
 inline constexpr float kLevelDecayDb = 1.5f;                           // per packet, so a level falls ~75 dB a second
+// A member's face, from its camera and its voice together, at most this often: 5 member-layers a
+// second (22 bytes framed) is 0.88 kbit/s, under the 1 kbit/s a face may cost (SPEC F21).
+inline constexpr double kFacesPerSecond = 5;
 
 // A token bucket: `rate` a second, a second's worth at once.
 struct Bucket {
@@ -81,6 +84,8 @@ struct Call::Member {
   }
   ExpressionState voice_mouth;
   Clock::time_point voice_mouth_sent{};
+  Bucket faces;                                      // its camera's and its voice's faces, one budget
+  std::optional<protocol::MemberLayers> face_waiting;  // the newest face that found no room yet
   uint32_t latest_voice_time = 0;
   Clock::time_point key_frame_asked{};
 };

@@ -49,8 +49,9 @@ void Call::voice(uint64_t connection, protocol::VoiceFrame frame) {
     face.time_ms = frame.time_ms;
     face.mouth = reading->mouth;
     face.source = protocol::FaceSource::Voice;
-    send_face(face);
-    relay_.share_call({.origin = origin_, .session = session_, .message = face});
+    offer_face(*m, face, now);
+  } else {
+    send_waiting_face(*m, now);
   }
 }
 
