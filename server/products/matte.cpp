@@ -6,6 +6,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "common/percentile.hpp"
+
 namespace inkwire {
 namespace {
 
@@ -29,8 +31,7 @@ glm::vec3 median_colour(const std::vector<const uint8_t*>& pixels) {
     std::vector<uint8_t> v;
     v.reserve(pixels.size());
     for (const uint8_t* p : pixels) v.push_back(p[c]);
-    std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
-    out[c] = float(v[v.size() / 2]);
+    out[c] = float(median_in_place(std::span<uint8_t>(v)).value_or(0));
   }
   return out;
 }

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "common/percentile.hpp"
 #include "common/tween/point_spread.hpp"
 #include "server/products/depth_refinement.hpp"
 #include "server/tween/landmarks.hpp"
@@ -72,15 +73,7 @@ size_t merge(const cv::Mat& from, const cv::Mat& to, const cv::Mat& matched, con
   // Where no verified match speaks, the shape is taken only where it explains the pictures as well
   // as a verified match typically does: a hull bulging over a gap (between a temple's columns) puts
   // a surface where there is none, which no match contradicts.
-  std::vector<float> verified;
-  for (int y = 0; y < matched.rows; ++y)
-    for (int x = 0; x < matched.cols; ++x)
-      if (matched_ok.at<uint8_t>(y, x)) verified.push_back(matched_error.at<float>(y, x));
-  float typical = 0;
-  if (!verified.empty()) {
-    std::nth_element(verified.begin(), verified.begin() + long(verified.size() / 2), verified.end());
-    typical = verified[verified.size() / 2];
-  }
+  const std::optional<float> typical = masked_median(matched_error, matched_ok);
   flow = matched.clone();
   reliable = matched_ok.clone();
   size_t taken = 0;
@@ -89,7 +82,7 @@ size_t merge(const cv::Mat& from, const cv::Mat& to, const cv::Mat& matched, con
     for (int x = 0; x < flow.cols; ++x) {
       const bool m = matched_ok.at<uint8_t>(y, x), s = shaped_ok.at<uint8_t>(y, x);
       const float shape_error = shaped_error.at<float>(y, x);
-      if (s && (m ? shape_error < matched_error.at<float>(y, x) : verified.empty() || shape_error <= typical)) {
+      if (s && (m ? shape_error < matched_error.at<float>(y, x) : !typical || shape_error <= *typical)) {
         flow.at<cv::Vec2f>(y, x) = shaped.at<cv::Vec2f>(y, x);
         reliable.at<uint8_t>(y, x) = 255;
         ++taken;
@@ -184,9 +177,8 @@ ShapeTracks shape_tracks(const PhotoShape& shape, const std::vector<uint16_t>& c
   std::vector<float> inner;
   for (size_t i = 0; i < candidates.size(); ++i)
     if (!on_outline[i]) inner.push_back(detail_at[i]);
-  if (!inner.empty()) {
-    std::nth_element(inner.begin(), inner.begin() + long(inner.size() / 2), inner.end());
-    const float plain = inner[inner.size() / 2];
+  if (const std::optional<float> median_detail = median_in_place(std::span<float>(inner))) {
+    const float plain = *median_detail;
     size_t kept = 0;
     for (size_t i = 0; i < candidates.size(); ++i)
       if (on_outline[i] || detail_at[i] >= plain) {

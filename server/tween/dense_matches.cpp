@@ -7,6 +7,7 @@
 #include <opencv2/video/tracking.hpp>
 
 #include "common/error.hpp"
+#include "common/percentile.hpp"
 #include "common/tween/warp_mesh.hpp"
 
 namespace inkwire {
@@ -42,16 +43,8 @@ cv::Mat detail_weight(const Image& a, const cv::Mat& inside) {
   cv::Sobel(grey, gy, CV_32F, 0, 1, 3);
   cv::magnitude(gx, gy, magnitude);
   cv::GaussianBlur(magnitude, magnitude, {0, 0}, 1.5);
-  std::vector<float> values;
-  for (int y = 0; y < magnitude.rows; ++y)
-    for (int x = 0; x < magnitude.cols; ++x)
-      if (inside.at<uint8_t>(y, x)) values.push_back(magnitude.at<float>(y, x));
-  float strong = 1.0f;
-  if (!values.empty()) {
-    const auto k = values.begin() + long(values.size() * 9 / 10);
-    std::nth_element(values.begin(), k, values.end());
-    strong = std::max(*k, 1e-4f);
-  }
+  const std::optional<float> strongest_tenth = masked_percentile(magnitude, inside, 0.9);  // where it starts
+  const float strong = strongest_tenth ? std::max(*strongest_tenth, 1e-4f) : 1.0f;
   cv::Mat weight = cv::min(magnitude / strong, 1.0f);
   return 0.25f + 0.75f * weight;
 }

@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "common/luminance.hpp"
+#include "common/percentile.hpp"
 
 namespace inkwire {
 namespace {
@@ -166,9 +167,7 @@ std::vector<Landmark> find_landmarks(const cv::Mat& source, const cv::Mat& targe
                         [](const auto& a, const auto& b) { return a.first < b.first; });
       std::vector<float> xs, ys;
       for (int k = 0; k < kNeighbours; ++k) xs.push_back(near[size_t(k)].second.x), ys.push_back(near[size_t(k)].second.y);
-      std::nth_element(xs.begin(), xs.begin() + kNeighbours / 2, xs.end());
-      std::nth_element(ys.begin(), ys.begin() + kNeighbours / 2, ys.end());
-      const glm::vec2 median(xs[kNeighbours / 2], ys[kNeighbours / 2]);
+      const glm::vec2 median(*median_in_place(std::span<float>(xs)), *median_in_place(std::span<float>(ys)));  // kNeighbours of each
       // Depth differences make neighbours move differently (parallax): allow a share of the motion.
       const float allowed = std::max(o.max_neighbour_disagreement, 0.3f * glm::length(median));
       if (glm::length((l.target - l.source) - median) > allowed) {

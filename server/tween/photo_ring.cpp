@@ -11,6 +11,7 @@
 #include <glm/matrix.hpp>
 
 #include "common/error.hpp"
+#include "common/percentile.hpp"
 
 namespace inkwire {
 namespace {
@@ -92,8 +93,8 @@ int stored_quarter_turns(const RingCamera& from, const RingCamera& to, const std
     std::vector<float> d;
     for (const auto& [a, b] : matches)
       d.push_back(epipolar_distance(f, calibrated_pixel(a, size, turns), calibrated_pixel(b, size, turns)));
-    std::nth_element(d.begin(), d.begin() + ptrdiff_t(d.size() / 2), d.end());
-    if (d[d.size() / 2] < best_median) best_median = d[d.size() / 2], best = turns;
+    const float median_distance = *median_in_place(std::span<float>(d));  // matches is not empty
+    if (median_distance < best_median) best_median = median_distance, best = turns;
   }
   return best;
 }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "common/luminance.hpp"
+#include "common/percentile.hpp"
 
 // Plain C++ on purpose: the browser's module draws call faces with this same code (SPEC F16), and
 // OpenCV is not there. The steps are the classic ones (bilateral smoothing at half size, tone
@@ -100,8 +101,7 @@ std::vector<uint8_t> canny_edges(std::vector<float> grey, int width, int height,
         size_t n = 0;
         for (int dy = -2; dy <= 2; ++dy)
           for (int dx = -2; dx <= 2; ++dx) window[n++] = grey[index(std::clamp(x + dx, 0, width - 1), std::clamp(y + dy, 0, height - 1))];
-        std::nth_element(window.begin(), window.begin() + 12, window.end());
-        median[index(x, y)] = window[12];
+        median[index(x, y)] = *median_in_place(std::span<float>(window));  // rank 12 of the 25
       }
     grey = std::move(median);
   }

@@ -1,8 +1,11 @@
 // The product manifest's reader (net/product_manifest.js, protocol/PRODUCT.md) fed a valid
 // manifest, then thousands of mutations of it (keys removed, values of other types, numbers out
 // of range, truncated text): each is read into a product within the limits or refused with the
-// one-line reason the element shows, never anything else. Run: node --test client/web/test/
+// one-line reason the element shows, never anything else; and the manifest the C++ export wrote
+// (tests/golden/product-manifest.json, by ProductManifestTest in
+// tests/unit/product_manifest_test.cpp) read field for field. Run: node --test client/web/test/
 import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
 import { test } from 'node:test';
 
 import { parseManifest } from '../net/product_manifest.js';
@@ -27,6 +30,34 @@ test('a valid manifest reads as the product block and its files', () => {
   assert.deepEqual(m.product.levels, valid.levels);
   assert.equal(m.photos[2].file, valid.photos[2].file);
   assert.equal(m.zoom[0].length, n);
+});
+
+test('the manifest the C++ export wrote reads field for field, and holds no field the reader skips', () => {
+  const text = readFileSync(new URL('../../../tests/golden/product-manifest.json', import.meta.url), 'utf8');
+  const written = JSON.parse(text);
+  const m = parseManifest(text);
+  assert.deepEqual(Object.keys(written).sort(),
+                   ['cells', 'directions', 'distance_diagonals', 'format', 'fov_y_degrees', 'height', 'levels', 'mattes', 'name', 'photos', 'version', 'width', 'zoom'],
+                   'a field the C++ writes that this reader does not read (or one it no longer writes)');
+  assert.equal(written.format, 'inkwire-product');
+  assert.equal(written.version, 1);
+  assert.equal(m.name, written.name);
+  assert.deepEqual(m.product, {
+    width: written.width, height: written.height, directions: written.directions, cells: written.cells.length, levels: written.levels,
+    distance_diagonals: written.distance_diagonals, fov_y_degrees: written.fov_y_degrees,
+  });
+  assert.deepEqual(m.photos, written.photos);
+  assert.deepEqual(m.mattes, written.mattes);
+  assert.deepEqual(m.zoom, written.zoom);
+  assert.deepEqual(m.cells, written.cells);
+  // What the test product is: four matted views 32 x 24, one zoom level at twice the size, a cell a pair.
+  assert.equal(m.name, 'disc');
+  assert.deepEqual([m.product.width, m.product.height, m.product.directions.length, m.product.cells], [32, 24, 4, 4]);
+  assert.deepEqual(m.product.levels, [{ width: 64, height: 48 }]);
+  assert.ok(Math.abs(m.product.distance_diagonals - 1.6) < 1e-6 && m.product.fov_y_degrees === 40);
+  assert.deepEqual([m.photos.length, m.mattes.length, m.zoom.length, m.zoom[0].length], [4, 4, 1, 4]);
+  assert.ok(m.photos.every((f) => f.file.endsWith('.jpg')) && m.mattes.every((f) => f.file.endsWith('.png')));
+  assert.ok(m.zoom[0].every((f) => f.file.endsWith('.jpg')) && m.cells.every((c) => c.file.endsWith('.cell')));
 });
 
 test('another version, a file not named by its hash, a missing photo each give their reason', () => {
