@@ -13,6 +13,7 @@
 
 #include "protocol/messages.hpp"
 #include "server/authority.hpp"
+#include "server/call/call_peer.hpp"
 #include "server/send_queue.hpp"
 #include "server/transport.hpp"
 
@@ -22,26 +23,26 @@ class Server;
 class Session;
 class VoiceStream;
 
-class Connection : public std::enable_shared_from_this<Connection> {
+class Connection final : public CallPeer, public std::enable_shared_from_this<Connection> {
  public:
   Connection(std::unique_ptr<Transport> transport, Server& server, uint64_t id);
 
   void start();
   // Queues a message or a frame encoded once for many. A full queue closes the connection with
   // "too slow"; state messages never fill it (latest wins).
-  void send(const protocol::Message& message);
-  void send_frame(std::shared_ptr<const protocol::Bytes> frame, protocol::MessageType type);
+  void send(const protocol::Message& message) override;
+  void send_frame(std::shared_ptr<const protocol::Bytes> frame, protocol::MessageType type) override;
   // Sends an error, then closes once it is written (or after a second if the peer is not reading).
-  void close_with(protocol::ErrorCode code, const std::string& reason);
-  uint64_t id() const { return id_; }
+  void close_with(protocol::ErrorCode code, const std::string& reason) override;
+  uint64_t id() const override { return id_; }
   // The protocol version the peer said hello with (kOldestVersion .. kVersion): what it can read.
-  uint16_t version() const { return version_; }
-  const std::string& address() const { return address_; }  // the peer's IP address
+  uint16_t version() const override { return version_; }
+  const std::string& address() const override { return address_; }  // the peer's IP address
   const Transport& transport() const { return *transport_; }
   bool in_session() const { return session_ != nullptr; }
   // How long since anything arrived from the peer (the server pings a quiet one: a live peer is
   // never silent much longer than a heartbeat).
-  std::chrono::steady_clock::duration silent_for() const { return Clock::now() - last_heard_; }
+  std::chrono::steady_clock::duration silent_for() const override { return Clock::now() - last_heard_; }
   // Whether `ticket` is the voice route this call member was sent and has not used
   // (protocol/SPEC.md "Voice route"); then take_voice_stream() makes it its route, once.
   bool holds_voice_ticket(const std::string& ticket) const;

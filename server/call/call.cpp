@@ -10,7 +10,7 @@
 #include "protocol/framing.hpp"
 #include "protocol/versions.hpp"
 #include "server/call/call_member.hpp"
-#include "server/connection.hpp"
+#include "server/call/call_peer.hpp"
 #include "server/relay/relay.hpp"
 
 namespace inkwire::server {
@@ -65,7 +65,7 @@ uint16_t Call::number_for(const std::string& name, const std::string& address) {
   return take_number();
 }
 
-void Call::join(const std::shared_ptr<Connection>& connection, const std::string& name, bool host) {
+void Call::join(const std::shared_ptr<CallPeer>& connection, const std::string& name, bool host) {
   leave(connection->id());
   auto m = std::make_unique<Member>();
   m->connection = connection;

@@ -24,7 +24,7 @@
 
 namespace inkwire::server {
 
-class Connection;
+class CallPeer;
 class Relay;
 struct CallShare;
 
@@ -47,7 +47,7 @@ class Call {
   ~Call();
 
   // `host`: the member joined with the room's host key (SPEC N7).
-  void join(const std::shared_ptr<Connection>& connection, const std::string& name, bool host = false);
+  void join(const std::shared_ptr<CallPeer>& connection, const std::string& name, bool host = false);
   void leave(uint64_t connection);
 
   // The room's host controls (SPEC N7): a locked room takes no newcomers but its host; a member

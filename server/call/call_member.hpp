@@ -61,7 +61,7 @@ inline void set_photo(protocol::CallMember& entry, std::map<protocol::Hash, Byte
 // A member of this instance: its connection, its roster entry, its limits and what its voice and
 // face said last.
 struct Call::Member {
-  std::weak_ptr<Connection> connection;
+  std::weak_ptr<CallPeer> connection;
   uint64_t connection_id = 0;
   protocol::CallMember entry;  // what the roster says of it
   bool host = false;           // joined with the room's host key (an editor of the session)

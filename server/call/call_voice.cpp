@@ -8,7 +8,7 @@
 #include "common/log.hpp"
 #include "protocol/framing.hpp"
 #include "server/call/call_member.hpp"
-#include "server/connection.hpp"
+#include "server/call/call_peer.hpp"
 #include "server/relay/relay.hpp"
 
 namespace inkwire::server {
