@@ -177,7 +177,7 @@ void RedisRelay::lost(const std::string& reason) {
   // Replies still pending are answered with null now: their changes are applied here and kept.
   commands_.disconnect();
   events_.disconnect();
-  for (auto& [name, sync] : syncs_) sync.syncing = false, sync.waiting.clear();
+  for (auto& [name, order] : orders_) order.broker_lost();
   log(LogLevel::Warn, was_ready ? "broker-lost" : "broker-unreachable",
       {{"reason", reason}, {"retry_ms", backoff_.count()}, {"serving", "own members only"}});
   retry_timer_.expires_after(backoff_);
@@ -261,7 +261,7 @@ void RedisRelay::ready() {
   log_info("broker-connected", {{"instance", sessions_.instance_name()}, {"unsent", unsent_.size()}});
   // Every session waits for its resync from here on, so no change is applied out of order. Each
   // resync sends the changes made here while the broker was away that it does not hold yet.
-  for (const auto& [name, session] : sessions_.sessions()) syncs_[name].syncing = true;
+  for (const auto& [name, session] : sessions_.sessions()) orders_[name].resync_started();
   for (const auto& [name, session] : sessions_.sessions()) share(*session);
   discover();
   for (const auto& [name, session] : sessions_.sessions()) resync(name);
@@ -316,26 +316,23 @@ void RedisRelay::on_event(std::string_view payload) {
   if (e.origin == sessions_.instance_name()) status_.lag_seconds = double(now_us() - e.published_us) / 1e6;
   const auto session = sessions_.find_session(e.session);
   if (!session) return;  // not here (yet): adopted with its state when its notice comes
-  SessionSync& sync = syncs_[e.session];
-  if (sync.syncing) wait_for_resync(sync, e.session, std::move(e));
-  else apply_in_order(*session, sync, std::move(e));
+  ChangeOrder& order = orders_[e.session];
+  follow(*session, order, order.arrive(std::move(e)));
 }
 
-void RedisRelay::apply_in_order(Session& session, SessionSync& sync, Event e) {
-  if (e.revision <= sync.revision) return;  // in the state a resync read already
-  if (e.revision != sync.revision + 1) {    // one was missed: read the state whole
-    wait_for_resync(sync, session.name(), std::move(e));
-    if (!sync.syncing) resync(session.name());
-    return;
+void RedisRelay::follow(Session& session, ChangeOrder& order, ChangeOrder::Arrival arrival) {
+  if (arrival.dropped > 0) {
+    ++status_.overflows;
+    log_warn("broker-waiting-overflow", {{"session", session.name()}, {"dropped", arrival.dropped}});
   }
-  sync.revision = e.revision;
-  sessions_.deliver(session, e.change, e.origin == sessions_.instance_name() ? e.sender : 0, e.revision);
+  if (const auto& e = arrival.apply) sessions_.deliver(session, e->change, e->origin == sessions_.instance_name() ? e->sender : 0, e->revision);
+  if (arrival.resync && !order.syncing()) resync(session.name());
 }
 
 void RedisRelay::resync(const std::string& name) {
   const auto session = sessions_.find_session(name);
   if (!session) return;
-  syncs_[name].syncing = true;
+  orders_[name].resync_started();
   ++status_.resyncs;
   const Snapshot& s = session->state();
   std::vector<std::string> own{"revision", std::to_string(s.revision)};
@@ -349,10 +346,10 @@ void RedisRelay::resync(const std::string& name) {
   args.push_back(key);
   args.insert(args.end(), own.begin(), own.end());
   const bool sent = commands_.command(args, [this, name](const redisReply* r) {
-    SessionSync& sync = syncs_[name];
+    ChangeOrder& order = orders_[name];
     const auto session = sessions_.find_session(name);
     if (!session) {
-      sync.syncing = false;
+      order.resync_abandoned();
       return;
     }
     if (!r) return;  // the broker went away: reconnecting resyncs every session
@@ -392,17 +389,14 @@ void RedisRelay::resync(const std::string& name) {
         log_warn("broker-state-malformed", {{"session", name}, {"field", field}, {"reason", e.what()}});
       }
     }
-    sync.revision = uint32_t(*revision);
-    session->set_revision(sync.revision);
-    sync.syncing = false;
+    ChangeOrder::Resynced next = order.resynced(uint32_t(*revision));
+    session->set_revision(order.revision());
     for (auto it = unsent_.lower_bound({name, ""}); it != unsent_.end() && it->first.first == name; it = unsent_.erase(it))
       send_change(name, it->first.second, it->second.frame, it->second.sender);
-    std::vector<Event> waiting = std::exchange(sync.waiting, {});
-    std::sort(waiting.begin(), waiting.end(), [](const Event& a, const Event& b) { return a.revision < b.revision; });
-    for (Event& e : waiting)
-      if (!sync.syncing) apply_in_order(*session, sync, std::move(e));
+    for (const Event& e : next.apply) sessions_.deliver(*session, e.change, e.origin == sessions_.instance_name() ? e.sender : 0, e.revision);
+    if (next.resync) resync(name);
   });
-  if (!sent) syncs_[name].syncing = false;  // not connected: the reconnection resyncs
+  if (!sent) orders_[name].resync_abandoned();  // not connected: the reconnection resyncs
 }
 
 void RedisRelay::retry_resync(const std::string& name) {
@@ -410,18 +404,6 @@ void RedisRelay::retry_resync(const std::string& name) {
   timer->async_wait([this, name, timer](std::error_code ec) {
     if (!ec && !stopped_ && ready_) resync(name);
   });
-}
-
-void RedisRelay::wait_for_resync(SessionSync& sync, const std::string& name, Event e) {
-  // Bounded: past kMaxWaiting the waiting changes are dropped and counted, and the resync under
-  // way (or a new one) brings the state whole instead.
-  if (sync.waiting.size() >= kMaxWaiting) {
-    ++status_.overflows;
-    log_warn("broker-waiting-overflow", {{"session", name}, {"dropped", sync.waiting.size()}});
-    sync.waiting.clear();
-    if (!sync.syncing) resync(name);
-  }
-  sync.waiting.push_back(std::move(e));
 }
 
 void RedisRelay::session_added(const Session& session) {
@@ -437,7 +419,7 @@ void RedisRelay::session_added(const Session& session) {
 // its copy, so none shares it again when it restarts.
 void RedisRelay::session_removed(const Session& session) {
   const std::string name = session.name();
-  syncs_.erase(name);
+  orders_.erase(name);
   const auto shared = definitions_.find(name);
   if (shared == definitions_.end()) return;
   const std::string definition = std::move(shared->second);

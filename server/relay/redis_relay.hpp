@@ -24,6 +24,7 @@
 #include <asio.hpp>
 
 #include "server/relay/broker_formats.hpp"
+#include "server/relay/change_order.hpp"
 #include "server/relay/redis_connection.hpp"
 #include "server/relay/relay.hpp"
 
@@ -57,11 +58,6 @@ class RedisRelay final : public Relay {
   void removed_elsewhere(const std::string& name);
   std::optional<StoredSession> read_definition(const std::string& name, std::string_view definition);
   using Event = BrokerEvent;
-  struct SessionSync {
-    uint32_t revision = 0;  // the broker's revision applied here
-    bool syncing = false;   // a resync is under way: events wait for it
-    std::vector<Event> waiting;
-  };
   struct Unsent {
     protocol::Bytes frame;
     uint64_t sender = 0;
@@ -75,10 +71,10 @@ class RedisRelay final : public Relay {
   void keep_unsent(const std::string& session, const std::string& field, const protocol::Bytes& frame, uint64_t sender);
   void on_event(std::string_view payload);
   void on_call(std::string_view payload);
-  void apply_in_order(Session& session, SessionSync& sync, Event event);
+  // What the session's order asked of an arriving change: applied, counted as dropped, resynced.
+  void follow(Session& session, ChangeOrder& order, ChangeOrder::Arrival arrival);
   void resync(const std::string& session);
   void retry_resync(const std::string& session);
-  void wait_for_resync(SessionSync& sync, const std::string& session, Event e);
   void heartbeat();
   void share(const Session& session);
   void share_asset(const protocol::AssetAnnounce& asset);
@@ -98,7 +94,6 @@ class RedisRelay final : public Relay {
   RedisConnection commands_, events_;
   asio::steady_timer retry_timer_, heartbeat_timer_;
   using Clock = std::chrono::steady_clock;
-  static constexpr size_t kMaxWaiting = 10000;                               // changes waiting for a resync, per session
   static constexpr std::chrono::milliseconds kHeartbeatDeadline{3000};
   bool ping_outstanding_ = false;
   uint64_t ping_round_ = 0;
@@ -106,7 +101,7 @@ class RedisRelay final : public Relay {
   std::chrono::milliseconds backoff_{100};
   int connections_up_ = 0, subscriptions_ = 0;
   bool ready_ = false, retry_scheduled_ = false, stopped_ = false, ever_ready_ = false;
-  std::map<std::string, SessionSync> syncs_;
+  std::map<std::string, ChangeOrder> orders_;  // each session's changes from the broker, in order
   std::map<std::pair<std::string, std::string>, Unsent> unsent_;  // (session, field): latest wins
   std::set<std::string> adopting_;                                 // remote sessions whose assets are on their way
   std::map<std::string, std::string> definitions_;                 // each session's definition as the broker holds it
