@@ -10,7 +10,7 @@ set(INKWIRE_SHARED_RENDER_SOURCES
   render/comic/shade_maps.cpp
   render/coverage.cpp
   render/default_renderer.cpp
-  render/face/comic_photo.cpp
+  render/face/comic_face.cpp
   render/face/conference_view.cpp
   render/face/face_reconstructor.cpp
   render/gpu_mesh.cpp
@@ -60,6 +60,7 @@ set(INKWIRE_SHARED_COMMON_SOURCES
   face/face_shape.cpp
   face/head_pose.cpp
   face/landmarks_file.cpp
+  face/person_matte.cpp
   glb_mesh.cpp
   image.cpp
   lod.cpp

@@ -45,7 +45,7 @@ Image generate_paper(int size, uint32_t seed) {
   // Octaves: broad cloudiness, medium mottling and fine grain, plus fibres: noise stretched
   // eight to one, so it reads as short streaks in the pulp rather than blotches.
   const TileableNoise broad(4, seed), mottle(16, seed + 1), grain(size / 2, seed + 2), fibre(size / 4, seed + 3);
-  const glm::vec3 base(0.965f, 0.945f, 0.905f);  // warm off-white
+  const glm::vec3 base = kPaperBase;
   Image img(size, size);
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x) {
@@ -67,7 +67,7 @@ Image generate_canvas(int size, uint32_t seed) {
   constexpr int kThread = 4;  // pixels per thread: a fine linen at screen scale
   const int threads = size / kThread;
   const TileableNoise slub_x(threads, seed), slub_y(threads, seed + 1), grain(size / 2, seed + 2), broad(4, seed + 3);
-  const glm::vec3 base(0.90f, 0.87f, 0.80f);  // primed linen
+  const glm::vec3 base = kCanvasBase;
   Image img(size, size);
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x) {

@@ -26,6 +26,10 @@ struct BackdropSpec {
   static BackdropSpec parse(const std::string& text);
 };
 
+// The generated paper's and canvas's base colours (0..1): what a drawn face's ground is laid in.
+inline const glm::vec3 kPaperBase(0.965f, 0.945f, 0.905f);   // warm off-white
+inline const glm::vec3 kCanvasBase(0.90f, 0.87f, 0.80f);     // primed linen
+
 // A tileable paper texture: warm off-white with fibres and grain at several scales, wrapping
 // seamlessly at its edges. Deterministic for a given seed.
 Image generate_paper(int size, uint32_t seed = 1);

@@ -3,15 +3,19 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/common.hpp>
+
 #include "client/gl/gl.hpp"
 #include "client/render/backdrop.hpp"
-#include "client/render/face/comic_photo.hpp"
+#include "client/render/face/comic_face.hpp"
 #include "common/face/landmarks_file.hpp"
 
 namespace inkwire {
 
 ConferenceView::ConferenceView(const std::filesystem::path& photo, const std::filesystem::path& landmarks)
-    : photo_(load_image(photo)), landmarks_(load_landmarks(landmarks)) {
+    : ConferenceView(load_image(photo), load_landmarks(landmarks)) {}
+
+ConferenceView::ConferenceView(Image photo, const FaceLandmarks& landmarks) : photo_(std::move(photo)), landmarks_(landmarks) {
   face_.emplace(photo_, landmarks_);
 }
 
@@ -26,17 +30,20 @@ void ConferenceView::set_expression(ExpressionState state) {
 }
 
 void ConferenceView::set_style(const std::string& renderer, const std::vector<std::string>& settings) {
-  const bool comic = renderer.rfind("comic", 0) == 0;
-  if (comic != comic_) {
-    // The face is made again from the comic photo (or the plain one), showing what it showed.
+  const Look look = renderer.rfind("comic", 0) == 0 ? Look::Comic : renderer == "painterly" ? Look::Painted : Look::Photo;
+  if (look != look_) {
+    // The face is made again from the drawn photo (or the plain one), showing what it showed.
     Image source = photo_;
-    if (comic) comic_photo(source);
+    if (look != Look::Photo && !matte_) matte_ = person_matte(photo_, landmarks_);
+    const auto ground = [](glm::vec3 base) { return glm::u8vec3(glm::round(base * 255.0f)); };
+    if (look == Look::Comic) comic_face(source, landmarks_, *matte_, ground(kPaperBase));
+    if (look == Look::Painted) lay_on_ground(source, *matte_, ground(kCanvasBase));
     const FaceState shown = face_->face();
     const ExpressionState code = face_->expression();
     face_.emplace(source, landmarks_);
     face_->set_face(shown, 0);
     if (code != dominant_expression(shown.layers)) face_->set_expression(code, 0);
-    comic_ = comic;
+    look_ = look;
   }
   painted_frames_ = 0;
   if (renderer != "painterly") {

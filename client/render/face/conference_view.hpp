@@ -2,10 +2,12 @@
 // A face drawn from expression codes alone (SPEC F5, F11, F16): a neutral photo and its
 // landmarks deformed to each expression, tweened, and fitted into the viewport: the speaker of a
 // conference session, a member's tile of a call (client/call/call_grid.hpp), natively and in the
-// browser's module alike. The session's style "painterly" (with its settings) paints the face with
-// brushes, each frame over the last so strokes persist; a comic style ("comic",
-// "comic-extended") flattens and inks the photo once (render/face/comic_photo.hpp) and the face
-// moves with its ink, as a drawn face would; any other shows the photo.
+// browser's module alike. The drawn styles cut the person from the photo's wall once
+// (common/face/person_matte.hpp) and lay it on their ground: "painterly" (with its settings) on
+// the canvas, painting the person with brushes, each frame over the last so strokes persist; a
+// comic style ("comic", "comic-extended") on the paper, drawn as a cartoonist draws a face
+// (render/face/comic_face.hpp) once, the face then moving with its ink. Any other style shows
+// the photo as it came, wall and all.
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -17,6 +19,7 @@
 #include "client/render/face/face_reconstructor.hpp"
 #include "client/render/painterly/rect_image.hpp"
 #include "client/render/painterly/video_painter.hpp"
+#include "common/face/person_matte.hpp"
 
 namespace inkwire {
 
@@ -24,6 +27,8 @@ class ConferenceView {
  public:
   // Throws inkwire::Error when the photo or the landmarks are unreadable or do not fit together.
   ConferenceView(const std::filesystem::path& photo, const std::filesystem::path& landmarks);
+  // The same from a photo and landmarks in memory (throws as FaceReconstructor does).
+  ConferenceView(Image photo, const FaceLandmarks& landmarks);
 
   // The tween to `state` starts at the next drawn frame: a face's layers and pose, or one code
   // (a session-wide speaker's; the head keeps its pose).
@@ -51,7 +56,9 @@ class ConferenceView {
   std::unique_ptr<VideoPainter> painter_;  // painterly style only
   int painted_frames_ = 0;
   bool drawn_ = false;
-  bool comic_ = false;                     // comic styles
+  enum class Look { Photo, Comic, Painted };
+  Look look_ = Look::Photo;
+  std::optional<PersonMatte> matte_;       // found when a drawn style first needs it
   std::optional<Canvas> painting_;         // what the painter paints over, frame after frame
   gl::Texture painted_;                    // its latest frame, to lay into the viewport
   RectImage rect_image_;
