@@ -13,6 +13,8 @@ namespace {
 // small enough that a camera photo costs a few milliseconds.
 constexpr float kWorkingEyeDistance = 28;
 constexpr int kIterations = 4;  // colour models re-estimated this often (GrabCut converges in a few)
+constexpr float kHeadCore = 0.75f;  // of the head's ellipse: about the outline of a head with short hair
+constexpr float kSurelyWall = 0.1f;  // a belief below this is the wall even in the head's core
 
 // Where the person is likely to be, in the face frame (units of the eye distance, y down): the
 // head an ellipse from above the hair to the chin, the body widening below it.
@@ -38,7 +40,7 @@ struct Layout {
     }
     for (const glm::vec2& p : hull) hull_centre += p / float(hull.size());
     jaw_half_width = std::max(0.5f, (right - left) / 2);
-    const float head_top = top - 1.3f;  // hair stands above the forehead
+    const float head_top = top - 1.5f;  // hair stands above the forehead
     head_centre = {(left + right) / 2, (head_top + chin + 0.1f) / 2};
     head_radii = {jaw_half_width * 1.45f, (chin + 0.1f - head_top) / 2};
   }
@@ -52,12 +54,17 @@ struct Layout {
     return inside_polygon(hull, hull_centre + (p - hull_centre) / shrink);
   }
 
+  // How far out of the head's ellipse: below 1 inside.
+  float head_reach(glm::vec2 p) const {
+    const glm::vec2 d = (p - head_centre) / head_radii;
+    return std::sqrt(d.x * d.x + d.y * d.y);  // IEEE rounds sqrt exactly: the same everywhere
+  }
+
   // How far out of the person's likely place: below 1 inside the head's ellipse or the body.
   float reach(glm::vec2 p) const {
-    const glm::vec2 d = (p - head_centre) / head_radii;
-    float r = std::sqrt(d.x * d.x + d.y * d.y);  // IEEE rounds sqrt exactly: the same everywhere
+    float r = head_reach(p);
     if (p.y > chin - 0.3f) {
-      const float half_width = jaw_half_width * 0.75f + std::max(0.0f, p.y - chin) * 1.1f;
+      const float half_width = jaw_half_width * 0.75f + std::max(0.0f, p.y - chin) * 2.0f;  // to the shoulders
       r = std::min(r, std::abs(p.x - head_centre.x) / half_width);
     }
     return r;
@@ -138,7 +145,7 @@ PersonMatte person_matte(const Image& photo, const FaceLandmarks& landmarks) {
   // The photo at the working size (each pixel the mean of its step x step block), its colours'
   // bins, and each pixel's place: sure person (2), sure wall (0) or to be decided (1), with a prior.
   std::vector<size_t> bins(count);
-  std::vector<uint8_t> known(count), label(count);
+  std::vector<uint8_t> known(count), label(count), head_core(count);
   std::vector<float> prior(count);
   std::vector<size_t> face_pixels;
   for (int y = 0; y < height; ++y)
@@ -155,11 +162,12 @@ PersonMatte person_matte(const Image& photo, const FaceLandmarks& landmarks) {
       bins[i] = colour_bin(mean);
       const glm::vec2 at = frame.to_face(glm::vec2((float(x) + 0.5f) * float(step), (float(y) + 0.5f) * float(step)));
       const float reach = layout.reach(at);
+      head_core[i] = layout.head_reach(at) < kHeadCore;
       if (layout.in_hull(at, 0.9f) || layout.in_neck(at)) {
         known[i] = 2;
         face_pixels.push_back(i);
       } else {
-        known[i] = reach >= 1.45f ? 0 : 1;
+        known[i] = reach >= 1.5f ? 0 : 1;
       }
       prior[i] = std::clamp(0.75f - 1.2f * (reach - 0.8f), 0.15f, 0.75f);
       label[i] = known[i] == 2 || (known[i] == 1 && reach < 1.3f) ? 1 : 0;
@@ -185,6 +193,11 @@ PersonMatte person_matte(const Image& photo, const FaceLandmarks& landmarks) {
     for (size_t i = 0; i < count; ++i) label[i] = known[i] == 2 || (known[i] == 1 && belief[i] > 0.5f) ? 1 : 0;
   }
 
+  // A head is there unless the colours are sure it is not: hair as dark as the room behind it is
+  // still hair, so the head's core (its likely place, a little drawn in) is the person where the
+  // wall's colours do not clearly explain it (a bald head before a pale wall keeps its outline).
+  for (size_t i = 0; i < count; ++i)
+    if (head_core[i] && belief[i] > kSurelyWall) label[i] = 1;
   // One person: the part joined to the face, its holes filled (the wall is what the border reaches).
   const std::vector<uint8_t> person = reachable(label, width, height, 1, face_pixels);
   std::vector<size_t> border;
