@@ -10,6 +10,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include "client/gl/context.hpp"
+#include "client/gl/canvas.hpp"
+#include "client/render/face/conference_view.hpp"
 #include "client/render/face/face_reconstructor.hpp"
 #include "common/error.hpp"
 #include "common/image.hpp"
@@ -94,10 +96,19 @@ std::optional<FaceLandmarks> landmarks_of(FaceAnalyzer& analyzer, const Image& p
 // receivers drawing that as the call's clients do (tweened over 100 ms, at the frames' times):
 // before (the single code a server of before poses sent, on a change or every two seconds; no
 // pose) and now (member-layers as the call's stream sends them).
+// With pictures, the face of now is also drawn in the drawn styles, comic and painterly, as a
+// call's tile draws it (ConferenceView, each frame: a painting builds up over frames).
 class Member {
  public:
-  Member(const Image& neutral, const FaceLandmarks& landmarks) : neutral_(landmarks), before_(neutral, landmarks), now_(neutral, landmarks) {
+  Member(const Image& neutral, const FaceLandmarks& landmarks, bool styled)
+      : neutral_(landmarks), before_(neutral, landmarks), now_(neutral, landmarks) {
     reader_.calibrate(landmarks, &neutral);
+    if (!styled) return;
+    for (const char* style : {"comic", "painterly"}) {
+      styled_.push_back(std::make_unique<ConferenceView>(neutral, landmarks));
+      styled_.back()->set_style(style, {});
+    }
+    canvas_.emplace(neutral.width, neutral.height);
   }
   const FaceLandmarks& neutral() const { return neutral_; }
 
@@ -108,7 +119,10 @@ class Member {
     const FaceState& read = reader_.read(seen, &frame);
     if (const auto code = single_.next(reader_.expression(), seconds))
       if (const auto state = protocol::expression_state(*code)) before_.set_expression(*state, seconds);
-    if (const auto sent = layers_.next(read, seconds, 1, uint32_t(seconds * 1000.0))) now_.set_face(protocol::face_state_of(*sent), seconds);
+    if (const auto sent = layers_.next(read, seconds, 1, uint32_t(seconds * 1000.0))) {
+      now_.set_face(protocol::face_state_of(*sent), seconds);
+      for (auto& view : styled_) view->set_face(protocol::face_state_of(*sent));
+    }
     for (const bool with_pose : {false, true}) {
       FaceReconstructor& receiver = with_pose ? now_ : before_;
       Frame::Drawn& d = with_pose ? out.now : out.before;
@@ -120,6 +134,13 @@ class Member {
       const auto landmarks = landmarks_of(analyzer, drawn);
       if (landmarks) d = {.found = true, .pose = head_pose(*landmarks, neutral_), .nme = nme(*landmarks, seen), .turn = turn_reading(*landmarks)};
     }
+    for (auto& view : styled_) {
+      const FramebufferBinding restore;
+      canvas_->bind();
+      view->draw(canvas_->size(), seconds);  // a view starts its tween at the frame it draws next
+      view->draw(canvas_->size(), seconds + 0.1);
+      if (drawn_out) drawn_out->push_back(canvas_->read());
+    }
     return out;
   }
 
@@ -129,6 +150,8 @@ class Member {
   ExpressionStream single_{2.0};
   LayersStream layers_{2.0};
   FaceReconstructor before_, now_;
+  std::vector<std::unique_ptr<ConferenceView>> styled_;
+  std::optional<Canvas> canvas_;
 };
 
 // The figures of a set of frames: before (the one code, no pose) and now.
@@ -167,10 +190,11 @@ nlohmann::json figures(const std::vector<Frame>& frames) {
 }
 
 void sheet(const fs::path& dir, const std::string& name, const Image& sender, const std::vector<Image>& drawn) {
-  if (dir.empty() || drawn.size() != 2) return;
+  if (dir.empty() || drawn.size() != 4) return;
   fs::create_directories(dir);
   const auto fit = [](const Image& i) { return resized(i, int(std::lround(240.0 * i.width / i.height)) & ~1, 240); };
-  save_image(side_by_side({fit(sender), fit(drawn[0]), fit(drawn[1])}, {"sender", "before (one code, no pose)", "now (pose and layers)"}),
+  save_image(side_by_side({fit(sender), fit(drawn[0]), fit(drawn[1]), fit(drawn[2]), fit(drawn[3])},
+                          {"sender", "before (one code, no pose)", "now (pose and layers)", "now, comic", "now, painterly"}),
              dir / (name + ".png"), false);
 }
 
@@ -212,7 +236,7 @@ nlohmann::json run_clip(const FacePoseOptions& o, FaceAnalyzer& analyzer) {
     }
     last = seen;
     if (cut || jumped || !member) {
-      member.emplace(*frame, *seen);
+      member.emplace(*frame, *seen, !o.images_dir.empty());
       tracks.emplace_back();
       track_list.push_back({{"first_frame", frames}, {"frames", 0}});
     }
@@ -276,7 +300,7 @@ nlohmann::json run_yale(const FacePoseOptions& o, FaceAnalyzer& analyzer) {
       continue;
     }
     ++subjects;
-    Member member(photo, *neutral);
+    Member member(photo, *neutral, !o.images_dir.empty());
     int k = 0;
     for (const float roll : {-30.0f, -20.0f, -10.0f, 0.0f, 10.0f, 20.0f, 30.0f}) {
       // The photo turned about its face's middle and moved a little, its edges carried on.

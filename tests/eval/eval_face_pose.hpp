@@ -27,7 +27,7 @@ namespace inkwire::eval {
 struct FacePoseOptions {
   std::string clip;                 // a video (e.g. opencv-doc's Megamind.avi); empty: none
   std::filesystem::path yale;       // a folder of subjectNN_normal photos; empty: none
-  std::filesystem::path images_dir; // side-by-side sheets (sender | before | now) of some frames
+  std::filesystem::path images_dir; // side-by-side sheets of some frames (sender | before | now, plain, comic, painterly)
   int limit = 0;                    // frames of the clip at most (0: all)
 };
 
