@@ -1,7 +1,11 @@
 // inkwire-bench --suite face (SPEC F6): analysis speed at 640x480 (detector, landmark model,
 // the whole pipeline with detection every 5th frame and tracking between), capture-to-code
 // latency, and the bytes the expression stream sends per second at 15 and 30 fps against the
-// same clip encoded by x264 at its lowest sensible quality (CRF 40, "veryslow").
+// same clip encoded by x264 at its lowest sensible quality (CRF 40, "veryslow"); and the face
+// renderer's frame time (SPEC F20: at most 1.5x before), a call's tile at 640x480 drawn each frame
+// in the plain, comic and painterly looks: `draw,codes,STYLE` as faces were drawn before poses
+// (one code at a time, the head still), against `draw,pose+layers,STYLE` (the head turning, layers
+// mixed), as a ratio to the first in the same run.
 //
 // The clip: no face video is packaged, so a speaker is synthesised from libdlib19.1's example
 // photo by the face reconstruction, following a script of expressions (each held about 0.7 s),
@@ -13,7 +17,10 @@
 
 
 #include "bench_harness.hpp"
+#include "client/gl/canvas.hpp"
+#include "client/gl/gl.hpp"
 #include "client/output/frame_writer.hpp"
+#include "client/render/face/conference_view.hpp"
 #include "client/render/face/face_reconstructor.hpp"
 #include "common/error.hpp"
 #include "server/face/face_coder.hpp"
@@ -70,6 +77,27 @@ double x264_bytes_per_second(const std::vector<Image>& clip, double fps, const s
   return bytes / (double(clip.size()) / fps);
 }
 
+// Milliseconds per frame of a call's tile drawing `script` (one state per tween), each frame
+// finished by the driver.
+template <typename State>
+std::vector<double> draw_times(const Image& frame, const FaceLandmarks& landmarks, const std::string& style, const std::vector<State>& script, int frames) {
+  ConferenceView view(frame, landmarks);
+  view.set_style(style, {});
+  Canvas canvas(kWidth, kHeight);
+  const FramebufferBinding restore;
+  canvas.bind();
+  std::vector<double> ms;
+  for (int i = 0; i < frames; ++i) {
+    const double t = double(i) / 30.0;
+    if (i % 3 == 0) view.set_face(script[size_t(i / 3) % script.size()]);  // a new face every 100 ms, as a call's stream sends
+    const auto start = std::chrono::steady_clock::now();
+    view.draw(canvas.size(), t);
+    gl::glFinish();
+    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  }
+  return ms;
+}
+
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v.empty() ? 0 : v[v.size() / 2];
@@ -120,6 +148,30 @@ std::vector<Result> run_face_suite(Harness& harness) {
     t = Clock::now();
     probe.landmarks_in(clip30[size_t(i)], boxes.front());
     landmark_ms.push_back(ms_since(t));
+  }
+  // The renderer: faces before poses (one code, the head still) and now (pose and layers).
+  {
+    std::vector<FaceState> codes, posed;
+    for (const auto& [code, intensity] : std::vector<std::pair<Expression, int>>{
+             {Expression::Smile, 200}, {Expression::VisemeOpen, 180}, {Expression::Neutral, 0}, {Expression::Surprise, 255}, {Expression::EyesClosed, 255}})
+      codes.push_back({.layers = layers_of({code, uint8_t(intensity)}, shipped_templates())});
+    for (size_t i = 0; i < 12; ++i) {
+      FaceState s = codes[i % codes.size()];
+      s.layers.eye_left = s.layers.eye_right = i % 4 == 3 ? 0 : 100;
+      s.pose = {.yaw = 25.0f * float(int(i % 5) - 2) / 2, .pitch = 10.0f * float(int(i % 3) - 1), .roll = 8.0f * float(int(i % 4) - 2) / 2};
+      posed.push_back(s);
+    }
+    constexpr int kDraws = 150;  // five seconds of call at 30 fps
+    for (const char* style : {"default", "comic", "painterly"}) {
+      Result before = row(std::string("draw,codes,") + style, draw_times(frame, face->landmarks, style, codes, kDraws));
+      const double reference = before.counters["frame_ms"] = before.counters["latency_ms"];
+      before.counters["ratio_to_codes"] = 1;
+      results.push_back(before);
+      Result now = row(std::string("draw,pose+layers,") + style, draw_times(frame, face->landmarks, style, posed, kDraws));
+      now.counters["frame_ms"] = now.counters["latency_ms"];
+      now.counters["ratio_to_codes"] = now.counters["frame_ms"] / reference;
+      results.push_back(now);
+    }
   }
   results.push_back(row("detect", detect_ms));
   results.push_back(row("landmarks", landmark_ms));
