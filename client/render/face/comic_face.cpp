@@ -9,8 +9,8 @@
 #include <glm/geometric.hpp>
 
 #include "common/luminance.hpp"
-#include "common/polygon.hpp"
 #include "common/percentile.hpp"
+#include "common/polygon.hpp"
 
 // Plain C++ on purpose: the browser's module draws call faces with this same code (SPEC F16), and
 // OpenCV is not there. The steps are the classic ones (bilateral smoothing at half size, tone
